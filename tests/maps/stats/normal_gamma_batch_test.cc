@@ -1,0 +1,115 @@
+#include "maps/stats/normal_gamma_batch.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace novelty::stats {
+namespace {
+
+// A plane set of n pixels with plausible map parameters and observations.
+struct Planes {
+  std::vector<float> alpha, beta, tau, sigma, x;
+  explicit Planes(std::size_t n, unsigned seed) : alpha(n), beta(n), tau(n), sigma(n), x(n) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> a(0.6f, 3.0f), lb(-2.0f, 8.0f), t(0.0f, 255.0f),
+        ls(-4.0f, 1.6f), dx(-80.0f, 80.0f);
+    for (std::size_t i = 0; i < n; ++i) {
+      alpha[i] = a(rng);
+      beta[i] = std::exp(lb(rng));
+      tau[i] = t(rng);
+      sigma[i] = std::exp(ls(rng));
+      x[i] = tau[i] + (i % 3 == 0 ? dx(rng) * 0.05f : dx(rng));
+    }
+  }
+  ConstNormalGammaPlanes View() const {
+    return {alpha.data(), beta.data(), tau.data(), sigma.data()};
+  }
+  NormalGammaPlanes Mutable() { return {alpha.data(), beta.data(), tau.data(), sigma.data()}; }
+};
+
+TEST(NormalGammaBatch, ScalarKernelEqualsPerPixelFormulas) {
+  const std::size_t n = 1001;
+  const Planes prior(n, 5);
+  Planes post(n, 6);
+  std::vector<float> surprise(n, 1.0f);  // accumulates: starts at 1
+  SurpriseBatchOptions o;
+  o.kernel = BatchKernel::kScalar;
+  UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post.Mutable(), surprise.data(), n, o);
+  for (std::size_t i = 0; i < n; i += 37) {
+    const NormalGammaT<double> p0{prior.alpha[i], prior.beta[i], prior.tau[i], prior.sigma[i]};
+    const auto p = UpdateWithForgetting<double>(p0, prior.x[i], o.update);
+    EXPECT_FLOAT_EQ(post.alpha[i], float(p.alpha));
+    EXPECT_FLOAT_EQ(post.beta[i], float(p.beta));
+    EXPECT_FLOAT_EQ(post.tau[i], float(p.tau));
+    EXPECT_FLOAT_EQ(post.sigma[i], float(p.sigma));
+    EXPECT_FLOAT_EQ(surprise[i], float(1.0 + NormalGammaKL(p, p0)));
+  }
+}
+
+TEST(NormalGammaBatch, VectorisedKernelAgreesWithScalarToFloatPrecision) {
+  const std::size_t n = 320 * 240 + 7;  // a tail that is not a multiple of the packet size
+  const Planes prior(n, 9);
+  Planes post_s(n, 1), post_v(n, 1);
+  std::vector<float> s_scalar(n, 0.0f), s_vector(n, 0.0f);
+  SurpriseBatchOptions o;
+  o.kernel = BatchKernel::kScalar;
+  UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_s.Mutable(), s_scalar.data(), n,
+                              o);
+  o.kernel = BatchKernel::kVectorised;
+  UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_v.Mutable(), s_vector.data(), n,
+                              o);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_NEAR(post_v.beta[i], post_s.beta[i], 2e-6f * post_s.beta[i]) << i;
+    EXPECT_NEAR(post_v.tau[i], post_s.tau[i], 1e-4f) << i;
+    EXPECT_NEAR(post_v.sigma[i], post_s.sigma[i], 2e-6f * post_s.sigma[i]) << i;
+    const double err = std::abs(s_vector[i] - s_scalar[i]) / (1e-3 + s_scalar[i]);
+    worst = std::max(worst, err);
+  }
+  EXPECT_LT(worst, 5e-4) << "worst relative surprise difference (absolute floor 1e-3)";
+}
+
+TEST(NormalGammaBatch, NaNObservationKeepsPriorAndMarksSurpriseInvalid) {
+  for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
+    const std::size_t n = 40;
+    Planes prior(n, 2);
+    prior.x[3] = std::numeric_limits<float>::quiet_NaN();
+    prior.x[21] = std::numeric_limits<float>::quiet_NaN();
+    Planes post(n, 4);
+    std::vector<float> surprise(n, 0.0f);
+    SurpriseBatchOptions o;
+    o.kernel = kernel;
+    UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post.Mutable(), surprise.data(), n,
+                                o);
+    for (std::size_t i : {3u, 21u}) {
+      EXPECT_TRUE(std::isnan(surprise[i]));
+      EXPECT_EQ(post.alpha[i], prior.alpha[i]);
+      EXPECT_EQ(post.beta[i], prior.beta[i]);
+      EXPECT_EQ(post.tau[i], prior.tau[i]);
+      EXPECT_EQ(post.sigma[i], prior.sigma[i]);
+    }
+    EXPECT_TRUE(std::isfinite(surprise[4]));
+    EXPECT_GT(surprise[4], 0.0f);
+  }
+}
+
+TEST(NormalGammaBatch, InPlaceUpdateEqualsOutOfPlace) {
+  const std::size_t n = 100;
+  Planes in_place(n, 8);
+  const Planes copy = in_place;
+  Planes out(n, 1);
+  std::vector<float> s1(n, 0.0f), s2(n, 0.0f);
+  const SurpriseBatchOptions o;
+  UpdateAndAccumulateSurprise(copy.x.data(), copy.View(), out.Mutable(), s1.data(), n, o);
+  UpdateAndAccumulateSurprise(copy.x.data(), in_place.View(), in_place.Mutable(), s2.data(), n, o);
+  EXPECT_EQ(in_place.tau, out.tau);
+  EXPECT_EQ(in_place.beta, out.beta);
+  EXPECT_EQ(s1, s2);
+}
+
+}  // namespace
+}  // namespace novelty::stats
