@@ -47,6 +47,8 @@ add_library(novelty_ode INTERFACE)
 target_link_libraries(novelty_ode INTERFACE PkgConfig::ODE)
 target_compile_definitions(novelty_ode INTERFACE dIDEDOUBLE)
 
+find_package(Threads REQUIRED)
+
 find_package(GTest QUIET)
 novelty_require(GTest_FOUND "libgtest-dev libgmock-dev")
 find_package(benchmark QUIET)

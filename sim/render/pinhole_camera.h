@@ -1,0 +1,30 @@
+// Pinhole intrinsics and the camera pose, in the project's conventions: camera +Z forward,
+// +X right, +Y down; pose T_world_cam maps camera coordinates to world coordinates.
+#pragma once
+
+#include <Eigen/Geometry>
+
+namespace novelty::sim {
+
+struct PinholeCamera {
+  int width = 320;
+  int height = 240;
+  double fx = 400.0, fy = 400.0;  ///< focal lengths in pixels
+  double cx = 159.5, cy = 119.5;  ///< principal point; pixel centres are at integer coordinates
+
+  /// A camera with the given horizontal field of view and a centred principal point.
+  static PinholeCamera FromFov(int width, int height, double horizontal_fov_rad);
+
+  /// Direction in camera coordinates through pixel (u, v), with z = 1 (so ray parameter = depth).
+  Eigen::Vector3d RayCam(double u, double v) const;
+  /// Pixel coordinates of a camera-frame point (z > 0).
+  Eigen::Vector2d Project(const Eigen::Vector3d& p_cam) const;
+  /// Throws std::invalid_argument if sizes or focal lengths are not positive.
+  void Check() const;
+};
+
+/// The pose of a camera at `eye` looking at `target`, with image "up" as close to world +z as
+/// possible (camera +Y down ≈ world -z). Throws if eye == target or the view is vertical.
+Eigen::Isometry3d LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target);
+
+}  // namespace novelty::sim
