@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -150,7 +151,36 @@ std::uint8_t ToByte(double value, double noise_sigma, PixelRandom& random) {
   return static_cast<std::uint8_t>(std::clamp(v, 0.0, 255.0) + 0.5);
 }
 
+// Runs fn(row_begin, row_end) over [0, rows) split into one block per thread (0 = per core);
+// the calling thread takes the first block.
+void ForEachRowBlock(int rows, int threads, const std::function<void(int, int)>& fn) {
+  const int n = std::max(
+      1, std::min(rows,
+                  threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()))));
+  std::vector<std::thread> workers;
+  for (int t = 1; t < n; ++t) workers.emplace_back(fn, rows * t / n, rows * (t + 1) / n);
+  fn(0, rows / n);
+  for (std::thread& w : workers) w.join();
+}
+
 }  // namespace
+
+cv::Mat RenderIds(const RayScene& scene, const PinholeCamera& camera,
+                  const Eigen::Isometry3d& T_world_cam, int threads) {
+  camera.Check();
+  CheckPose(T_world_cam);
+  cv::Mat ids(camera.height, camera.width, CV_32SC1);
+  const Eigen::Matrix3d R = T_world_cam.linear();
+  ForEachRowBlock(camera.height, threads, [&](int begin, int end) {
+    for (int v = begin; v < end; ++v) {
+      for (int u = 0; u < camera.width; ++u) {
+        ids.at<int>(v, u) =
+            scene.Intersect(T_world_cam.translation(), R * camera.RayCam(u, v), 0.0, 1e4).object;
+      }
+    }
+  });
+  return ids;
+}
 
 Eigen::Vector3f TraceRadiance(const RayScene& scene, const Lighting& lighting,
                               const Eigen::Vector3d& origin, const Eigen::Vector3d& dir,
@@ -189,17 +219,7 @@ RenderedFrame Render(const RayScene& scene, const Lighting& lighting, const Pinh
       }
     }
   };
-  const int threads = std::max(
-      1, std::min(camera.height, options.threads > 0
-                                     ? options.threads
-                                     : int(std::max(1u, std::thread::hardware_concurrency()))));
-  std::vector<std::thread> workers;
-  for (int t = 1; t < threads; ++t) {
-    workers.emplace_back(render_rows, camera.height * t / threads,
-                         camera.height * (t + 1) / threads);
-  }
-  render_rows(0, camera.height / threads);
-  for (std::thread& w : workers) w.join();
+  ForEachRowBlock(camera.height, options.threads, render_rows);
   return out;
 }
 

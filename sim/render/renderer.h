@@ -44,6 +44,10 @@ struct RenderedFrame {
 RenderedFrame Render(const RayScene& scene, const Lighting& lighting, const PinholeCamera& camera,
                      const Eigen::Isometry3d& T_world_cam, const RenderOptions& options = {});
 
+/// Only the object-id image (first surface per pixel, -1 = none): for ground-truth masks.
+cv::Mat RenderIds(const RayScene& scene, const PinholeCamera& camera,
+                  const Eigen::Isometry3d& T_world_cam, int threads = 0);
+
 /// Linear radiance leaving the first surface along a ray (no noise, no gamma): the shading model
 /// itself, for tests against closed forms. Returns `background` if nothing is hit.
 Eigen::Vector3f TraceRadiance(const RayScene& scene, const Lighting& lighting,

@@ -23,10 +23,14 @@ Pioneer3dx::Pioneer3dx(PhysicsWorld& world, double x, double y, double phi,
   const Eigen::Vector3d axle(x, y, spec.wheel_radius);
   // Chassis: its box centre sits above the axle; the caster hangs below its rear.
   const double body_z = spec.body_clearance + spec.body_size.z() / 2;
-  chassis_ = world.AddBox(Pose(x, y, body_z, yaw), spec.body_size, spec.body_mass);
+  const Eigen::Vector3d centre =
+      Eigen::Vector3d(x, y, body_z) + yaw * Eigen::Vector3d(spec.body_offset, 0, 0);
+  chassis_ =
+      world.AddBox(Pose(centre.x(), centre.y(), centre.z(), yaw), spec.body_size, spec.body_mass);
   dGeomID caster = dCreateSphere(world.space(), spec.caster_radius);
   dGeomSetBody(caster, chassis_);
-  dGeomSetOffsetPosition(caster, spec.caster_offset, 0, spec.caster_radius - body_z);
+  dGeomSetOffsetPosition(caster, spec.caster_offset - spec.body_offset, 0,
+                         spec.caster_radius - body_z);
   PhysicsWorld::SetSurface(caster, Surface::kFrictionless);
 
   // Wheels: cylinders with their axis (local z) along the robot's y axis.
@@ -77,8 +81,10 @@ void Pioneer3dx::UpdateOdometry(double dt) {
   const double dr = -dJointGetHingeAngleRate(right_hinge_) * dt;
   left_angle_ += dl;
   right_angle_ += dr;
-  const double sl = dl * spec_.wheel_radius, sr = dr * spec_.wheel_radius;
-  const double ds = 0.5 * (sl + sr), dphi = (sr - sl) / spec_.track;
+  const double sl = dl * spec_.wheel_radius * (1.0 + spec_.odometry_left_radius_error);
+  const double sr = dr * spec_.wheel_radius * (1.0 + spec_.odometry_right_radius_error);
+  const double ds = 0.5 * (sl + sr);
+  const double dphi = (sr - sl) / (spec_.track * (1.0 + spec_.odometry_track_error));
   const double mid = odometry_.phi + 0.5 * dphi;  // midpoint integration of the unicycle
   odometry_.x += ds * std::cos(mid);
   odometry_.y += ds * std::sin(mid);
@@ -91,9 +97,9 @@ void Pioneer3dx::UpdateOdometry(double dt) {
 
 Eigen::Isometry3d Pioneer3dx::TruePose() const {
   const Eigen::Isometry3d chassis = PhysicsWorld::PoseOf(chassis_);
-  // Base frame: below the chassis centre on the floor, x forward, z up.
+  // Base frame: at the axle centre on the floor, x forward, z up.
   const double body_z = spec_.body_clearance + spec_.body_size.z() / 2;
-  return chassis * Eigen::Translation3d(0, 0, -body_z);
+  return chassis * Eigen::Translation3d(-spec_.body_offset, 0, -body_z);
 }
 
 Eigen::Vector3d Pioneer3dx::TruePose2D() const {

@@ -15,6 +15,8 @@ struct Pioneer3dxSpec {
   Eigen::Vector3d body_size{0.455, 0.381, 0.237 - 0.06};  ///< chassis box above the axle (m)
   double body_clearance = 0.06;                           ///< chassis underside above the floor (m)
   double body_mass = 7.0;        ///< kg (9 kg robot minus wheels and caster)
+  double body_offset = -0.06;    ///< chassis centre behind the axle (m): the weight rests on
+                                 ///< the caster, so the robot cannot tip onto its nose
   double wheel_radius = 0.0975;  ///< 195 mm tyres
   double wheel_width = 0.047;
   double wheel_mass = 0.8;
@@ -25,6 +27,12 @@ struct Pioneer3dxSpec {
   double max_speed = 1.2;              ///< m/s
   double max_acceleration = 0.5;       ///< m/s² per wheel (the firmware's ramp; avoids wheel spin)
   std::int32_t ticks_per_rev = 78400;  ///< encoder ticks per wheel revolution (~128 ticks/mm)
+  /// Relative errors of the constants the odometry integrates with (wheel radii, track), like a
+  /// real robot's firmware constants that do not match worn or soft tyres. The simulated wheels
+  /// barely slip, so without them odometry would be unrealistically exact.
+  double odometry_left_radius_error = 0.004;
+  double odometry_right_radius_error = -0.003;
+  double odometry_track_error = 0.01;
 };
 
 /// Wheel-odometry pose in the plane, as MRPT's CPose2D (x, y, φ) plus encoder totals.

@@ -1,0 +1,65 @@
+// Writes an MRPT rawlog in the "observations" format (a plain sequence of serialized
+// CObservation objects) with images stored externally in MRPT's `<name>_Images/` folder beside
+// the rawlog, so `rawlog-edit`, `RawLogViewer` and MRPT's CRawlog read it.
+//
+// What each sensor becomes:
+//   camera (mono, trinocular)  CObservationImage; cameraPose = camera on the robot, camera frame
+//                              +Z forward, +X right, +Y down (MRPT's optical frame)
+//   stereo pair                CObservationStereoImages (cameraPose = left camera)
+//   RGB-D                      CObservation3DRangeScan, range_is_depth, rangeUnits 0.2 mm, range
+//                              image external (.bin), sensorPose in MRPT's +X-forward convention
+//   LED tracker                CObservationBearingRange labelled "LED_TRACKER": the tracker is
+//                              fixed to the room, so the "robot" is the world origin and each
+//                              visible LED is one (range, yaw, pitch) entry with landmarkID =
+//                              LED number 1…4; dropped LEDs are simply absent. This standard class
+//                              keeps the LED identities, which a point cloud would lose.
+//   wheel odometry             CObservationOdometry with encoder ticks and velocities
+// Timestamps are seconds since the scenario start, offset to 2011-01-01 00:00 UTC.
+// The file is written to `<name>.rawlog.tmp` and renamed on Close(): never a half rawlog.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "sim/render/pinhole_camera.h"
+#include "sim/world/led_tracker.h"
+#include "sim/world/pioneer3dx.h"
+
+namespace novelty::sim {
+
+class RawlogWriter {
+ public:
+  /// Opens DIR/NAME.rawlog (via a temporary) and creates DIR/NAME_Images/.
+  RawlogWriter(const std::string& dir, const std::string& name);
+  ~RawlogWriter();
+
+  /// `stem`: file name of the image without extension (unique per image).
+  void WriteImage(double t, const std::string& label, const cv::Mat& rgb,
+                  const PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
+                  const std::string& stem);
+  void WriteStereo(double t, const cv::Mat& left, const cv::Mat& right, const PinholeCamera& camera,
+                   const Eigen::Isometry3d& robot_from_left, double baseline,
+                   const std::string& stem);
+  /// depth: CV_32F metres (0 = unknown).
+  void WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth, const PinholeCamera& camera,
+                 const Eigen::Isometry3d& robot_from_camera, const std::string& stem);
+  void WriteTracker(double t, const LedMeasurement& leds, double noise_std);
+  void WriteOdometry(double t, const Odometry& odometry);
+
+  /// Flushes and renames the temporary to the final name. Called by the destructor if needed,
+  /// but call it to get errors as exceptions.
+  void Close();
+  std::string rawlog_path() const { return final_path_; }
+  std::string images_dir() const { return images_dir_; }
+  int observations() const { return count_; }
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+  std::string final_path_, temp_path_, images_dir_;
+  int count_ = 0;
+};
+
+}  // namespace novelty::sim

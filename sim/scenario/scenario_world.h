@@ -1,0 +1,95 @@
+// A scenario brought to life: the ODE world with the room, furniture, objects and the robot on
+// its trajectory; events applied at their times (objects added, removed, moved — by a person's
+// arm when asked — lamps moved or switched); the camera rig's true poses; and the renderable
+// scene, now and in the reference configuration of the start (for ground-truth novelty masks).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "sim/render/ray_scene.h"
+#include "sim/scenario/scenario.h"
+#include "sim/world/physics_world.h"
+#include "sim/world/pioneer3dx.h"
+
+namespace novelty::sim {
+
+/// Object id of the person's arm in id images and novelty masks; room structure is 0.
+inline constexpr int kArmObjectId = 1000;
+inline constexpr int kRoomObjectId = 0;
+
+class ScenarioWorld {
+ public:
+  /// Builds the world and lets the initial objects settle for `settle_seconds` (physics only).
+  explicit ScenarioWorld(const Scenario& scenario, double settle_seconds = 1.0);
+  ~ScenarioWorld();
+
+  /// Runs physics, the robot controller and the events up to time t (seconds, ≥ the current).
+  void AdvanceTo(double t);
+  double time() const { return time_; }
+
+  /// True pose of the camera head (the rig's reference camera): T_world_cam.
+  Eigen::Isometry3d HeadPose() const;
+  /// Where the camera head is on the robot (T_base_head), or T_world_head for a tripod: the
+  /// nominal sensor pose written into the rawlog.
+  Eigen::Isometry3d RobotFromHead() const;
+  /// T_head_cam of each rig camera, reference camera first (see RigKind).
+  std::vector<Eigen::Isometry3d> RigOffsets() const;
+  /// The robot (nullptr for a static camera).
+  const Pioneer3dx* robot() const { return robot_.get(); }
+
+  /// Adds everything visible now to `scene` (not committed).
+  void AddToScene(RayScene& scene) const;
+  /// Adds the start configuration (objects present at the start, at their settled poses).
+  void AddReferenceToScene(RayScene& scene) const;
+  /// Lamps as they are now.
+  Lighting CurrentLighting() const;
+
+  /// Ids that differ from the start configuration: added (present now, not at the start, or
+  /// moved, or the arm) and removed (present at the start, gone or moved now).
+  std::vector<int> AddedIds() const;
+  std::vector<int> RemovedIds() const;
+  /// Events applied so far, as "time kind target" strings for the ground-truth event table.
+  const std::vector<std::string>& applied_events() const { return applied_; }
+
+ private:
+  struct ObjectState {
+    const ObjectSpec* spec;
+    TriangleMesh mesh;
+    dBodyID body = nullptr;
+    Eigen::Isometry3d pose;        // current (fixed objects and absent ones keep theirs)
+    Eigen::Isometry3d start_pose;  // after settling
+    bool present;
+    bool present_at_start;
+    bool moved = false;
+  };
+  struct ArmMotion {
+    const EventSpec* event;
+    Eigen::Vector3d target, direction;
+  };
+
+  void BuildRoom();
+  void BuildObjects();
+  double SupportTop(const std::string& support) const;
+  Eigen::Isometry3d PlacementPose(const ObjectSpec& o, const Eigen::Vector2d& xy) const;
+  void Spawn(ObjectState& o, const Eigen::Isometry3d& pose);
+  void Despawn(ObjectState& o);
+  void Apply(const EventSpec& e);
+  void StepOnce();
+  ObjectState& Object(const std::string& name);
+  std::optional<TriangleMesh> ArmMesh() const;
+
+  const Scenario& s_;
+  std::unique_ptr<PhysicsWorld> physics_;
+  std::unique_ptr<Pioneer3dx> robot_;
+  std::vector<ObjectState> objects_;
+  std::vector<std::pair<TriangleMesh, Material>> room_;
+  std::vector<LampSpec> lamps_;
+  std::vector<bool> event_done_;
+  std::vector<ArmMotion> arms_;
+  std::vector<std::string> applied_;
+  double time_ = 0.0;
+};
+
+}  // namespace novelty::sim
