@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace novelty::sim {
 
@@ -186,11 +187,24 @@ void ScenarioWorld::BuildObjects() {
   }
 }
 
-ScenarioWorld::ObjectState& ScenarioWorld::Object(const std::string& name) {
-  for (ObjectState& o : objects_) {
+const ScenarioWorld::ObjectState& ScenarioWorld::Object(const std::string& name) const {
+  for (const ObjectState& o : objects_) {
     if (o.spec->name == name) return o;
   }
   throw std::runtime_error(s_.file + ": no object '" + name + "'");
+}
+
+ScenarioWorld::ObjectState& ScenarioWorld::Object(const std::string& name) {
+  return const_cast<ObjectState&>(std::as_const(*this).Object(name));
+}
+
+bool ScenarioWorld::IsPresent(const std::string& name) const {
+  return Object(name).present;
+}
+
+Eigen::Isometry3d ScenarioWorld::ObjectPose(const std::string& name) const {
+  const ObjectState& o = Object(name);
+  return o.body ? PhysicsWorld::PoseOf(o.body) : o.pose;
 }
 
 void ScenarioWorld::Apply(const EventSpec& e) {

@@ -39,6 +39,10 @@ class ScenarioWorld {
   /// The robot (nullptr for a static camera).
   const Pioneer3dx* robot() const { return robot_.get(); }
 
+  /// Whether an object is in the scene now, and its current pose (throws for unknown names).
+  bool IsPresent(const std::string& name) const;
+  Eigen::Isometry3d ObjectPose(const std::string& name) const;
+
   /// Adds everything visible now to `scene` (not committed).
   void AddToScene(RayScene& scene) const;
   /// Adds the start configuration (objects present at the start, at their settled poses).
@@ -78,6 +82,7 @@ class ScenarioWorld {
   void Apply(const EventSpec& e);
   void StepOnce();
   ObjectState& Object(const std::string& name);
+  const ObjectState& Object(const std::string& name) const;
   std::optional<TriangleMesh> ArmMesh() const;
 
   const Scenario& s_;

@@ -1,0 +1,117 @@
+#include "sim/scenario/scenario_parser.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+namespace novelty::sim {
+namespace {
+
+const char* kMinimal = R"(
+name tiny        # a comment
+frames 20
+fps 10
+camera 160 120 60
+rig trinocular 0.12
+sensor noise 0.5 gamma 2.0
+material wood phong 0.5 0.3 0.1
+material cloth phong 0.9 0.9 0.9
+texture cloth checker 0.1 0.1 0.1 10
+object table box 1 0.6 0.7 wood at 0 0 fixed
+object cloth plane 1 0.6 cloth at 0 0 on table
+object cup cup 0.04 0.1 wood at 0.1 0 on cloth absent mass 0.2
+lamp l1 0 0 2.5 1 1 1 radius 0.1
+arc 0 0 1.5 -100 -80 0.1
+stop 1
+event 0.5 add cup arm 0.4
+event 1.0 lamp l1 1 1 2
+phase A 1 10 first half
+)";
+
+Scenario Parse(const std::string& text) {
+  std::istringstream in(text);
+  return ParseScenario(in, "test.scn");
+}
+
+std::string ErrorOf(const std::string& text) {
+  try {
+    Parse(text);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ScenarioParser, ReadsEveryStatement) {
+  const Scenario s = Parse(kMinimal);
+  EXPECT_EQ(s.name, "tiny");
+  EXPECT_EQ(s.frames, 20);
+  EXPECT_DOUBLE_EQ(s.fps, 10.0);
+  EXPECT_EQ(s.camera.width, 160);
+  EXPECT_NEAR(s.camera.fx, 80.0 / std::tan(M_PI / 6), 1e-9);
+  EXPECT_EQ(s.rig.kind, RigKind::kTrinocular);
+  EXPECT_DOUBLE_EQ(s.render.noise_sigma, 0.5);
+  ASSERT_EQ(s.objects.size(), 3u);
+  EXPECT_EQ(s.objects[2].id, 3);
+  EXPECT_EQ(s.objects[2].support, "cloth");
+  EXPECT_FALSE(s.objects[2].present);
+  EXPECT_TRUE(s.objects[0].fixed);
+  EXPECT_EQ(s.materials.at("cloth").texture.kind, Texture::Kind::kChecker);
+  ASSERT_EQ(s.events.size(), 2u);
+  EXPECT_EQ(s.events[0].kind, EventSpec::Kind::kAdd);
+  EXPECT_DOUBLE_EQ(s.events[0].arm_duration, 0.4);
+  EXPECT_EQ(s.events[1].kind, EventSpec::Kind::kLampMove);
+  EXPECT_EQ(s.phases.at(0).description, "first half");
+  EXPECT_NEAR(s.trajectory.Duration(), 1.5 * 20 * M_PI / 180 / 0.1 + 0.1 / 0.3 + 1.0, 1e-9);
+}
+
+TEST(ScenarioParser, ErrorsNameFileLineAndProblem) {
+  const std::string base = "name x\narc 0 0 1 0 10 0.1\n";
+  EXPECT_EQ(ErrorOf(base + "frames ten\n"), "test.scn:3: expected a number for frames, got 'ten'");
+  EXPECT_EQ(ErrorOf(base + "bogus 1\n"), "test.scn:3: unknown keyword 'bogus'");
+  EXPECT_EQ(ErrorOf(base + "object a box 1 1 1 steel at 0 0\n"),
+            "test.scn:3: undeclared material 'steel'");
+  EXPECT_EQ(ErrorOf(base + "material m phong 1 1 1\nobject a box 1 1 1 m at 0 0 on b\n"),
+            "test.scn:4: support 'b' is not a declared object");
+  EXPECT_EQ(ErrorOf(base + "event 1 add ghost\n"),
+            "test.scn:3: event on undeclared object 'ghost'");
+  EXPECT_EQ(ErrorOf(base + "frames 5\nfps 1\nmaterial m phong 1 1 1\nobject a box 1 1 1 m at 0 0\n"
+                           "event 9 remove a\n"),
+            "test.scn:7: event at 9.000000 s is after the run's end (5.000000 s)");
+  EXPECT_EQ(ErrorOf(base + "camera 320 240\n"),
+            "test.scn:3: missing horizontal field of view after '240'");
+  EXPECT_EQ(ErrorOf("frames 3\n"), "test.scn: no 'name' statement");
+  EXPECT_EQ(ErrorOf("name x\n"), "test.scn: neither 'static_camera' nor a trajectory ('arc')");
+  EXPECT_EQ(ErrorOf(base + "arc 0 0 -1 0 10 0.1\n"),
+            "test.scn:3: radius must be > 0, got -1.000000");
+}
+
+TEST(ScenarioParser, MissingFileIsNamed) {
+  try {
+    LoadScenario("/nonexistent/x.scn");
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "/nonexistent/x.scn: cannot open scenario file");
+  }
+}
+
+TEST(ScenarioParser, EveryShippedScenarioParses) {
+  int count = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(NOVELTY_SOURCE_DIR) + "/share/scenarios")) {
+    if (entry.path().extension() != ".scn") continue;
+    SCOPED_TRACE(entry.path().string());
+    const Scenario s = LoadScenario(entry.path().string());
+    EXPECT_FALSE(s.name.empty());
+    EXPECT_GT(s.frames, 0);
+    if (!s.static_camera) {
+      EXPECT_GE(s.trajectory.Duration(), s.Duration() - 1e-6);
+    }
+    ++count;
+  }
+  EXPECT_GE(count, 1);
+}
+
+}  // namespace
+}  // namespace novelty::sim
