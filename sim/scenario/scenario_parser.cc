@@ -230,8 +230,9 @@ class Parser {
   }
 
   void Window(Line& l) {
-    s_.window = Eigen::Vector4d(l.Number("window x"), l.Number("window z"), l.Positive("width"),
-                                l.Positive("height"));
+    // Braced initialisation: the four values are read left to right (call arguments are not).
+    s_.window = Eigen::Vector4d{l.Number("window x"), l.Number("window z"), l.Positive("width"),
+                                l.Positive("height")};
   }
 
   void Daylight(Line& l) {
@@ -352,7 +353,7 @@ class Parser {
   }
 
   void Arc(Line& l) {
-    const Eigen::Vector2d c(l.Number("centre x"), l.Number("centre y"));
+    const Eigen::Vector2d c{l.Number("centre x"), l.Number("centre y")};
     const double r = l.Positive("radius"), from = l.Number("from") * kDeg,
                  to = l.Number("to") * kDeg;
     const double speed = l.Positive("speed");

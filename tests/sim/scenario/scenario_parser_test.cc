@@ -22,7 +22,8 @@ object table box 1 0.6 0.7 wood at 0 0 fixed
 object cloth plane 1 0.6 cloth at 0 0 on table
 object cup cup 0.04 0.1 wood at 0.1 0 on cloth absent mass 0.2
 lamp l1 0 0 2.5 1 1 1 radius 0.1
-arc 0 0 1.5 -100 -80 0.1
+window 0.5 1.4 1.6 1.2
+arc 0.3 -0.2 1.5 -100 -80 0.1
 stop 1
 event 0.5 add cup arm 0.4
 event 1.0 lamp l1 1 1 2
@@ -63,6 +64,10 @@ TEST(ScenarioParser, ReadsEveryStatement) {
   EXPECT_DOUBLE_EQ(s.events[0].arm_duration, 0.4);
   EXPECT_EQ(s.events[1].kind, EventSpec::Kind::kLampMove);
   EXPECT_EQ(s.phases.at(0).description, "first half");
+  // Multi-number statements keep their order (argument evaluation order is unspecified in C++).
+  EXPECT_EQ(*s.window, Eigen::Vector4d(0.5, 1.4, 1.6, 1.2));
+  EXPECT_NEAR(s.trajectory.At(0).x, 0.3 + 1.5 * std::cos(-100 * M_PI / 180), 1e-12);
+  EXPECT_NEAR(s.trajectory.At(0).y, -0.2 + 1.5 * std::sin(-100 * M_PI / 180), 1e-12);
   EXPECT_NEAR(s.trajectory.Duration(), 1.5 * 20 * M_PI / 180 / 0.1 + 0.1 / 0.3 + 1.0, 1e-9);
 }
 
