@@ -11,17 +11,17 @@ namespace novelty::sim {
 
 namespace {
 
-std::string FrameName(int frame) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%06d.png", frame);
-  return buf;
-}
-
 void Write(const std::string& path, const cv::Mat& image) {
   if (!cv::imwrite(path, image)) throw std::runtime_error(path + ": cannot write image");
 }
 
 }  // namespace
+
+std::string GroundTruthWriter::FrameStem(int frame) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%06d", frame);
+  return buf;
+}
 
 GroundTruthWriter::GroundTruthWriter(const std::string& dir, const Scenario& scenario,
                                      const std::vector<Eigen::Isometry3d>& rig_offsets)
@@ -77,7 +77,7 @@ void GroundTruthWriter::WriteFrame(int frame, double t, const Eigen::Isometry3d&
   cv::Mat depth16, ids16;
   depth.convertTo(depth16, CV_16U, 5000.0);  // saturates beyond 13.1 m
   ids.convertTo(ids16, CV_16U, 1.0, 1.0);
-  const std::string name = FrameName(frame);
+  const std::string name = FrameStem(frame) + ".png";
   Write(dir_ + "/depth/" + name, depth16);
   Write(dir_ + "/ids/" + name, ids16);
   Write(dir_ + "/novelty/" + name, novelty);

@@ -36,6 +36,9 @@ class GroundTruthWriter {
   /// Writes events.csv from the phases and the applied events ("time kind target").
   void WriteEvents(const std::vector<std::string>& applied_events);
 
+  /// Zero-padded frame number, the stem of every per-frame file ("000042").
+  static std::string FrameStem(int frame);
+
   /// Novelty mask from the current and reference id images (CV_32S) and the changed ids.
   static cv::Mat NoveltyMask(const cv::Mat& ids, const cv::Mat& reference_ids,
                              const std::vector<int>& added, const std::vector<int>& removed);

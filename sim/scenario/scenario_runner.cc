@@ -16,18 +16,12 @@ namespace novelty::sim {
 
 namespace {
 
-std::string Stem(int frame) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%06d", frame);
-  return buf;
-}
-
 // Writes the rig's images of one frame as the rig's observation type(s).
 void WriteCameras(RawlogWriter& out, const Scenario& s, double t, int frame,
                   const std::vector<RenderedFrame>& renders,
                   const Eigen::Isometry3d& robot_from_head,
                   const std::vector<Eigen::Isometry3d>& offsets) {
-  const std::string stem = Stem(frame);
+  const std::string stem = GroundTruthWriter::FrameStem(frame);
   switch (s.rig.kind) {
     case RigKind::kMono:
       out.WriteImage(t, "CAMERA", renders[0].rgb, s.camera, robot_from_head, stem);

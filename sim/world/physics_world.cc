@@ -86,37 +86,33 @@ dGeomID PhysicsWorld::AddStaticBox(const Eigen::Isometry3d& pose, const Eigen::V
   return g;
 }
 
-dBodyID PhysicsWorld::AddBox(const Eigen::Isometry3d& pose, const Eigen::Vector3d& size,
-                             double mass) {
+dBodyID PhysicsWorld::AddBody(const dMass& mass, dGeomID geom, const Eigen::Isometry3d& pose) {
   dBodyID body = dBodyCreate(world_);
-  dMass m;
-  dMassSetBoxTotal(&m, mass, size.x(), size.y(), size.z());
-  dBodySetMass(body, &m);
-  dGeomSetBody(dCreateBox(space_, size.x(), size.y(), size.z()), body);
+  dBodySetMass(body, &mass);
+  dGeomSetBody(geom, body);
   PlaceGeomOrBody(body, nullptr, pose);
   return body;
+}
+
+dBodyID PhysicsWorld::AddBox(const Eigen::Isometry3d& pose, const Eigen::Vector3d& size,
+                             double mass) {
+  dMass m;
+  dMassSetBoxTotal(&m, mass, size.x(), size.y(), size.z());
+  return AddBody(m, dCreateBox(space_, size.x(), size.y(), size.z()), pose);
 }
 
 dBodyID PhysicsWorld::AddCylinder(const Eigen::Isometry3d& pose, double radius, double height,
                                   double mass) {
-  dBodyID body = dBodyCreate(world_);
   dMass m;
   dMassSetCylinderTotal(&m, mass, 3, radius, height);  // axis 3 = z, as dCreateCylinder
-  dBodySetMass(body, &m);
-  dGeomSetBody(dCreateCylinder(space_, radius, height), body);
-  PlaceGeomOrBody(body, nullptr, pose);
-  return body;
+  return AddBody(m, dCreateCylinder(space_, radius, height), pose);
 }
 
 dBodyID PhysicsWorld::AddWheel(const Eigen::Isometry3d& pose, double radius, double width,
                                double mass) {
-  dBodyID body = dBodyCreate(world_);
   dMass m;
   dMassSetCylinderTotal(&m, mass, 3, radius, width);
-  dBodySetMass(body, &m);
-  dGeomSetBody(dCreateSphere(space_, radius), body);
-  PlaceGeomOrBody(body, nullptr, pose);
-  return body;
+  return AddBody(m, dCreateSphere(space_, radius), pose);
 }
 
 void PhysicsWorld::RemoveBody(dBodyID body) {

@@ -58,6 +58,7 @@ class PhysicsWorld {
 
  private:
   static void NearCallback(void* data, dGeomID a, dGeomID b);
+  dBodyID AddBody(const dMass& mass, dGeomID geom, const Eigen::Isometry3d& pose);
 
   PhysicsOptions options_;
   dWorldID world_;
