@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/render/pinhole_camera.h"
+#include "maps/views/pinhole_camera.h"
 #include "sim/scenario/scenario.h"
 #include "sim/world/pioneer3dx.h"
 

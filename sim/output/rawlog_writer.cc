@@ -31,7 +31,7 @@ mrpt::poses::CPose3D ToMrpt(const Eigen::Isometry3d& p) {
   return mrpt::poses::CPose3D(m);
 }
 
-mrpt::img::TCamera ToMrpt(const PinholeCamera& c) {
+mrpt::img::TCamera ToMrpt(const views::PinholeCamera& c) {
   mrpt::img::TCamera t;
   t.ncols = static_cast<uint32_t>(c.width);
   t.nrows = static_cast<uint32_t>(c.height);
@@ -88,7 +88,7 @@ static mrpt::img::CImage External(const std::string& images_dir, const cv::Mat& 
 }
 
 void RawlogWriter::WriteImage(double t, const std::string& label, const cv::Mat& rgb,
-                              const PinholeCamera& camera,
+                              const views::PinholeCamera& camera,
                               const Eigen::Isometry3d& robot_from_camera, const std::string& stem) {
   mrpt::obs::CObservationImage obs;
   obs.timestamp = Stamp(t);
@@ -102,7 +102,7 @@ void RawlogWriter::WriteImage(double t, const std::string& label, const cv::Mat&
 }
 
 void RawlogWriter::WriteStereo(double t, const cv::Mat& left, const cv::Mat& right,
-                               const PinholeCamera& camera,
+                               const views::PinholeCamera& camera,
                                const Eigen::Isometry3d& robot_from_left, double baseline,
                                const std::string& stem) {
   mrpt::obs::CObservationStereoImages obs;
@@ -120,7 +120,7 @@ void RawlogWriter::WriteStereo(double t, const cv::Mat& left, const cv::Mat& rig
 }
 
 void RawlogWriter::WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth,
-                             const PinholeCamera& camera,
+                             const views::PinholeCamera& camera,
                              const Eigen::Isometry3d& robot_from_camera, const std::string& stem) {
   mrpt::obs::CObservation3DRangeScan obs;
   obs.timestamp = Stamp(t);

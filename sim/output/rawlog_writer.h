@@ -23,7 +23,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "sim/render/pinhole_camera.h"
+#include "maps/views/pinhole_camera.h"
 #include "sim/world/led_tracker.h"
 #include "sim/world/pioneer3dx.h"
 
@@ -37,14 +37,15 @@ class RawlogWriter {
 
   /// `stem`: file name of the image without extension (unique per image).
   void WriteImage(double t, const std::string& label, const cv::Mat& rgb,
-                  const PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
+                  const views::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
                   const std::string& stem);
-  void WriteStereo(double t, const cv::Mat& left, const cv::Mat& right, const PinholeCamera& camera,
-                   const Eigen::Isometry3d& robot_from_left, double baseline,
-                   const std::string& stem);
+  void WriteStereo(double t, const cv::Mat& left, const cv::Mat& right,
+                   const views::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_left,
+                   double baseline, const std::string& stem);
   /// depth: CV_32F metres (0 = unknown).
-  void WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth, const PinholeCamera& camera,
-                 const Eigen::Isometry3d& robot_from_camera, const std::string& stem);
+  void WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth,
+                 const views::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
+                 const std::string& stem);
   void WriteTracker(double t, const LedMeasurement& leds, double noise_std);
   void WriteOdometry(double t, const Odometry& odometry);
 

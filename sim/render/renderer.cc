@@ -165,7 +165,7 @@ void ForEachRowBlock(int rows, int threads, const std::function<void(int, int)>&
 
 }  // namespace
 
-cv::Mat RenderIds(const RayScene& scene, const PinholeCamera& camera,
+cv::Mat RenderIds(const RayScene& scene, const views::PinholeCamera& camera,
                   const Eigen::Isometry3d& T_world_cam, int threads) {
   camera.Check();
   CheckPose(T_world_cam);
@@ -189,8 +189,9 @@ Eigen::Vector3f TraceRadiance(const RayScene& scene, const Lighting& lighting,
   return Tracer{scene, lighting, options, random}.Trace(origin, dir, 0);
 }
 
-RenderedFrame Render(const RayScene& scene, const Lighting& lighting, const PinholeCamera& camera,
-                     const Eigen::Isometry3d& T_world_cam, const RenderOptions& options) {
+RenderedFrame Render(const RayScene& scene, const Lighting& lighting,
+                     const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+                     const RenderOptions& options) {
   camera.Check();
   CheckPose(T_world_cam);
   RenderedFrame out{cv::Mat(camera.height, camera.width, CV_8UC3),

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "maps/views/pinhole_camera.h"
 #include "sim/render/lighting.h"
 #include "sim/render/material.h"
-#include "sim/render/pinhole_camera.h"
 #include "sim/render/renderer.h"
 #include "sim/world/trajectory.h"
 
@@ -88,7 +88,7 @@ struct Scenario {
   int frames = 100;
   double fps = 7.0;
   std::uint64_t seed = 1;
-  PinholeCamera camera = PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180.0);
+  views::PinholeCamera camera = views::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180.0);
   RigSpec rig;
   RenderOptions render;
   MountSpec mount;

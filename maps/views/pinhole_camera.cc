@@ -1,10 +1,10 @@
-#include "sim/render/pinhole_camera.h"
+#include "maps/views/pinhole_camera.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-namespace novelty::sim {
+namespace novelty::views {
 
 PinholeCamera PinholeCamera::FromFov(int width, int height, double horizontal_fov_rad) {
   PinholeCamera c;
@@ -25,10 +25,13 @@ Eigen::Vector2d PinholeCamera::Project(const Eigen::Vector3d& p) const {
 }
 
 void PinholeCamera::Check() const {
-  if (width <= 0 || height <= 0 || !(fx > 0) || !(fy > 0)) {
-    throw std::invalid_argument("PinholeCamera: need positive size and focal lengths, got " +
-                                std::to_string(width) + "x" + std::to_string(height) +
-                                " fx=" + std::to_string(fx) + " fy=" + std::to_string(fy));
+  if (width <= 0 || height <= 0 || !std::isfinite(fx) || !std::isfinite(fy) || fx == 0.0 ||
+      fy == 0.0 || !std::isfinite(cx) || !std::isfinite(cy)) {
+    throw std::invalid_argument(
+        "PinholeCamera: need a positive size and finite, non-zero focal "
+        "lengths, got " +
+        std::to_string(width) + "x" + std::to_string(height) + " fx=" + std::to_string(fx) +
+        " fy=" + std::to_string(fy));
   }
 }
 
@@ -48,4 +51,4 @@ Eigen::Isometry3d LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& targ
   return t;
 }
 
-}  // namespace novelty::sim
+}  // namespace novelty::views

@@ -1,10 +1,11 @@
-// Pinhole intrinsics and the camera pose, in the project's conventions: camera +Z forward,
-// +X right, +Y down; pose T_world_cam maps camera coordinates to world coordinates.
+// Pinhole intrinsics (eq. 3.7 without skew) and the camera pose, in the project's conventions:
+// camera +Z forward, +X right, +Y down; pose T_world_cam maps camera coordinates to world
+// coordinates.
 #pragma once
 
 #include <Eigen/Geometry>
 
-namespace novelty::sim {
+namespace novelty::views {
 
 struct PinholeCamera {
   int width = 320;
@@ -19,7 +20,10 @@ struct PinholeCamera {
   Eigen::Vector3d RayCam(double u, double v) const;
   /// Pixel coordinates of a camera-frame point (z > 0).
   Eigen::Vector2d Project(const Eigen::Vector3d& p_cam) const;
-  /// Throws std::invalid_argument if sizes or focal lengths are not positive.
+  /// Back-projects pixel (u, v) with depth d (along +Z) into camera coordinates (eq. 3.6, 3.9).
+  Eigen::Vector3d Unproject(double u, double v, double depth) const { return depth * RayCam(u, v); }
+  /// Throws std::invalid_argument if sizes are not positive or a focal length is zero or not
+  /// finite. A negative focal length is allowed (e.g. ICL-NUIM's fy < 0: image y axis up).
   void Check() const;
 };
 
@@ -27,4 +31,4 @@ struct PinholeCamera {
 /// possible (camera +Y down ≈ world -z). Throws if eye == target or the view is vertical.
 Eigen::Isometry3d LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target);
 
-}  // namespace novelty::sim
+}  // namespace novelty::views

@@ -1,0 +1,49 @@
+// Warping a reference view into a virtual camera (3.3.2): the view's depth map becomes a
+// triangle mesh in world coordinates — every 2×2 block of pixels two triangles, vertices
+// back-projected with their depth (eq. 3.6, 3.9) — which is rasterised into the virtual camera
+// with a z-buffer. Triangles across depth discontinuities (vertex depths differing by more than
+// `max_relative_depth_jump`) are not drawn, so foreground and background are never joined by
+// stretched "rubber" triangles; what only the occluded side could show stays uncovered.
+//
+// The result is a warp field: for each virtual pixel the source pixel coordinates and the depth
+// seen there. It is computed once per frame and applied to any number of planes (view_blender.h).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+
+#include "maps/views/pinhole_camera.h"
+
+namespace novelty::views {
+
+struct WarpOptions {
+  /// Triangles whose largest vertex depth exceeds the smallest by more than this fraction are
+  /// depth discontinuities and are skipped. 0.05 passes a plane seen at 80° from its normal at
+  /// 320×240 (neighbouring depths differ by ~2 %) and cuts object silhouettes.
+  double max_relative_depth_jump = 0.05;
+  /// Surfaces nearer than this to the virtual camera (metres) are clipped.
+  double near_plane = 0.05;
+  /// Worker threads over bands of virtual-image rows; 0 = one per hardware core.
+  int threads = 0;
+  /// Also fill WarpField::cos_angle (for view-dependent blending weights).
+  bool compute_view_angles = false;
+};
+
+struct WarpField {
+  cv::Mat map;    ///< CV_32FC2: source (u, v) for each virtual pixel; (-1, -1) where uncovered
+  cv::Mat depth;  ///< CV_32FC1: depth along the virtual camera's +Z; 0 where uncovered
+  cv::Mat source_depth;  ///< CV_32FC1: the same surface's depth in the source view (its
+                         ///< resolution there: far sources are blurrier); 0 where uncovered
+  cv::Mat cos_angle;     ///< CV_32FC1 (if asked): cosine of the angle at the surface point between
+                         ///< the rays to the virtual and to the source camera centre; 0 uncovered
+  int covered = 0;       ///< number of covered virtual pixels
+};
+
+/// Warps the source view (camera, pose, depth CV_32F) into the virtual camera. A pose that is not
+/// rigid or a depth map of the wrong size throws std::invalid_argument; a source that sees
+/// nothing of the virtual view gives an all-uncovered field.
+WarpField WarpView(const PinholeCamera& source_camera, const Eigen::Isometry3d& T_world_source,
+                   const cv::Mat& source_depth, const PinholeCamera& virtual_camera,
+                   const Eigen::Isometry3d& T_world_virtual, const WarpOptions& options = {});
+
+}  // namespace novelty::views

@@ -1,0 +1,43 @@
+// Blending warped reference data into the virtual view (3.3.2, second pass): each plane is
+// sampled through each view's warp field (bilinear, OpenCV remap) and the valid contributions
+// are averaged per pixel — the thesis's rule. Pixels that no view covers are invalid: NaN in the
+// result and 0 in the mask, never zeros that look like data.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "maps/views/depth_mesh_warper.h"
+
+namespace novelty::views {
+
+struct BlendOptions {
+  /// Weight per view (same order as the warps); empty = equal weights (the thesis's average).
+  std::vector<double> weights;
+  /// > 0: at each pixel only views whose warped depth is within this fraction of the nearest
+  /// view's depth contribute, so a view that sees past an occluder (the surface behind it) does
+  /// not ghost into the average. 0 = every valid view contributes (the thesis's rule).
+  double depth_tolerance = 0.0;
+  /// > 0: each contribution is weighted per pixel by (z_virtual / z_source)^power, favouring views
+  /// that saw the surface from nearer — at higher resolution — than the virtual camera does, over
+  /// distant views whose texture is magnified and blurred. 0 = no such weighting (the thesis).
+  double resolution_power = 0.0;
+  /// > 0: each contribution is also weighted by cos(angle)^power between the rays from the
+  /// surface point to the virtual and to the source camera (needs WarpOptions::
+  /// compute_view_angles): views that saw the surface from the same direction get more say, which
+  /// keeps view-dependent effects (highlights) right. 0 = no such weighting (the thesis).
+  double angle_power = 0.0;
+};
+
+struct BlendResult {
+  cv::Mat value;  ///< CV_32FC(n) with the planes' channel count; NaN where invalid
+  cv::Mat valid;  ///< CV_8UC1, 255 where at least one view contributed
+  int covered = 0;
+};
+
+/// planes[k] is view k's plane (any depth, n channels, the source camera's size). Throws
+/// std::invalid_argument when counts, sizes or channel counts disagree.
+BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+                        const BlendOptions& options = {});
+
+}  // namespace novelty::views

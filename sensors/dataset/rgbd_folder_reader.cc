@@ -1,0 +1,76 @@
+#include "sensors/dataset/rgbd_folder_reader.h"
+
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+#include <stdexcept>
+
+namespace novelty::sensors {
+
+RgbdFolderReader::RgbdFolderReader(const std::string& folder, const views::PinholeCamera& camera,
+                                   double depth_scale)
+    : folder_(folder), camera_(camera), depth_scale_(depth_scale) {
+  camera_.Check();
+  if (!(depth_scale > 0)) throw std::invalid_argument("RgbdFolderReader: depth scale must be > 0");
+  const std::string path = folder + "/pose.txt";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::istringstream s(line);
+    double tx, ty, tz, qx, qy, qz, qw;
+    if (!(s >> tx >> ty >> tz >> qx >> qy >> qz >> qw)) {
+      throw std::runtime_error(path + ":" + std::to_string(n) +
+                               ": expected 'tx ty tz qx qy qz qw'");
+    }
+    const Eigen::Quaterniond q(qw, qx, qy, qz);
+    if (std::abs(q.norm() - 1.0) > 1e-3) {
+      throw std::runtime_error(path + ":" + std::to_string(n) + ": quaternion is not unit length");
+    }
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = q.normalized().toRotationMatrix();
+    T.translation() = Eigen::Vector3d(tx, ty, tz);
+    poses_.push_back(T);
+  }
+  if (poses_.empty()) throw std::runtime_error(path + ": no poses");
+}
+
+RgbdFrame RgbdFolderReader::Read(int index) const {
+  if (index < 1 || index > size()) {
+    throw std::out_of_range(folder_ + ": no frame " + std::to_string(index) + " (1…" +
+                            std::to_string(size()) + ")");
+  }
+  RgbdFrame f;
+  f.index = index;
+  f.T_world_cam = poses_[std::size_t(index - 1)];
+  const std::string color = folder_ + "/color/" + std::to_string(index) + ".png";
+  const std::string depth = folder_ + "/depth/" + std::to_string(index) + ".png";
+  const cv::Mat bgr = cv::imread(color, cv::IMREAD_COLOR);
+  const cv::Mat raw = cv::imread(depth, cv::IMREAD_ANYDEPTH);
+  if (bgr.empty()) throw std::runtime_error(color + ": cannot read image");
+  if (raw.empty() || raw.type() != CV_16UC1) {
+    throw std::runtime_error(depth + ": cannot read a 16-bit depth image");
+  }
+  const cv::Size expected(camera_.width, camera_.height);
+  if (bgr.size() != expected || raw.size() != expected) {
+    throw std::runtime_error(color + ": image size does not match the camera's " +
+                             std::to_string(camera_.width) + "x" + std::to_string(camera_.height));
+  }
+  cv::cvtColor(bgr, f.rgb, cv::COLOR_BGR2RGB);
+  raw.convertTo(f.depth, CV_32F, 1.0 / depth_scale_);
+  return f;
+}
+
+views::ReferenceView RgbdFolderReader::ReadView(int index) const {
+  RgbdFrame f = Read(index);
+  views::ReferenceView v;
+  v.camera = camera_;
+  v.T_world_cam = f.T_world_cam;
+  v.depth = f.depth;
+  v.planes["rgb"] = f.rgb;
+  return v;
+}
+
+}  // namespace novelty::sensors

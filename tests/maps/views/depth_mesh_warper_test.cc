@@ -1,0 +1,89 @@
+#include "maps/views/depth_mesh_warper.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace novelty::views {
+namespace {
+
+const PinholeCamera kCam = PinholeCamera::FromFov(160, 120, 1.0);
+
+// Camera at the origin looking along world +x (so world x is depth).
+Eigen::Isometry3d Forward(double y = 0.0, double z = 0.0) {
+  return LookAt({0, y, z}, {1, y, z});
+}
+
+cv::Mat Constant(float depth) {
+  return cv::Mat(kCam.height, kCam.width, CV_32FC1, cv::Scalar(depth));
+}
+
+TEST(DepthMeshWarper, IdentityWarpMapsEveryPixelToItself) {
+  const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam, Forward());
+  for (int y = 0; y < kCam.height - 1; ++y) {
+    for (int x = 0; x < kCam.width - 1; ++x) {
+      const cv::Vec2f s = w.map.at<cv::Vec2f>(y, x);
+      ASSERT_NEAR(s[0], x, 1e-3);
+      ASSERT_NEAR(s[1], y, 1e-3);
+      ASSERT_NEAR(w.depth.at<float>(y, x), 2.0f, 1e-5);
+    }
+  }
+  // The last row and column are vertices of no complete quad beyond them, but lie on edges.
+  EXPECT_GE(w.covered, (kCam.width - 1) * (kCam.height - 1));
+}
+
+TEST(DepthMeshWarper, SidewaysMoveShiftsAFrontoParallelPlaneByTheDisparity) {
+  // Virtual camera 0.1 m to the left (world +y): a plane at 2 m shifts by fx · 0.1 / 2 pixels.
+  const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam, Forward(0.1));
+  const double disparity = kCam.fx * 0.1 / 2.0;
+  int checked = 0;
+  for (int y = 5; y < kCam.height - 5; y += 7) {
+    for (int x = 20; x < kCam.width - 20; x += 7) {
+      const cv::Vec2f s = w.map.at<cv::Vec2f>(y, x);
+      ASSERT_GE(s[0], 0.0f);
+      EXPECT_NEAR(s[0], x - disparity, 1e-3) << x << "," << y;
+      EXPECT_NEAR(s[1], y, 1e-3);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+TEST(DepthMeshWarper, DepthDiscontinuitiesAreNotBridged) {
+  // Left half at 1 m, right half at 3 m; a sideways virtual camera opens a gap between them.
+  cv::Mat depth = Constant(3.0f);
+  depth(cv::Rect(0, 0, kCam.width / 2, kCam.height)).setTo(1.0f);
+  const WarpField w = WarpView(kCam, Forward(), depth, kCam, Forward(-0.2));
+  int between = 0, gap = 0;
+  for (int i = 0; i < kCam.width * kCam.height; ++i) {
+    const float d = w.depth.at<float>(i);
+    if (d > 1.05f && d < 2.9f) ++between;  // a stretched triangle would put depths here
+    gap += d == 0.0f;
+  }
+  EXPECT_EQ(between, 0);
+  EXPECT_GT(gap, kCam.height * 5);  // the disoccluded strip stays uncovered
+  WarpOptions joined;
+  joined.max_relative_depth_jump = 10.0;  // bridging allowed: the gap fills with rubber
+  const WarpField r = WarpView(kCam, Forward(), depth, kCam, Forward(-0.2), joined);
+  EXPECT_GT(r.covered, w.covered);
+}
+
+TEST(DepthMeshWarper, NothingInFrontGivesAnAllInvalidField) {
+  const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam,
+                               LookAt({5, 0, 0}, {6, 0, 0}));  // the plane is behind it
+  EXPECT_EQ(w.covered, 0);
+  EXPECT_EQ(cv::countNonZero(w.depth), 0);
+}
+
+TEST(DepthMeshWarper, BadInputIsRejected) {
+  Eigen::Isometry3d sheared = Forward();
+  sheared.linear()(0, 1) += 0.3;
+  EXPECT_THROW(WarpView(kCam, sheared, Constant(2.0f), kCam, Forward()), std::invalid_argument);
+  EXPECT_THROW(WarpView(kCam, Forward(), cv::Mat(10, 10, CV_32FC1, cv::Scalar(1)), kCam, Forward()),
+               std::invalid_argument);
+  cv::Mat nan_depth = Constant(std::nanf(""));
+  EXPECT_EQ(WarpView(kCam, Forward(), nan_depth, kCam, Forward()).covered, 0);
+}
+
+}  // namespace
+}  // namespace novelty::views

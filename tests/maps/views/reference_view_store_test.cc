@@ -1,0 +1,44 @@
+#include "maps/views/reference_view_store.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace novelty::views {
+namespace {
+
+ReferenceView View() {
+  ReferenceView v;
+  v.camera = PinholeCamera::FromFov(32, 24, 1.0);
+  v.depth = cv::Mat(24, 32, CV_32FC1, cv::Scalar(1));
+  v.planes["rgb"] = cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(0));
+  v.planes["tau"] = cv::Mat(24, 32, CV_16FC3);
+  return v;
+}
+
+TEST(ReferenceViewStore, StoresChecksAndCountsBytes) {
+  ReferenceViewStore store;
+  EXPECT_EQ(store.Add(View()), 0);
+  EXPECT_EQ(store.Add(View()), 1);
+  // depth 4 B + rgb 3 B + tau 3 × 2 B per pixel
+  EXPECT_EQ(store.BytesUsed(), 2u * 32 * 24 * (4 + 3 + 6));
+  ReferenceView bad = View();
+  bad.planes["beta"] = cv::Mat(10, 10, CV_32FC1);
+  try {
+    store.Add(bad);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("plane 'beta'"), std::string::npos) << e.what();
+  }
+  ReferenceView sheared = View();
+  sheared.T_world_cam.linear()(0, 1) = 0.5;
+  EXPECT_THROW(store.Replace(1, sheared), std::invalid_argument);
+  ReferenceView wrong_depth = View();
+  wrong_depth.depth = cv::Mat(24, 32, CV_16UC1);
+  EXPECT_THROW(store.Add(wrong_depth), std::invalid_argument);
+  EXPECT_THROW(store.Replace(5, View()), std::out_of_range);
+  EXPECT_EQ(store.size(), 2);
+}
+
+}  // namespace
+}  // namespace novelty::views

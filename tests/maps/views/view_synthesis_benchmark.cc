@@ -1,0 +1,80 @@
+// One 320×240 virtual view from seven 320×240 reference views: warp (mesh rasterisation with
+// z-buffer) and blend of an RGB plane. Budget (DESIGN.md): ≤ 3 ms on 2 cores (thesis: 24 ms, GPU).
+// The reference views are ray-traced by the simulator around a table scene.
+#include <benchmark/benchmark.h>
+
+#include "maps/views/depth_mesh_warper.h"
+#include "maps/views/view_blender.h"
+#include "maps/views/view_selection.h"
+#include "sim/render/renderer.h"
+
+namespace novelty {
+namespace {
+
+struct Views {
+  views::PinholeCamera camera = views::PinholeCamera::FromFov(320, 240, 1.0);
+  std::vector<Eigen::Isometry3d> poses;
+  std::vector<cv::Mat> depths, images;
+  Eigen::Isometry3d virtual_pose;
+};
+
+Views MakeViews() {
+  sim::RayScene scene;
+  sim::Material cloth;
+  cloth.texture.kind = sim::Texture::Kind::kChecker;
+  cloth.texture.cells = 10;
+  scene.AddObject(sim::MakePlane(6, 6), Eigen::Isometry3d::Identity(), cloth, 1);
+  scene.AddObject(sim::MakeBox({0.4, 0.3, 0.5}),
+                  Eigen::Isometry3d(Eigen::Translation3d(0, 0, 0.25)), sim::Material{}, 2);
+  scene.Commit();
+  sim::Lighting light;
+  light.points.push_back({{1, 1, 3}, {4, 4, 4}, 0.0});
+  Views v;
+  for (int i = 0; i < 7; ++i) {
+    const double a = -0.6 + 0.2 * i;
+    const Eigen::Vector3d eye(2.0 * std::cos(a), 2.0 * std::sin(a), 1.2);
+    v.poses.push_back(views::LookAt(eye, {0, 0, 0.2}));
+    const sim::RenderedFrame f = sim::Render(scene, light, v.camera, v.poses.back());
+    v.depths.push_back(f.depth);
+    v.images.push_back(f.rgb);
+  }
+  v.virtual_pose = views::LookAt({2.0 * std::cos(0.05), 2.0 * std::sin(0.05), 1.25}, {0, 0, 0.2});
+  return v;
+}
+
+void BM_SynthesiseVirtualView(benchmark::State& state) {
+  static const Views v = MakeViews();
+  views::WarpOptions wo;
+  wo.threads = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    const std::vector<int> selected = views::SelectViews(v.poses, v.camera, v.virtual_pose);
+    std::vector<views::WarpField> warps;
+    std::vector<cv::Mat> planes;
+    for (int j : selected) {
+      warps.push_back(
+          views::WarpView(v.camera, v.poses[j], v.depths[j], v.camera, v.virtual_pose, wo));
+      planes.push_back(v.images[j]);
+    }
+    const views::BlendResult r = views::BlendPlanes(warps, planes);
+    benchmark::DoNotOptimize(r.value.data);
+    state.counters["views"] = double(selected.size());
+  }
+}
+BENCHMARK(BM_SynthesiseVirtualView)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_WarpOneView(benchmark::State& state) {
+  static const Views v = MakeViews();
+  views::WarpOptions wo;
+  wo.threads = 1;
+  for (auto _ : state) {
+    const views::WarpField w =
+        views::WarpView(v.camera, v.poses[3], v.depths[3], v.camera, v.virtual_pose, wo);
+    benchmark::DoNotOptimize(w.map.data);
+  }
+}
+BENCHMARK(BM_WarpOneView)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace novelty
+
+BENCHMARK_MAIN();
