@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
+#include <opencv2/core/utility.hpp>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 #include "maps/views/reference_view_store.h"
@@ -19,22 +20,33 @@ struct Vertex {
   float x, y, inv_z, source_depth;
 };
 
-// Runs fn(begin, end) over [0, n) in one block per thread, the caller taking the first block.
-void ParallelBlocks(int n, int threads, const std::function<void(int, int)>& fn) {
-  const int t = std::max(
-      1,
-      std::min(n, threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()))));
-  std::vector<std::thread> workers;
-  for (int i = 1; i < t; ++i) workers.emplace_back(fn, n * i / t, n * (i + 1) / t);
-  fn(0, n / t);
-  for (std::thread& w : workers) w.join();
+// All source vertices, structure of arrays (contiguous loads for the vectorised rasteriser).
+struct Vertices {
+  std::vector<float> x, y, inv_z, source_depth;
+  void Resize(std::size_t n) {
+    x.resize(n);
+    y.resize(n);
+    inv_z.resize(n);
+    source_depth.resize(n);
+  }
+  Vertex operator[](std::size_t i) const { return {x[i], y[i], inv_z[i], source_depth[i]}; }
+};
+
+// Runs fn(begin, end) over [0, n) split into `blocks` stripes on OpenCV's persistent thread pool
+// (no thread is created per call).
+void ParallelBlocks(int n, int blocks, const std::function<void(int, int)>& fn) {
+  cv::parallel_for_(
+      cv::Range(0, n), [&](const cv::Range& r) { fn(r.start, r.end); }, blocks);
+}
+
+int ThreadCount(int requested) {
+  return requested > 0 ? requested : std::max(1, cv::getNumThreads());
 }
 
 // Projects every source pixel into the virtual camera (eq. 3.6, 3.9 and the virtual projection).
-std::vector<Vertex> ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs,
-                                    const cv::Mat& depth, const PinholeCamera& dst,
-                                    double near_plane, int threads) {
-  std::vector<Vertex> v(static_cast<std::size_t>(src.width) * src.height);
+void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, const cv::Mat& depth,
+                     const PinholeCamera& dst, double near_plane, int threads, Vertices& v) {
+  v.Resize(static_cast<std::size_t>(src.width) * src.height);
   const Eigen::Matrix3f R = T_vs.linear().cast<float>();
   const Eigen::Vector3f t = T_vs.translation().cast<float>();
   // R · K⁻¹ (u, v, 1) is affine in u and v: a·u + b·v + c.
@@ -42,41 +54,56 @@ std::vector<Vertex> ProjectVertices(const PinholeCamera& src, const Eigen::Isome
   const Eigen::Vector3f c = R.col(2) - a * float(src.cx) - b * float(src.cy);
   const float fx = float(dst.fx), fy = float(dst.fy), cx = float(dst.cx), cy = float(dst.cy);
   const float near_z = float(near_plane);
-  ParallelBlocks(src.height, threads, [&](int r0, int r1) {
+  ParallelBlocks(src.height, ThreadCount(threads), [&](int r0, int r1) {
     for (int r = r0; r < r1; ++r) {
       const float* d = depth.ptr<float>(r);
-      Vertex* out = &v[std::size_t(r) * src.width];
+      const std::size_t base = std::size_t(r) * src.width;
+      float *ox = &v.x[base], *oy = &v.y[base], *oiz = &v.inv_z[base], *ozs = &v.source_depth[base];
       const Eigen::Vector3f row = b * float(r) + c;
       for (int u = 0; u < src.width; ++u) {
         const float z_src = d[u];
         const Eigen::Vector3f p = z_src * (a * float(u) + row) + t;
-        if (!(z_src > 0.0f) || !(p.z() > near_z)) {  // also rejects NaN depth
-          out[u] = {0.f, 0.f, 0.f, 0.f};
-          continue;
-        }
-        const float iz = 1.0f / p.z();
-        out[u] = {fx * p.x() * iz + cx, fy * p.y() * iz + cy, iz, z_src};
+        const bool ok = z_src > 0.0f && p.z() > near_z;  // also rejects NaN depth
+        const float iz = ok ? 1.0f / p.z() : 0.0f;
+        ox[u] = fx * p.x() * iz + cx;
+        oy[u] = fy * p.y() * iz + cy;
+        oiz[u] = iz;
+        ozs[u] = ok ? z_src : 0.0f;
       }
     }
   });
-  return v;
 }
 
+// The rasteriser's output for one thread: inverse depth (the z-buffer, 0 = empty — nearer is
+// larger, so no division per pixel), source depth and source coordinates.
 struct Target {
-  float* z;       // virtual depth (z-buffer), 0 = empty
-  float* zs;      // source depth
-  cv::Vec2f* uv;  // source coordinates
-  int width, row_begin, row_end;
+  cv::Mat inv_z, source_depth, uv;
+  // Sizes (reusing the memory of an earlier call) and clears the buffers.
+  void Reset(int rows, int cols) {
+    inv_z.create(rows, cols, CV_32FC1);
+    source_depth.create(rows, cols, CV_32FC1);
+    uv.create(rows, cols, CV_32FC2);
+    inv_z.setTo(0.0f);
+    source_depth.setTo(0.0f);
+    uv.setTo(cv::Scalar(-1, -1));
+  }
+  // Keeps, per pixel, the nearer of this and `other`.
+  void Merge(const Target& other) {
+    const cv::Mat nearer = other.inv_z > inv_z;
+    other.inv_z.copyTo(inv_z, nearer);
+    other.source_depth.copyTo(source_depth, nearer);
+    other.uv.copyTo(uv, nearer);
+  }
 };
 
 // Rasterises one triangle with vertices a, b, c (source pixel coordinates sa, sb, sc) into the
-// pixels [x0, x1] × [y0, y1] (already clipped to the image and the thread's band). Pixel centres
-// at integer coordinates; 1/z and the source coordinates are interpolated linearly on screen.
+// pixels [x0, x1] × [y0, y1] (already clipped to the image). Pixel centres at integer
+// coordinates; 1/z and the source coordinates are interpolated linearly on screen.
 inline __attribute__((always_inline)) void Rasterise(const Vertex& a, const Vertex& b,
                                                      const Vertex& c, const cv::Vec2f& sa,
                                                      const cv::Vec2f& sb, const cv::Vec2f& sc,
-                                                     int x0, int x1, int y0, int y1,
-                                                     const Target& t) {
+                                                     int x0, int x1, int y0, int y1, float* iz_buf,
+                                                     float* zs_buf, cv::Vec2f* uv_buf, int width) {
   const float area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   if (std::abs(area) < 1e-12f) return;
   const float inv_area = 1.0f / area;
@@ -88,12 +115,12 @@ inline __attribute__((always_inline)) void Rasterise(const Vertex& a, const Vert
       const float wc = ((b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x)) * inv_area;
       const float wa = 1.0f - wb - wc;
       if (wa < -1e-5f || wb < -1e-5f || wc < -1e-5f) continue;
-      const float z = 1.0f / (wa * a.inv_z + wb * b.inv_z + wc * c.inv_z);
-      const std::size_t i = std::size_t(y) * t.width + x;
-      if (t.z[i] != 0.0f && t.z[i] <= z) continue;
-      t.z[i] = z;
-      t.zs[i] = wa * a.source_depth + wb * b.source_depth + wc * c.source_depth;
-      t.uv[i] = wa * sa + wb * sb + wc * sc;
+      const float iz = wa * a.inv_z + wb * b.inv_z + wc * c.inv_z;
+      const std::size_t i = std::size_t(y) * width + x;
+      if (iz <= iz_buf[i]) continue;  // z-test on inverse depth
+      iz_buf[i] = iz;
+      zs_buf[i] = wa * a.source_depth + wb * b.source_depth + wc * c.source_depth;
+      uv_buf[i] = wa * sa + wb * sb + wc * sc;
     }
   }
 }
@@ -122,11 +149,54 @@ cv::Mat ViewAngles(const cv::Mat& depth, const PinholeCamera& cam, const Eigen::
   return cos_angle;
 }
 
+// Buffers of one thread's target, as raw pointers, with the virtual image size.
+struct TargetView {
+  float* iz;
+  float* zs;
+  cv::Vec2f* uv;
+  int width, height;
+};
+
+// The general case: one quad (source pixels (u, r)…(u+1, r+1)) as two triangles.
+void RasteriseQuad(const Vertices& v, int w, int u, int r, float max_ratio, const TargetView& t) {
+  const std::size_t i = std::size_t(r) * w + u;
+  const Vertex p00 = v[i], p10 = v[i + 1], p01 = v[i + w], p11 = v[i + w + 1];
+  // The quad's pixel-centre bounding box, clipped to the image.
+  const float qx0 = std::min(std::min(p00.x, p10.x), std::min(p01.x, p11.x));
+  const float qx1 = std::max(std::max(p00.x, p10.x), std::max(p01.x, p11.x));
+  const float qy0 = std::min(std::min(p00.y, p10.y), std::min(p01.y, p11.y));
+  const float qy1 = std::max(std::max(p00.y, p10.y), std::max(p01.y, p11.y));
+  const int x0 = std::max(0, int(std::ceil(qx0)));
+  const int x1 = std::min(t.width - 1, int(std::floor(qx1)));
+  const int y0 = std::max(0, int(std::ceil(qy0)));
+  const int y1 = std::min(t.height - 1, int(std::floor(qy1)));
+  if (x0 > x1 || y0 > y1) return;
+  const float fu = float(u), fr = float(r);
+  const cv::Vec2f s00{fu, fr}, s10{fu + 1, fr}, s01{fu, fr + 1}, s11{fu + 1, fr + 1};
+  if (Usable(p00, p10, p11, max_ratio)) {
+    Rasterise(p00, p10, p11, s00, s10, s11, x0, x1, y0, y1, t.iz, t.zs, t.uv, t.width);
+  }
+  if (Usable(p00, p11, p01, max_ratio)) {
+    Rasterise(p00, p11, p01, s00, s11, s01, x0, x1, y0, y1, t.iz, t.zs, t.uv, t.width);
+  }
+}
+
 }  // namespace
 
-WarpField WarpView(const PinholeCamera& src, const Eigen::Isometry3d& T_world_src,
-                   const cv::Mat& depth, const PinholeCamera& dst,
-                   const Eigen::Isometry3d& T_world_dst, const WarpOptions& o) {
+struct DepthMeshWarper::Scratch {
+  Vertices vertices;
+  std::vector<Target> targets;
+  cv::Mat covered;
+};
+
+DepthMeshWarper::DepthMeshWarper(const WarpOptions& options)
+    : options_(options), scratch_(std::make_unique<Scratch>()) {}
+DepthMeshWarper::~DepthMeshWarper() = default;
+
+void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_world_src,
+                           const cv::Mat& depth, const PinholeCamera& dst,
+                           const Eigen::Isometry3d& T_world_dst, WarpField& field) {
+  const WarpOptions& o = options_;
   src.Check();
   dst.Check();
   if (!IsRigid(T_world_src) || !IsRigid(T_world_dst)) {
@@ -139,47 +209,49 @@ WarpField WarpView(const PinholeCamera& src, const Eigen::Isometry3d& T_world_sr
         std::to_string(src.width) + "x" + std::to_string(src.height));
   }
   const Eigen::Isometry3d T_vs = T_world_dst.inverse() * T_world_src;
-  const std::vector<Vertex> v = ProjectVertices(src, T_vs, depth, dst, o.near_plane, o.threads);
+  Vertices& v = scratch_->vertices;
+  ProjectVertices(src, T_vs, depth, dst, o.near_plane, o.threads, v);
 
-  WarpField field;
-  field.depth = cv::Mat(dst.height, dst.width, CV_32FC1, cv::Scalar(0));
-  field.map = cv::Mat(dst.height, dst.width, CV_32FC2, cv::Scalar(-1, -1));
-  field.source_depth = cv::Mat(dst.height, dst.width, CV_32FC1, cv::Scalar(0));
+  // Threads take blocks of source rows, each with its own buffers, merged by depth afterwards.
+  const int n_threads = std::max(1, std::min(src.height - 1, ThreadCount(o.threads)));
+  std::vector<Target>& targets = scratch_->targets;
+  targets.resize(std::size_t(n_threads));
+  for (Target& t : targets) t.Reset(dst.height, dst.width);
   const float max_ratio = float(1.0 + o.max_relative_depth_jump);
   const int w = src.width;
-  ParallelBlocks(dst.height, o.threads, [&](int row_begin, int row_end) {
-    const Target t{field.depth.ptr<float>(),
-                   field.source_depth.ptr<float>(),
-                   field.map.ptr<cv::Vec2f>(),
-                   dst.width,
-                   row_begin,
-                   row_end};
-    for (int r = 0; r + 1 < src.height; ++r) {
-      for (int u = 0; u + 1 < w; ++u) {
-        const std::size_t i = std::size_t(r) * w + u;
-        const Vertex &p00 = v[i], &p10 = v[i + 1], &p01 = v[i + w], &p11 = v[i + w + 1];
-        // The quad's pixel-centre bounding box, clipped to the image and this band: most quads
-        // of a similar-resolution warp hold one pixel centre or none.
-        const float qx0 = std::min(std::min(p00.x, p10.x), std::min(p01.x, p11.x));
-        const float qx1 = std::max(std::max(p00.x, p10.x), std::max(p01.x, p11.x));
-        const float qy0 = std::min(std::min(p00.y, p10.y), std::min(p01.y, p11.y));
-        const float qy1 = std::max(std::max(p00.y, p10.y), std::max(p01.y, p11.y));
-        const int x0 = std::max(0, int(std::ceil(qx0))),
-                  x1 = std::min(t.width - 1, int(std::floor(qx1)));
-        const int y0 = std::max(row_begin, int(std::ceil(qy0)));
-        const int y1 = std::min(row_end - 1, int(std::floor(qy1)));
-        if (x0 > x1 || y0 > y1) continue;
-        const float fu = float(u), fr = float(r);
-        const cv::Vec2f s00{fu, fr}, s10{fu + 1, fr}, s01{fu, fr + 1}, s11{fu + 1, fr + 1};
-        if (Usable(p00, p10, p11, max_ratio))
-          Rasterise(p00, p10, p11, s00, s10, s11, x0, x1, y0, y1, t);
-        if (Usable(p00, p11, p01, max_ratio))
-          Rasterise(p00, p11, p01, s00, s11, s01, x0, x1, y0, y1, t);
+  ParallelBlocks(n_threads, n_threads, [&](int t0, int t1) {
+    for (int ti = t0; ti < t1; ++ti) {
+      Target& t = targets[std::size_t(ti)];
+      float* iz_buf = t.inv_z.ptr<float>();
+      float* zs_buf = t.source_depth.ptr<float>();
+      cv::Vec2f* uv_buf = t.uv.ptr<cv::Vec2f>();
+      const int r_begin = (src.height - 1) * ti / n_threads;
+      const int r_end = (src.height - 1) * (ti + 1) / n_threads;
+      const TargetView view{iz_buf, zs_buf, uv_buf, dst.width, dst.height};
+      for (int r = r_begin; r < r_end; ++r) {
+        for (int u = 0; u + 1 < w; ++u) RasteriseQuad(v, w, u, r, max_ratio, view);
       }
     }
   });
-  field.covered = cv::countNonZero(field.depth);
+  for (std::size_t i = 1; i < targets.size(); ++i) targets[0].Merge(targets[i]);
+
+  Target& t = targets[0];
+  cv::Mat& covered = scratch_->covered;
+  cv::compare(t.inv_z, 0.0f, covered, cv::CMP_GT);
+  cv::divide(1.0, t.inv_z, field.depth);
+  field.depth.setTo(0.0f, ~covered);  // uncovered: 0, not 1/0
+  t.source_depth.copyTo(field.source_depth);
+  t.uv.copyTo(field.map);
+  field.covered = cv::countNonZero(covered);
   if (o.compute_view_angles) field.cos_angle = ViewAngles(field.depth, dst, T_vs.translation());
+}
+
+WarpField WarpView(const PinholeCamera& source_camera, const Eigen::Isometry3d& T_world_source,
+                   const cv::Mat& source_depth, const PinholeCamera& virtual_camera,
+                   const Eigen::Isometry3d& T_world_virtual, const WarpOptions& options) {
+  WarpField field;
+  DepthMeshWarper(options).Warp(source_camera, T_world_source, source_depth, virtual_camera,
+                                T_world_virtual, field);
   return field;
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <memory>
 #include <opencv2/core.hpp>
 
 #include "maps/views/pinhole_camera.h"
@@ -23,7 +24,7 @@ struct WarpOptions {
   double max_relative_depth_jump = 0.05;
   /// Surfaces nearer than this to the virtual camera (metres) are clipped.
   double near_plane = 0.05;
-  /// Worker threads over bands of virtual-image rows; 0 = one per hardware core.
+  /// Worker threads (blocks of source rows, merged by depth); 0 = OpenCV's thread count.
   int threads = 0;
   /// Also fill WarpField::cos_angle (for view-dependent blending weights).
   bool compute_view_angles = false;
@@ -39,9 +40,30 @@ struct WarpField {
   int covered = 0;       ///< number of covered virtual pixels
 };
 
-/// Warps the source view (camera, pose, depth CV_32F) into the virtual camera. A pose that is not
-/// rigid or a depth map of the wrong size throws std::invalid_argument; a source that sees
-/// nothing of the virtual view gives an all-uncovered field.
+/// Warps views one after another, reusing its buffers (and the output field's) from call to
+/// call: a robot warps seven views per frame, and fresh megabyte buffers each time cost more in
+/// page faults than the rasterisation itself.
+class DepthMeshWarper {
+ public:
+  explicit DepthMeshWarper(const WarpOptions& options = {});
+  ~DepthMeshWarper();
+  DepthMeshWarper(const DepthMeshWarper&) = delete;
+  DepthMeshWarper& operator=(const DepthMeshWarper&) = delete;
+
+  /// Warps the source view (camera, pose, depth CV_32F) into the virtual camera, writing `out`.
+  /// A pose that is not rigid or a depth map of the wrong size throws std::invalid_argument; a
+  /// source that sees nothing of the virtual view gives an all-uncovered field.
+  void Warp(const PinholeCamera& source_camera, const Eigen::Isometry3d& T_world_source,
+            const cv::Mat& source_depth, const PinholeCamera& virtual_camera,
+            const Eigen::Isometry3d& T_world_virtual, WarpField& out);
+
+ private:
+  struct Scratch;
+  WarpOptions options_;
+  std::unique_ptr<Scratch> scratch_;
+};
+
+/// One warp with a temporary DepthMeshWarper (see there).
 WarpField WarpView(const PinholeCamera& source_camera, const Eigen::Isometry3d& T_world_source,
                    const cv::Mat& source_depth, const PinholeCamera& virtual_camera,
                    const Eigen::Isometry3d& T_world_virtual, const WarpOptions& options = {});

@@ -62,6 +62,27 @@ void BM_SynthesiseVirtualView(benchmark::State& state) {
 }
 BENCHMARK(BM_SynthesiseVirtualView)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The budget's case: all seven reference views warped and blended.
+void BM_SynthesiseFromSevenViews(benchmark::State& state) {
+  static const Views v = MakeViews();
+  views::WarpOptions wo;
+  wo.threads = static_cast<int>(state.range(0));
+  views::DepthMeshWarper warper(wo);
+  std::vector<views::WarpField> warps(7);
+  for (auto _ : state) {
+    for (int j = 0; j < 7; ++j) {
+      warper.Warp(v.camera, v.poses[j], v.depths[j], v.camera, v.virtual_pose, warps[j]);
+    }
+    const views::BlendResult r = views::BlendPlanes(warps, v.images);
+    benchmark::DoNotOptimize(r.value.data);
+  }
+}
+BENCHMARK(BM_SynthesiseFromSevenViews)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 void BM_WarpOneView(benchmark::State& state) {
   static const Views v = MakeViews();
   views::WarpOptions wo;
