@@ -1,0 +1,115 @@
+#include "sensors/rawlog/rawlog_frame_reader.h"
+
+#include <mrpt/img/CImage.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+#include <stdexcept>
+
+namespace novelty::sensors {
+
+class RawlogFrameReader::Impl {
+ public:
+  explicit Impl(const std::string& path) : file(path) {}
+  mrpt::io::CFileGZInputStream file;
+};
+
+RawlogFrameReader::RawlogFrameReader(const std::string& path) : path_(path) {
+  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such rawlog");
+  impl_ = std::make_unique<Impl>(path);
+  if (!impl_->file.fileOpenCorrectly()) throw std::runtime_error(path + ": cannot open rawlog");
+  // MRPT resolves external images against one process-wide folder: its rawlog convention.
+  const std::filesystem::path p(path);
+  mrpt::img::CImage::setImagesPathBase(
+      (p.parent_path() / (p.stem().string() + "_Images")).string());
+}
+
+RawlogFrameReader::~RawlogFrameReader() = default;
+
+bool RawlogFrameReader::Next(Frame& frame) {
+  auto arch = mrpt::serialization::archiveFrom(impl_->file);
+  while (true) {
+    mrpt::serialization::CSerializable::Ptr obj;
+    try {
+      arch >> obj;
+    } catch (const mrpt::serialization::CExceptionEOF&) {
+      return false;
+    } catch (const std::exception& e) {
+      // A truncated or foreign file: report where, keep what was read.
+      throw std::runtime_error(path_ + ": cannot read object " + std::to_string(objects_ + 1) +
+                               ": " + e.what());
+    }
+    ++objects_;
+    auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation3DRangeScan>(obj);
+    if (!scan) continue;
+    const int index = ++frames_;
+    const std::string where = path_ + ": RGB-D frame " + std::to_string(index);
+    try {
+      scan->load();
+      if (!scan->hasRangeImage || !scan->hasIntensityImage) {
+        throw std::runtime_error("no range or no intensity image");
+      }
+      const cv::Mat bgr = scan->intensityImage.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+      const auto& range = scan->rangeImage;
+      if (bgr.empty() || bgr.type() != CV_8UC3 || bgr.rows != int(range.rows()) ||
+          bgr.cols != int(range.cols())) {
+        throw std::runtime_error("intensity image missing or not the range image's size");
+      }
+      frame.index = index;
+      frame.time = mrpt::Clock::toDouble(scan->timestamp);
+      frame.label = scan->sensorLabel;
+      cv::cvtColor(bgr, frame.rgb, cv::COLOR_BGR2RGB);
+      frame.depth.create(bgr.rows, bgr.cols, CV_32FC1);
+      for (int r = 0; r < bgr.rows; ++r) {
+        for (int c = 0; c < bgr.cols; ++c) {
+          frame.depth.at<float>(r, c) = float(range(r, c)) * scan->rangeUnits;
+        }
+      }
+      const mrpt::img::TCamera& k = scan->cameraParamsIntensity;
+      frame.camera.width = int(k.ncols);
+      frame.camera.height = int(k.nrows);
+      frame.camera.fx = k.fx();
+      frame.camera.fy = k.fy();
+      frame.camera.cx = k.cx();
+      frame.camera.cy = k.cy();
+      frame.camera.Check();
+      scan->unload();
+      return true;
+    } catch (const std::exception& e) {
+      skip_reasons_.push_back(where + ": " + e.what());
+    }
+  }
+}
+
+std::map<int, Eigen::Isometry3d> LoadGroundTruthPoses(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open ground-truth poses");
+  std::map<int, Eigen::Isometry3d> poses;
+  std::string line;
+  std::getline(in, line);  // header
+  for (int n = 2; std::getline(in, line); ++n) {
+    std::vector<std::string> f;
+    std::stringstream s(line);
+    for (std::string item; std::getline(s, item, ',');) f.push_back(item);
+    try {
+      if (f.size() < 10) throw std::invalid_argument("too few columns");
+      const Eigen::Quaterniond q(std::stod(f[9]), std::stod(f[6]), std::stod(f[7]),
+                                 std::stod(f[8]));
+      Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+      T.linear() = q.normalized().toRotationMatrix();
+      T.translation() = Eigen::Vector3d(std::stod(f[3]), std::stod(f[4]), std::stod(f[5]));
+      poses[std::stoi(f[0])] = T;
+    } catch (const std::exception& e) {
+      throw std::runtime_error(path + ":" + std::to_string(n) + ": malformed row (" + e.what() +
+                               ")");
+    }
+  }
+  return poses;
+}
+
+}  // namespace novelty::sensors

@@ -1,0 +1,98 @@
+#include "sensors/rawlog/rawlog_frame_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+
+#include "sim/scenario/scenario_parser.h"
+#include "sim/scenario/scenario_runner.h"
+
+namespace novelty::sensors {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Each test its own folder: ctest runs tests in parallel processes.
+fs::path SimulateTinyRun(const std::string& name) {
+  std::istringstream in(R"(
+name tiny
+frames 6
+fps 5
+camera 64 48 60
+rig rgbd
+material wood phong 0.5 0.3 0.1
+object table box 1.0 0.6 0.70 wood at 0 0 fixed
+lamp l1 0.5 -0.5 2.5 1.5 1.5 1.5
+arc 0 0 1.5 -100 -80 0.1
+)");
+  const sim::Scenario s = sim::ParseScenario(in, "tiny.scn");
+  const fs::path dir = fs::temp_directory_path() / ("novelty_rawlog_reader_" + name);
+  fs::remove_all(dir);
+  sim::RunOptions o;
+  o.out_dir = dir.string();
+  o.progress = false;
+  sim::RunScenario(s, o);
+  return dir;
+}
+
+TEST(RawlogFrameReader, ReadsEveryRgbdFrameWithDepthAndIntrinsics) {
+  const fs::path dir = SimulateTinyRun("complete");
+  RawlogFrameReader reader((dir / "tiny.rawlog").string());
+  const auto poses = LoadGroundTruthPoses((dir / "groundtruth/poses.csv").string());
+  int n = 0;
+  for (Frame f; reader.Next(f);) {
+    ++n;
+    EXPECT_EQ(f.index, n);
+    EXPECT_EQ(f.label, "RGBD");
+    EXPECT_EQ(f.rgb.type(), CV_8UC3);
+    EXPECT_EQ(f.camera.width, 64);
+    EXPECT_NEAR(f.camera.fx, 32.0 / std::tan(M_PI / 6), 1e-6);
+    // Depth equals the ground-truth PNG (metres × 5000) to its 0.2 mm step.
+    char name[32];
+    std::snprintf(name, sizeof name, "%06d.png", n);
+    const cv::Mat truth =
+        cv::imread((dir / "groundtruth/depth" / name).string(), cv::IMREAD_UNCHANGED);
+    cv::Mat truth_m;
+    truth.convertTo(truth_m, CV_32F, 1.0 / 5000);
+    EXPECT_LT(cv::norm(f.depth, truth_m, cv::NORM_INF), 0.00021);
+    // The colour image is the one stored beside the rawlog.
+    const cv::Mat stored = cv::imread((dir / "tiny_Images" / name).string());
+    cv::Mat stored_rgb;
+    cv::cvtColor(stored, stored_rgb, cv::COLOR_BGR2RGB);
+    EXPECT_EQ(cv::norm(f.rgb, stored_rgb, cv::NORM_INF), 0.0);
+    EXPECT_TRUE(poses.count(n));
+  }
+  EXPECT_EQ(n, 6);
+  EXPECT_EQ(reader.skipped(), 0);
+}
+
+TEST(RawlogFrameReader, MissingImagesAreSkippedAndCountedNotFatal) {
+  const fs::path dir = SimulateTinyRun("missing_image");
+  fs::remove(dir / "tiny_Images" / "000003.png");
+  RawlogFrameReader reader((dir / "tiny.rawlog").string());
+  int n = 0;
+  for (Frame f; reader.Next(f);) ++n;
+  EXPECT_EQ(n, 5);
+  ASSERT_EQ(reader.skipped(), 1);
+  EXPECT_NE(reader.skip_reasons()[0].find("RGB-D frame 3"), std::string::npos)
+      << reader.skip_reasons()[0];
+}
+
+TEST(RawlogFrameReader, BadFilesAreNamed) {
+  EXPECT_THROW(RawlogFrameReader("/nonexistent/x.rawlog"), std::runtime_error);
+  const fs::path bad = fs::temp_directory_path() / "novelty_bad_poses.csv";
+  std::ofstream(bad) << "frame,time\n1,0,A,x\n";
+  try {
+    LoadGroundTruthPoses(bad.string());
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(":2: malformed row"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace novelty::sensors
