@@ -93,7 +93,7 @@ void BM_WarpOneView(benchmark::State& state) {
     benchmark::DoNotOptimize(w.map.data);
   }
 }
-BENCHMARK(BM_WarpOneView)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WarpOneView)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace novelty
