@@ -6,6 +6,7 @@
 #include <memory>
 #include <opencv2/core/utility.hpp>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "maps/views/reference_view_store.h"
@@ -58,18 +59,21 @@ void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, co
     for (int r = r0; r < r1; ++r) {
       const float* d = depth.ptr<float>(r);
       const std::size_t base = std::size_t(r) * src.width;
-      float *ox = &v.x[base], *oy = &v.y[base], *oiz = &v.inv_z[base], *ozs = &v.source_depth[base];
+      using Row = Eigen::Map<Eigen::ArrayXf>;
+      const Eigen::Map<const Eigen::ArrayXf> z_src(d, src.width);
       const Eigen::Vector3f row = b * float(r) + c;
-      for (int u = 0; u < src.width; ++u) {
-        const float z_src = d[u];
-        const Eigen::Vector3f p = z_src * (a * float(u) + row) + t;
-        const bool ok = z_src > 0.0f && p.z() > near_z;  // also rejects NaN depth
-        const float iz = ok ? 1.0f / p.z() : 0.0f;
-        ox[u] = fx * p.x() * iz + cx;
-        oy[u] = fy * p.y() * iz + cy;
-        oiz[u] = iz;
-        ozs[u] = ok ? z_src : 0.0f;
-      }
+      const Eigen::ArrayXf us = Eigen::ArrayXf::LinSpaced(src.width, 0.0f, float(src.width - 1));
+      // p = z · (a·u + row) + t, per coordinate, for the whole row at once.
+      const Eigen::ArrayXf px = z_src * (a.x() * us + row.x()) + t.x();
+      const Eigen::ArrayXf py = z_src * (a.y() * us + row.y()) + t.y();
+      const Eigen::ArrayXf pz = z_src * (a.z() * us + row.z()) + t.z();
+      // Valid: positive depth (NaN fails) and in front of the near plane.
+      const Eigen::Array<bool, Eigen::Dynamic, 1> ok = (z_src > 0.0f) && (pz > near_z);
+      const Eigen::ArrayXf iz = ok.select(pz.inverse(), 0.0f);
+      Row(&v.x[base], src.width) = fx * px * iz + cx;
+      Row(&v.y[base], src.width) = fy * py * iz + cy;
+      Row(&v.inv_z[base], src.width) = iz;
+      Row(&v.source_depth[base], src.width) = ok.select(z_src, 0.0f);
     }
   });
 }
@@ -78,14 +82,13 @@ void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, co
 // larger, so no division per pixel), source depth and source coordinates.
 struct Target {
   cv::Mat inv_z, source_depth, uv;
-  // Sizes (reusing the memory of an earlier call) and clears the buffers.
+  // Sizes (reusing the memory of an earlier call) and clears the z-buffer; the other buffers
+  // are only read where the z-buffer was written, so they need no clearing.
   void Reset(int rows, int cols) {
     inv_z.create(rows, cols, CV_32FC1);
     source_depth.create(rows, cols, CV_32FC1);
     uv.create(rows, cols, CV_32FC2);
     inv_z.setTo(0.0f);
-    source_depth.setTo(0.0f);
-    uv.setTo(cv::Scalar(-1, -1));
   }
   // Keeps, per pixel, the nearer of this and `other`.
   void Merge(const Target& other) {
@@ -181,6 +184,73 @@ void RasteriseQuad(const Vertices& v, int w, int u, int r, float max_ratio, cons
   }
 }
 
+// Sixteen quads of one row at a time. Between views of similar resolution most quads have a
+// pixel-centre bounding box with exactly one pixel centre or none; such lanes are decided with
+// SIMD arithmetic — the same formulas as Rasterise — and only their z-test and write are scalar.
+// Lanes whose box holds more pixels go through RasteriseQuad.
+void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, const TargetView& t) {
+  constexpr int kLanes = 16;
+  using P = Eigen::Array<float, kLanes, 1>;
+  using B = Eigen::Array<bool, kLanes, 1>;  // masks evaluated: expressions would dangle
+  using M = Eigen::Map<const P, Eigen::Unaligned>;
+  const std::size_t base = std::size_t(r) * w;
+  const float eps = -1e-5f;
+  int u = 0;
+  for (; u + kLanes < w; u += kLanes) {
+    const std::size_t i = base + u;
+    const P x00 = M(&v.x[i]), x10 = M(&v.x[i + 1]), x01 = M(&v.x[i + w]), x11 = M(&v.x[i + w + 1]);
+    const P y00 = M(&v.y[i]), y10 = M(&v.y[i + 1]), y01 = M(&v.y[i + w]), y11 = M(&v.y[i + w + 1]);
+    const P bx0 = x00.min(x10).min(x01.min(x11)).ceil().max(0.0f);
+    const P bx1 = x00.max(x10).max(x01.max(x11)).floor().min(float(t.width - 1));
+    const P by0 = y00.min(y10).min(y01.min(y11)).ceil().max(0.0f);
+    const P by1 = y00.max(y10).max(y01.max(y11)).floor().min(float(t.height - 1));
+    const B empty = (bx0 > bx1) || (by0 > by1) || !(bx0 == bx0);  // NaN-safe
+    if (empty.all()) continue;
+    const B single = (bx0 == bx1) && (by0 == by1);
+    const P i00 = M(&v.inv_z[i]), i10 = M(&v.inv_z[i + 1]), i01 = M(&v.inv_z[i + w]),
+            i11 = M(&v.inv_z[i + w + 1]);
+    const P z00 = M(&v.source_depth[i]), z10 = M(&v.source_depth[i + 1]),
+            z01 = M(&v.source_depth[i + w]), z11 = M(&v.source_depth[i + w + 1]);
+    // Weights of b and c at the candidate pixel (bx0, by0) for triangle (00, b, c).
+    auto weights = [&](const P& bx, const P& by, const P& cx, const P& cy, P& wb, P& wc) -> B {
+      const P area = (bx - x00) * (cy - y00) - (by - y00) * (cx - x00);
+      const P inv_area = area.inverse();
+      wb = ((bx0 - x00) * (cy - y00) - (by0 - y00) * (cx - x00)) * inv_area;
+      wc = ((bx - x00) * (by0 - y00) - (by - y00) * (bx0 - x00)) * inv_area;
+      return area.abs() >= 1e-12f;
+    };
+    auto usable = [&](const P& ib, const P& ic, const P& zb, const P& zc) -> B {
+      return (i00 != 0.0f) && (ib != 0.0f) && (ic != 0.0f) &&
+             (z00.max(zb).max(zc) <= z00.min(zb).min(zc) * max_ratio);
+    };
+    P wbA, wcA, wbB, wcB;
+    const B okA = weights(x10, y10, x11, y11, wbA, wcA) && usable(i10, i11, z10, z11);
+    const B okB = weights(x11, y11, x01, y01, wbB, wcB) && usable(i11, i01, z11, z01);
+    const P waA = 1.0f - wbA - wcA, waB = 1.0f - wbB - wcB;
+    const B inA = okA && (waA >= eps) && (wbA >= eps) && (wcA >= eps);
+    const B inB = okB && (waB >= eps) && (wbB >= eps) && (wcB >= eps);
+    const P wa = inA.select(waA, waB), wb = inA.select(wbA, wbB), wc = inA.select(wcA, wcB);
+    const P iz = wa * i00 + wb * inA.select(i10, i11) + wc * inA.select(i11, i01);
+    const P zs = wa * z00 + wb * inA.select(z10, z11) + wc * inA.select(z11, z01);
+    const P su = wb + inA.select(wc, P::Zero());  // offsets from (u, r) in the source
+    const P sv = inA.select(wc, wb + wc);
+    for (int k = 0; k < kLanes; ++k) {
+      if (empty[k]) continue;
+      if (!single[k]) {
+        RasteriseQuad(v, w, u + k, r, max_ratio, t);
+        continue;
+      }
+      if (!inA[k] && !inB[k]) continue;
+      const std::size_t j = std::size_t(by0[k]) * t.width + std::size_t(bx0[k]);
+      if (iz[k] <= t.iz[j]) continue;  // z-test on inverse depth
+      t.iz[j] = iz[k];
+      t.zs[j] = zs[k];
+      t.uv[j] = cv::Vec2f(float(u + k) + su[k], float(r) + sv[k]);
+    }
+  }
+  for (; u + 1 < w; ++u) RasteriseQuad(v, w, u, r, max_ratio, t);
+}
+
 }  // namespace
 
 struct DepthMeshWarper::Scratch {
@@ -229,7 +299,11 @@ void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_
       const int r_end = (src.height - 1) * (ti + 1) / n_threads;
       const TargetView view{iz_buf, zs_buf, uv_buf, dst.width, dst.height};
       for (int r = r_begin; r < r_end; ++r) {
-        for (int u = 0; u + 1 < w; ++u) RasteriseQuad(v, w, u, r, max_ratio, view);
+        if (o.vectorised) {
+          RasteriseRowVectorised(v, w, r, max_ratio, view);
+        } else {
+          for (int u = 0; u + 1 < w; ++u) RasteriseQuad(v, w, u, r, max_ratio, view);
+        }
       }
     }
   });
@@ -239,9 +313,13 @@ void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_
   cv::Mat& covered = scratch_->covered;
   cv::compare(t.inv_z, 0.0f, covered, cv::CMP_GT);
   cv::divide(1.0, t.inv_z, field.depth);
-  field.depth.setTo(0.0f, ~covered);  // uncovered: 0, not 1/0
-  t.source_depth.copyTo(field.source_depth);
-  t.uv.copyTo(field.map);
+  // The target's buffers become the field's (and the field's old ones the next scratch).
+  std::swap(field.source_depth, t.source_depth);
+  std::swap(field.map, t.uv);
+  const cv::Mat uncovered = ~covered;
+  field.depth.setTo(0.0f, uncovered);  // 0, not 1/0
+  field.source_depth.setTo(0.0f, uncovered);
+  field.map.setTo(cv::Scalar(-1, -1), uncovered);
   field.covered = cv::countNonZero(covered);
   if (o.compute_view_angles) field.cos_angle = ViewAngles(field.depth, dst, T_vs.translation());
 }

@@ -28,6 +28,9 @@ struct WarpOptions {
   int threads = 0;
   /// Also fill WarpField::cos_angle (for view-dependent blending weights).
   bool compute_view_angles = false;
+  /// Decide quads with one candidate pixel 16 at a time with SIMD; false = the plain scalar
+  /// rasteriser, the reference the tests compare with (same pixels, same values).
+  bool vectorised = true;
 };
 
 struct WarpField {
