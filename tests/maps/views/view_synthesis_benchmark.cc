@@ -83,6 +83,37 @@ BENCHMARK(BM_SynthesiseFromSevenViews)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// Blending alone: seven precomputed warps, one RGB plane each.
+void BM_BlendSevenViews(benchmark::State& state) {
+  static const Views v = MakeViews();
+  views::DepthMeshWarper warper;
+  std::vector<views::WarpField> warps(7);
+  for (int j = 0; j < 7; ++j) {
+    warper.Warp(v.camera, v.poses[j], v.depths[j], v.camera, v.virtual_pose, warps[j]);
+  }
+  for (auto _ : state) {
+    const views::BlendResult r = views::BlendPlanes(warps, v.images);
+    benchmark::DoNotOptimize(r.value.data);
+  }
+}
+BENCHMARK(BM_BlendSevenViews)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Each reference view warped alone (the views differ in how far they are from the virtual one).
+void BM_WarpEachView(benchmark::State& state) {
+  static const Views v = MakeViews();
+  views::WarpOptions wo;
+  wo.threads = 1;
+  views::DepthMeshWarper warper(wo);
+  views::WarpField w;
+  const int j = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    warper.Warp(v.camera, v.poses[j], v.depths[j], v.camera, v.virtual_pose, w);
+    benchmark::DoNotOptimize(w.map.data);
+  }
+  state.counters["covered"] = w.covered;
+}
+BENCHMARK(BM_WarpEachView)->DenseRange(0, 6)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void BM_WarpOneView(benchmark::State& state) {
   static const Views v = MakeViews();
   views::WarpOptions wo;
