@@ -1,0 +1,48 @@
+#include "maps/eval/attentional_selectivity.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace novelty::eval {
+namespace {
+
+TEST(AttentionalSelectivity, KnownAnswer) {
+  // 64×64 map of 1s; a 16×16 region (4×4 blocks) with values 4 and one block of 8 in it.
+  cv::Mat map(64, 64, CV_32FC1, cv::Scalar(1.0f));
+  cv::Mat region(64, 64, CV_8UC1, cv::Scalar(0));
+  region(cv::Rect(24, 24, 16, 16)).setTo(255);
+  map(cv::Rect(24, 24, 16, 16)).setTo(4.0f);
+  map(cv::Rect(24, 24, 4, 4)).setTo(8.0f);
+  const Selectivity s = AttentionalSelectivity(map, region);
+  EXPECT_EQ(s.region_blocks, 16);
+  EXPECT_EQ(s.outside_blocks, 12 * 12 - 16);  // 16×16 blocks minus 2 border rings
+  EXPECT_NEAR(s.as_db, 10 * std::log10((15 * 4.0 + 8.0) / 16 / 1.0), 1e-9);
+  EXPECT_NEAR(s.pas_db, 10 * std::log10(8.0), 1e-9);
+}
+
+TEST(AttentionalSelectivity, BorderBlocksAndNaNsAreLeftOut) {
+  cv::Mat map(64, 64, CV_32FC1, cv::Scalar(1.0f));
+  cv::Mat region(64, 64, CV_8UC1, cv::Scalar(0));
+  region(cv::Rect(24, 24, 8, 8)).setTo(255);
+  map(cv::Rect(24, 24, 8, 8)).setTo(2.0f);
+  map(cv::Rect(0, 0, 8, 64)).setTo(100.0f);  // hot border: excluded
+  map(cv::Rect(40, 40, 4, 4)).setTo(std::nanf(""));
+  const Selectivity s = AttentionalSelectivity(map, region);
+  EXPECT_NEAR(s.as_db, 10 * std::log10(2.0), 1e-9);
+  EXPECT_EQ(s.outside_blocks, 12 * 12 - 4 - 1);  // the all-NaN block counts nowhere
+  // Without the border rule the hot border dominates: AS < 0 dB.
+  SelectivityOptions no_border;
+  no_border.border_blocks = 0;
+  EXPECT_LT(AttentionalSelectivity(map, region, no_border).as_db, 0.0);
+}
+
+TEST(AttentionalSelectivity, EmptyRegionGivesNaN) {
+  const cv::Mat map(32, 32, CV_32FC1, cv::Scalar(1.0f));
+  const Selectivity s = AttentionalSelectivity(map, cv::Mat::zeros(32, 32, CV_8UC1));
+  EXPECT_TRUE(std::isnan(s.as_db));
+  EXPECT_THROW(AttentionalSelectivity(map, cv::Mat::zeros(31, 32, CV_8UC1)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace novelty::eval
