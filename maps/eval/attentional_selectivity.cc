@@ -10,8 +10,9 @@ namespace novelty::eval {
 Selectivity AttentionalSelectivity(const cv::Mat& map, const cv::Mat& region,
                                    const SelectivityOptions& o) {
   if (map.type() != CV_32FC1 || region.type() != CV_8UC1 || map.size() != region.size()) {
-    throw std::invalid_argument("AttentionalSelectivity: need a CV_32FC1 map and a CV_8UC1 mask "
-                                "of the same size");
+    throw std::invalid_argument(
+        "AttentionalSelectivity: need a CV_32FC1 map and a CV_8UC1 mask "
+        "of the same size");
   }
   const int b = o.block_size;
   const int bx = map.cols / b, by = map.rows / b;

@@ -18,8 +18,8 @@ struct SelectivityOptions {
 };
 
 struct Selectivity {
-  double as_db = 0.0;    ///< eq. 4.24; NaN if the region or the outside has no block
-  double pas_db = 0.0;   ///< eq. 4.25
+  double as_db = 0.0;   ///< eq. 4.24; NaN if the region or the outside has no block
+  double pas_db = 0.0;  ///< eq. 4.25
   int region_blocks = 0;
   int outside_blocks = 0;
 };

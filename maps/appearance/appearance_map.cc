@@ -1,0 +1,99 @@
+#include "maps/appearance/appearance_map.h"
+
+#include <limits>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "maps/color/ycbcr.h"
+
+namespace novelty::appearance {
+
+void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCamera& camera,
+                const Eigen::Isometry3d& T_world_cam, const char* what) {
+  camera.Check();
+  const cv::Size size(camera.width, camera.height);
+  if (rgb.type() != CV_8UC3 || rgb.size() != size) {
+    throw std::invalid_argument(std::string(what) + ": image must be CV_8UC3 of " +
+                                std::to_string(size.width) + "x" + std::to_string(size.height));
+  }
+  if (depth.type() != CV_32FC1 || depth.size() != size) {
+    throw std::invalid_argument(std::string(what) + ": depth must be CV_32FC1 of " +
+                                std::to_string(size.width) + "x" + std::to_string(size.height));
+  }
+  if (!views::IsRigid(T_world_cam)) {
+    throw std::invalid_argument(std::string(what) + ": pose is not a rigid transform");
+  }
+}
+
+AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
+    : options_(options), map_(options.views) {
+  options_.surprise.update.Check();
+  stats::CheckNormalGamma(options_.initial_prior, "AppearanceMapOptions::initial_prior");
+}
+
+AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& depth,
+                                         const views::PinholeCamera& camera,
+                                         const Eigen::Isometry3d& T_world_cam) {
+  CheckFrame(rgb, depth, camera, T_world_cam, "AppearanceMap::Insert");
+  const int n = camera.width * camera.height;
+  std::vector<cv::Mat> x;
+  cv::split(color::RgbToYCbCr(rgb), x);
+
+  // Prior: blended reference parameters; the initial prior where no view covers.
+  ViewBasedMap::Prediction prior = map_.Predict(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}});
+  std::vector<cv::Mat> ab_sigma, tau0, p0(kChannels);
+  cv::split(prior.value[0], ab_sigma);
+  cv::split(prior.value[1], tau0);
+  p0[kAlpha] = ab_sigma[0];
+  for (int k = 0; k < 3; ++k) {
+    p0[kBeta + k] = ab_sigma[1 + k];
+    p0[kSigma + k] = ab_sigma[4 + k];
+    p0[kTau + k] = tau0[k];
+  }
+  const stats::NormalGamma& init = options_.initial_prior;
+  const float initial[kChannels] = {
+      float(init.alpha), float(init.beta), float(init.beta),  float(init.beta),  float(init.tau),
+      float(init.tau),   float(init.tau),  float(init.sigma), float(init.sigma), float(init.sigma)};
+  const cv::Mat uncovered = ~prior.valid;
+  for (int c = 0; c < kChannels; ++c) p0[c].setTo(initial[c], uncovered);
+
+  // Update and surprise per channel (eq. 4.8-4.21); α is shared by the three channels.
+  std::vector<cv::Mat> p1(kChannels);
+  for (cv::Mat& m : p1) m.create(camera.height, camera.width, CV_32FC1);
+  cv::Mat surprise(camera.height, camera.width, CV_32FC1, cv::Scalar(0));
+  for (int k = 0; k < 3; ++k) {
+    const stats::ConstNormalGammaPlanes prior_k{p0[kAlpha].ptr<float>(), p0[kBeta + k].ptr<float>(),
+                                                p0[kTau + k].ptr<float>(),
+                                                p0[kSigma + k].ptr<float>()};
+    const stats::NormalGammaPlanes post_k{p1[kAlpha].ptr<float>(), p1[kBeta + k].ptr<float>(),
+                                          p1[kTau + k].ptr<float>(), p1[kSigma + k].ptr<float>()};
+    stats::UpdateAndAccumulateSurprise(x[k].ptr<float>(), prior_k, post_k, surprise.ptr<float>(),
+                                       std::size_t(n), options_.surprise);
+  }
+
+  AppearanceProducts out;
+  out.valid = prior.valid;
+  out.selected = prior.selected;
+  out.surprise = surprise;
+  out.surprise.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
+  cv::Mat tau;
+  cv::merge(std::vector<cv::Mat>{p0[kTau], p0[kTau + 1], p0[kTau + 2]}, tau);
+  color::YCbCrToRgb(tau).convertTo(out.expected_rgb, CV_8UC3);
+  out.expected_rgb.setTo(cv::Scalar::all(0), uncovered);
+  out.uncertainty = p0[kBeta] + p0[kBeta + 1] + p0[kBeta + 2];
+  out.uncertainty.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
+
+  // The posterior at this viewpoint goes into the map (4.3's update policy).
+  cv::Mat ab_sigma1, ab_sigma_stored, tau1;
+  cv::merge(std::vector<cv::Mat>{p1[kAlpha], p1[kBeta], p1[kBeta + 1], p1[kBeta + 2], p1[kSigma],
+                                 p1[kSigma + 1], p1[kSigma + 2]},
+            ab_sigma1);
+  ab_sigma1.convertTo(ab_sigma_stored, options_.half_precision ? CV_16F : CV_32F);
+  cv::merge(std::vector<cv::Mat>{p1[kTau], p1[kTau + 1], p1[kTau + 2]}, tau1);
+  out.update = map_.Update(camera, T_world_cam, depth,
+                           {{"ab_sigma", ab_sigma_stored}, {"tau", tau1}}, prior.selected);
+  return out;
+}
+
+}  // namespace novelty::appearance

@@ -1,0 +1,70 @@
+// The probabilistic appearance map (thesis ch. 4): reference views whose pixels hold, per
+// channel Y, Cb, Cr, the normal-gamma hyperparameters of the colour seen there; per frame a prior
+// interpolated from nearby views, the Bayesian update with forgetting (eq. 4.8-4.13) and the
+// surprise KL(posterior ‖ prior) summed over channels (eq. 4.15-4.21).
+//
+// Storage: α does not depend on the data (eq. 4.10) and is the same for the three channels, so a
+// view stores one α and three β and σ as half floats ("ab_sigma", 7 channels) and the three τ as
+// floats ("tau"): τ must stay exact to a few hundredths, since a shift dτ adds dτ²α/(2σ0β) to
+// the surprise (eq. 4.19) and σ0 goes down to σ_min = 0.01; half floats resolve τ ≈ 200 only to
+// 0.125. That is 7·2 + 3·4 = 26 B/pixel + 4 B depth = 2.3 MB per 320×240 view (200 views:
+// 461 MB, against 737 MB for 4×3 floats plus depth). appearance_map_test.cc measures the effect
+// on surprise against all-float storage.
+// Pixels no reference view covers get the initial prior (α=1, β=1, τ=0, σ=5) for the update, and
+// no surprise (NaN): there is nothing to be surprised against.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "maps/appearance/view_based_map.h"
+#include "maps/stats/normal_gamma_batch.h"
+
+namespace novelty::appearance {
+
+struct AppearanceMapOptions {
+  stats::SurpriseBatchOptions surprise;                      ///< f, ξ, σ_min, σ_max; KL options
+  stats::NormalGamma initial_prior = stats::InitialPrior();  ///< 4.3: α=1, β=1, τ=0, σ=5
+  bool half_precision = true;  ///< α, β, σ as CV_16F (τ always CV_32F); false: all CV_32F
+  ViewBasedMapOptions views;
+};
+
+struct AppearanceProducts {
+  cv::Mat surprise;      ///< CV_32FC1, S = S_Y + S_Cb + S_Cr (eq. 4.21); NaN where not covered
+  cv::Mat expected_rgb;  ///< CV_8UC3, the prior's τ in RGB (what the map expects to see)
+  cv::Mat uncertainty;   ///< CV_32FC1, Σβ0 of the prior (fig. 4.4d); NaN where not covered
+  cv::Mat valid;         ///< CV_8UC1, covered by the map
+  std::vector<int> selected;
+  ViewBasedMap::UpdateResult update;
+};
+
+class AppearanceMap {
+ public:
+  explicit AppearanceMap(const AppearanceMapOptions& options = {});
+
+  /// Processes one frame: rgb CV_8UC3 (R, G, B) and depth CV_32FC1 (m) of `camera`'s size, pose
+  /// T_world_cam. Throws std::invalid_argument naming the problem (sizes, types, pose); the map
+  /// is then unchanged.
+  AppearanceProducts Insert(const cv::Mat& rgb, const cv::Mat& depth,
+                            const views::PinholeCamera& camera,
+                            const Eigen::Isometry3d& T_world_cam);
+
+  const views::ReferenceViewStore& store() const { return map_.store(); }
+  const AppearanceMapOptions& options() const { return options_; }
+
+  /// Channel layout of the working parameter image (stored as "ab_sigma": α, β×3, σ×3 and
+  /// "tau": τ×3).
+  enum Channel { kAlpha = 0, kBeta = 1, kTau = 4, kSigma = 7, kChannels = 10 };
+
+ private:
+  AppearanceMapOptions options_;
+  ViewBasedMap map_;
+};
+
+/// Throws std::invalid_argument unless rgb is CV_8UC3 and depth CV_32FC1, both of the camera's
+/// size, and the pose is rigid. `what` names the caller.
+void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCamera& camera,
+                const Eigen::Isometry3d& T_world_cam, const char* what);
+
+}  // namespace novelty::appearance

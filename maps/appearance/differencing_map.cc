@@ -1,0 +1,28 @@
+#include "maps/appearance/differencing_map.h"
+
+#include <limits>
+#include <opencv2/imgproc.hpp>
+
+#include "maps/color/ycbcr.h"
+
+namespace novelty::appearance {
+
+DifferencingProducts DifferencingMap::Insert(const cv::Mat& rgb, const cv::Mat& depth,
+                                             const views::PinholeCamera& camera,
+                                             const Eigen::Isometry3d& T_world_cam) {
+  CheckFrame(rgb, depth, camera, T_world_cam, "DifferencingMap::Insert");
+  const cv::Mat x = color::RgbToYCbCr(rgb);
+  ViewBasedMap::Prediction p = map_.Predict(camera, T_world_cam, {{"ycbcr", 3}});
+  DifferencingProducts out;
+  out.valid = p.valid;
+  cv::Mat diff;
+  cv::absdiff(x, p.value[0], diff);
+  cv::transform(diff, out.difference, cv::Matx13f(1, 1, 1));  // |ΔY| + |ΔCb| + |ΔCr|
+  out.difference.setTo(std::numeric_limits<float>::quiet_NaN(), ~p.valid);
+  color::YCbCrToRgb(p.value[0]).convertTo(out.expected_rgb, CV_8UC3);  // NaN → 0 when saturating
+  out.expected_rgb.setTo(cv::Scalar::all(0), ~p.valid);
+  out.update = map_.Update(camera, T_world_cam, depth, {{"ycbcr", x}}, p.selected);
+  return out;
+}
+
+}  // namespace novelty::appearance

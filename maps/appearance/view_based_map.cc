@@ -1,0 +1,77 @@
+#include "maps/appearance/view_based_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace novelty::appearance {
+
+ViewBasedMap::ViewBasedMap(const ViewBasedMapOptions& options)
+    : options_(options), warper_(options.warp) {}
+
+ViewBasedMap::Prediction ViewBasedMap::Predict(
+    const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+    const std::vector<std::pair<std::string, int>>& names) {
+  Prediction p;
+  p.selected = views::SelectViews(store_.Poses(), camera, T_world_cam, options_.selection);
+  if (p.selected.empty()) {
+    for (const auto& [name, channels] : names) {
+      cv::Mat m(camera.height, camera.width, CV_32FC(channels));
+      m.reshape(1).setTo(std::numeric_limits<float>::quiet_NaN());  // Scalar: ≤ 4 channels
+      p.value.push_back(m);
+    }
+    p.valid = cv::Mat::zeros(camera.height, camera.width, CV_8UC1);
+    return p;
+  }
+  warps_.resize(p.selected.size());
+  for (std::size_t k = 0; k < p.selected.size(); ++k) {
+    const views::ReferenceView& v = store_.view(p.selected[k]);
+    warper_.Warp(v.camera, v.T_world_cam, v.depth, camera, T_world_cam, warps_[k]);
+  }
+  for (const auto& [name, channels] : names) {
+    std::vector<cv::Mat> planes;
+    for (int j : p.selected) planes.push_back(store_.view(j).planes.at(name));
+    views::BlendResult b = views::BlendPlanes(warps_, planes, options_.blend);
+    p.value.push_back(std::move(b.value));
+    p.valid = std::move(b.valid);  // the same for every plane: it depends on the warps only
+  }
+  return p;
+}
+
+ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& camera,
+                                                const Eigen::Isometry3d& T_world_cam,
+                                                const cv::Mat& depth,
+                                                std::map<std::string, cv::Mat> payload,
+                                                const std::vector<int>& selected) {
+  double nearest = std::numeric_limits<double>::infinity();
+  int nearest_view = -1;
+  for (int j = 0; j < store_.size(); ++j) {
+    const double d = (store_.view(j).T_world_cam.translation() - T_world_cam.translation()).norm();
+    if (d < nearest) {
+      nearest = d;
+      nearest_view = j;
+    }
+  }
+  views::ReferenceView v;
+  v.camera = camera;
+  v.T_world_cam = T_world_cam;
+  v.depth = depth.clone();
+  v.planes = std::move(payload);
+  UpdateResult r;
+  bool add = nearest_view < 0 || nearest >= options_.new_view_distance;
+  if (!add) {
+    const Eigen::Vector3d z0 = store_.view(nearest_view).T_world_cam.linear().col(2);
+    const double angle = std::acos(std::clamp(z0.dot(T_world_cam.linear().col(2)), -1.0, 1.0));
+    add = angle >= options_.new_view_angle;
+  }
+  if (add || selected.empty()) {
+    r.added = true;
+    r.view = store_.Add(std::move(v));
+  } else {
+    r.view = selected.front();
+    store_.Replace(r.view, std::move(v));
+  }
+  return r;
+}
+
+}  // namespace novelty::appearance

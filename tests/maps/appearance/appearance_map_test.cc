@@ -1,0 +1,169 @@
+// The appearance map and the differencing baseline on a short simulated clip: the robot drives
+// an arc around a table twice (the first pass builds the map, the second sees the same scene),
+// then a cup is added and it drives the arc a third time.
+#include "maps/appearance/appearance_map.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "maps/appearance/differencing_map.h"
+#include "maps/eval/attentional_selectivity.h"
+#include "sim/output/ground_truth_writer.h"
+#include "sim/render/renderer.h"
+#include "sim/scenario/scenario_parser.h"
+#include "sim/scenario/scenario_world.h"
+
+namespace novelty::appearance {
+namespace {
+
+const char* kClip = R"(
+name clip
+frames 102
+fps 7
+seed 5
+camera 160 120 60
+rig rgbd
+sensor noise 1.0 gamma 2.2
+mount 0.0 0.0 1.10 90 16
+room 6 6 2.8
+ambient 0.10 0.10 0.11
+material wood phong 0.45 0.28 0.14 0.1 20
+material cloth phong 0.92 0.90 0.84
+texture cloth stripes 0.25 0.35 0.70 20
+material red phong 0.75 0.10 0.08 0.2 30
+material black phong 0.04 0.04 0.05 0.5 60
+object table box 1.2 0.8 0.72 wood at 0 0 fixed
+object cloth plane 1.3 0.9 cloth at 0 0 on table
+object box box 0.14 0.06 0.20 red at 0.25 0.20 on cloth mass 0.4
+object cup cup 0.05 0.11 black at -0.05 -0.05 on cloth absent mass 0.25
+lamp l1 -1.0 0.8 2.6 2.2 2.1 1.9
+arc 0 0 1.6 -100 -80 0.15
+stop 0.5
+arc 0 0 1.6 -80 -100 0.15
+stop 0.5
+arc 0 0 1.6 -100 -80 0.15
+stop 1.0
+event 9.0 add cup
+)";
+
+struct Frame {
+  cv::Mat rgb, depth, novelty;
+  Eigen::Isometry3d pose;
+  double t;
+};
+
+std::vector<Frame> Simulate() {
+  std::istringstream in(kClip);
+  const sim::Scenario s = sim::ParseScenario(in, "clip.scn");
+  sim::ScenarioWorld world(s);
+  sim::RayScene reference;
+  world.AddReferenceToScene(reference);
+  reference.Commit();
+  std::vector<Frame> frames;
+  for (int k = 0; k < s.frames; ++k) {
+    const double t = k / s.fps;
+    world.AdvanceTo(t);
+    sim::RayScene scene;
+    world.AddToScene(scene);
+    scene.Commit();
+    sim::RenderOptions ro = s.render;
+    ro.frame = std::uint64_t(k);
+    const Eigen::Isometry3d pose = world.HeadPose();
+    const sim::RenderedFrame f = sim::Render(scene, world.CurrentLighting(), s.camera, pose, ro);
+    const cv::Mat ref_ids = sim::RenderIds(reference, s.camera, pose);
+    frames.push_back(
+        {f.rgb, f.depth,
+         sim::GroundTruthWriter::NoveltyMask(f.ids, ref_ids, world.AddedIds(), world.RemovedIds()),
+         pose, t});
+  }
+  return frames;
+}
+
+const std::vector<Frame>& Clip() {
+  static const std::vector<Frame> frames = Simulate();
+  return frames;
+}
+
+double MedianValid(const cv::Mat& m) {
+  std::vector<float> v;
+  for (int i = 0; i < m.rows * m.cols; ++i) {
+    if (!std::isnan(m.at<float>(i))) v.push_back(m.at<float>(i));
+  }
+  if (v.empty()) return std::nan("");
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+TEST(AppearanceMap, LearnsTheSceneAndIsSurprisedByTheNewCup) {
+  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
+  AppearanceMap map;
+  DifferencingMap baseline;
+  int added_first = 0, added_later = 0, cup_frames = 0;
+  double as_surprise = 0.0, as_difference = 0.0, quiet_median = 0.0;
+  int quiet_frames = 0;
+  for (std::size_t k = 0; k < Clip().size(); ++k) {
+    const Frame& f = Clip()[k];
+    const AppearanceProducts p = map.Insert(f.rgb, f.depth, cam, f.pose);
+    const DifferencingProducts d = baseline.Insert(f.rgb, f.depth, cam, f.pose);
+    (f.t < 4.5 ? added_first : added_later) += p.update.added;
+    if (f.t > 5.0 && f.t < 8.5) {  // second pass, nothing has changed
+      quiet_median += MedianValid(p.surprise);
+      ++quiet_frames;
+    }
+    const cv::Mat cup = f.novelty == 255;
+    if (f.t > 9.5 && cv::countNonZero(cup) > 50) {  // third pass, the cup in view
+      as_surprise += eval::AttentionalSelectivity(p.surprise, cup).as_db;
+      as_difference += eval::AttentionalSelectivity(d.difference, cup).as_db;
+      ++cup_frames;
+    }
+  }
+  EXPECT_GT(added_first, 20);               // the first pass builds the map ...
+  EXPECT_LT(added_later, 2 * added_first);  // ... later passes also replace views
+  ASSERT_GT(quiet_frames, 10);
+  EXPECT_LT(quiet_median / quiet_frames, 1.0) << "median surprise (nats) in an unchanged scene";
+  ASSERT_GT(cup_frames, 10);
+  // Both detect the cup (thesis fig. 4.12: AS above 0 dB for both methods).
+  EXPECT_GT(as_surprise / cup_frames, 0.5) << "mean AS of the cup, Bayesian surprise (dB)";
+  EXPECT_GT(as_difference / cup_frames, 0.5) << "mean AS of the cup, differencing (dB)";
+  std::printf(
+      "views %d, quiet median surprise %.3f, cup AS: surprise %.2f dB, differencing %.2f dB\n",
+      map.store().size(), quiet_median / quiet_frames, as_surprise / cup_frames,
+      as_difference / cup_frames);
+}
+
+TEST(AppearanceMap, HalfPrecisionStorageChangesSurpriseLittle) {
+  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
+  AppearanceMapOptions full;
+  full.half_precision = false;
+  AppearanceMap half_map, full_map(full);
+  double worst = 0.0;
+  for (std::size_t k = 0; k < Clip().size(); ++k) {
+    const Frame& f = Clip()[k];
+    const cv::Mat a = half_map.Insert(f.rgb, f.depth, cam, f.pose).surprise;
+    const cv::Mat b = full_map.Insert(f.rgb, f.depth, cam, f.pose).surprise;
+    for (int i = 0; i < a.rows * a.cols; ++i) {
+      const float x = a.at<float>(i), y = b.at<float>(i);
+      if (std::isnan(x) || std::isnan(y)) continue;
+      worst = std::max(worst, double(std::abs(x - y)) / (1.0 + y));
+    }
+  }
+  EXPECT_LT(worst, 0.05) << "largest relative effect of half-precision storage on surprise";
+  std::printf("half precision: largest |ΔS|/(1+S) = %.4f\n", worst);
+  EXPECT_EQ(half_map.store().view(0).BytesUsed(), 160u * 120 * (7 * 2 + 3 * 4 + 4));
+}
+
+TEST(AppearanceMap, BadFramesAreRejectedAndLeaveTheMapUnchanged) {
+  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 1.0);
+  AppearanceMap map;
+  const Frame& f = Clip()[0];
+  map.Insert(f.rgb, f.depth, cam, f.pose);
+  EXPECT_THROW(map.Insert(cv::Mat(10, 10, CV_8UC3), f.depth, cam, f.pose), std::invalid_argument);
+  Eigen::Isometry3d bad = f.pose;
+  bad.linear() *= 1.1;
+  EXPECT_THROW(map.Insert(f.rgb, f.depth, cam, bad), std::invalid_argument);
+  EXPECT_EQ(map.store().size(), 1);
+}
+
+}  // namespace
+}  // namespace novelty::appearance
