@@ -49,7 +49,8 @@ GroundTruthWriter::GroundTruthWriter(const std::string& dir, const Scenario& sce
          << "depth/: uint16 PNG, metres x 5000, 0 = no surface.\n"
          << "ids/: uint16 PNG, object id + 1 (0 nothing, 1 room, 1001 the person's arm).\n"
          << "novelty/: uint8 PNG, 255 added object or arm, 128 where a removed object was.\n"
-         << "events.csv: the phases and the events as applied.\n";
+         << "events.csv: the phases and the events as applied.\n"
+         << "objects.csv: object id and name.\n";
 }
 
 std::string GroundTruthWriter::PhaseOf(int frame) const {
@@ -99,6 +100,14 @@ void GroundTruthWriter::WriteEvents(const std::vector<std::string>& applied) {
     out << "event," << target << "," << frame << "," << frame << "," << time << "," << kind << "\n";
   }
   if (!out) throw std::runtime_error(dir_ + "/events.csv: write failed");
+}
+
+void GroundTruthWriter::WriteObjects() {
+  std::ofstream out(dir_ + "/objects.csv");
+  out << "id,name\n0,room\n";
+  for (const ObjectSpec& o : scenario_.objects) out << o.id << "," << o.name << "\n";
+  out << "1000,arm\n";
+  if (!out) throw std::runtime_error(dir_ + "/objects.csv: write failed");
 }
 
 cv::Mat GroundTruthWriter::NoveltyMask(const cv::Mat& ids, const cv::Mat& reference_ids,

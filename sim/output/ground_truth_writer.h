@@ -10,6 +10,7 @@
 //   novelty/NNNNNN.png  uint8: 255 = an added object (or the arm), 128 = where a removed object
 //                       used to be, 0 = unchanged since the start configuration
 //   events.csv    kind,name,first_frame,last_frame,time,description — phases and applied events
+//   objects.csv   id,name — the object ids of ids/ (0 room, 1000 the person's arm)
 #pragma once
 
 #include <Eigen/Geometry>
@@ -35,6 +36,8 @@ class GroundTruthWriter {
                   const cv::Mat& novelty);
   /// Writes events.csv from the phases and the applied events ("time kind target").
   void WriteEvents(const std::vector<std::string>& applied_events);
+  /// Writes objects.csv: every object id with its name.
+  void WriteObjects();
 
   /// Zero-padded frame number, the stem of every per-frame file ("000042").
   static std::string FrameStem(int frame);

@@ -110,6 +110,7 @@ RunSummary RunScenario(const Scenario& s, const RunOptions& o) {
   }
   if (o.progress) std::fprintf(stderr, "\n");
   truth.WriteEvents(world.applied_events());
+  truth.WriteObjects();
   rawlog.Close();
 
   RunSummary summary;

@@ -1,0 +1,48 @@
+#include "mrpt_plugins/appearance_map_options.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+namespace novelty::mrpt_plugins {
+namespace {
+
+appearance::AppearanceMapOptions Load(const std::string& text) {
+  const mrpt::config::CConfigFileMemory config(text);
+  return LoadAppearanceMapOptions(config, "AppearanceMap", "test.ini");
+}
+
+std::string ErrorOf(const std::string& text) {
+  try {
+    Load(text);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(AppearanceMapOptions, ShippedIniGivesTheDocumentedDefaults) {
+  const auto o =
+      LoadAppearanceMapOptions(std::string(NOVELTY_SOURCE_DIR) + "/share/appearance.ini");
+  const appearance::AppearanceMapOptions d;
+  EXPECT_EQ(o.surprise.update.forgetting_factor, d.surprise.update.forgetting_factor);
+  EXPECT_EQ(o.surprise.update.xi, d.surprise.update.xi);
+  EXPECT_EQ(o.initial_prior.sigma, 5.0);
+  EXPECT_EQ(o.half_precision, d.half_precision);
+  EXPECT_NEAR(o.views.new_view_angle, d.views.new_view_angle, 1e-12);
+  EXPECT_EQ(o.views.blend.depth_tolerance, 0.0);
+}
+
+TEST(AppearanceMapOptions, ReadsValuesAndNamesBadOnes) {
+  const auto o = Load("[AppearanceMap]\nforgetting_factor = 0.7\nhalf_precision = false\n");
+  EXPECT_EQ(o.surprise.update.forgetting_factor, 0.7);
+  EXPECT_FALSE(o.half_precision);
+  EXPECT_EQ(ErrorOf("[AppearanceMap]\nforgeting_factor = 0.7\n"),
+            "test.ini: [AppearanceMap] forgeting_factor: unknown option");
+  EXPECT_EQ(ErrorOf("[AppearanceMap]\nxi = lots\n"), "test.ini: [AppearanceMap] xi = 'lots': stod");
+  EXPECT_NE(ErrorOf("[AppearanceMap]\nforgetting_factor = 1.5\n").find("forgetting_factor"),
+            std::string::npos);
+  EXPECT_THROW(LoadAppearanceMapOptions("/nonexistent.ini"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace novelty::mrpt_plugins
