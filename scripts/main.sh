@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs the main job. Until the surprise pipeline (novelty-run) lands, the main
-# job prints what this build contains: build/bin/novelty-info.
+# Sets up, builds and runs the main job: the glass-and-cup experiment of thesis 4.3 simulated
+# (novelty-sim) and played through the surprise pipeline (novelty-run). Prints where the report is.
+# Outputs go to out/ (override with NOVELTY_OUT=DIR).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
-build/bin/novelty-info
-echo "Programs built: $(cd build/bin && ls | tr '\n' ' ')" >&2
+out="${NOVELTY_OUT:-out}"
+build/bin/novelty-sim share/scenarios/glass_and_cup.scn --out "$out/glass_and_cup"
+build/bin/novelty-run --rawlog "$out/glass_and_cup/glass_and_cup.rawlog" \
+  --groundtruth "$out/glass_and_cup/groundtruth" --config share/appearance.ini \
+  --out "$out/glass_and_cup_run"
+echo "Report: $(pwd)/$out/glass_and_cup_run/report.html"
