@@ -7,8 +7,8 @@
 //                 offset from the reference camera (in the reference camera's frame)
 //   depth/NNNNNN.png    uint16, metres × 5000 (as ICL-NUIM/TUM), 0 = no surface
 //   ids/NNNNNN.png      uint16, object id + 1 (0 = nothing; 1 = room; arm = 1001)
-//   novelty/NNNNNN.png  uint8: 255 = an added object (or the arm), 128 = where a removed object
-//                       used to be, 0 = unchanged since the start configuration
+//   novelty/NNNNNN.png  uint8: 255 = an object added since the start (or moved, or the arm),
+//                       128 = where a removed (or moved) object was last seen, 0 = unchanged
 //   events.csv    kind,name,first_frame,last_frame,time,description — phases and applied events
 //   objects.csv   id,name — the object ids of ids/ (0 room, 1000 the person's arm)
 #pragma once

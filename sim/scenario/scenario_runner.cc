@@ -62,9 +62,6 @@ RunSummary RunScenario(const Scenario& s, const RunOptions& o) {
   RawlogWriter rawlog(o.out_dir, s.name);
   const std::vector<Eigen::Isometry3d> offsets = world.RigOffsets();
   GroundTruthWriter truth(o.out_dir, s, offsets);
-  RayScene reference;  // the start configuration never changes: one BVH for all frames
-  world.AddReferenceToScene(reference);
-  reference.Commit();
 
   const int tile_every = std::max(1, frames / std::max(1, o.contact_sheet_tiles));
   std::vector<std::pair<std::string, cv::Mat>> tiles;
@@ -94,6 +91,9 @@ RunSummary RunScenario(const Scenario& s, const RunOptions& o) {
     }
     WriteCameras(rawlog, s, t, k + 1, renders, world.RobotFromHead(), offsets);
 
+    RayScene reference;  // the scene with removed objects back in place (novelty masks)
+    world.AddNoveltyReferenceToScene(reference);
+    reference.Commit();
     const cv::Mat reference_ids = RenderIds(reference, s.camera, head);
     const cv::Mat novelty = GroundTruthWriter::NoveltyMask(renders[0].ids, reference_ids,
                                                            world.AddedIds(), world.RemovedIds());

@@ -93,7 +93,6 @@ ScenarioWorld::ScenarioWorld(const Scenario& scenario, double settle_seconds) : 
   }
   for (ObjectState& o : objects_) {
     if (o.body) o.pose = PhysicsWorld::PoseOf(o.body);
-    o.start_pose = o.pose;
   }
 }
 
@@ -179,9 +178,8 @@ void ScenarioWorld::Despawn(ObjectState& o) {
 void ScenarioWorld::BuildObjects() {
   objects_.reserve(s_.objects.size());
   for (const ObjectSpec& spec : s_.objects) {
-    ObjectState o{
-        &spec, MeshOf(spec), nullptr, PlacementPose(spec, spec.xy), Eigen::Isometry3d::Identity(),
-        false, spec.present};
+    ObjectState o{&spec,        MeshOf(spec), nullptr,     PlacementPose(spec, spec.xy),
+                  std::nullopt, false,        spec.present};
     if (spec.present) Spawn(o, o.pose);
     objects_.push_back(std::move(o));
   }
@@ -220,14 +218,22 @@ void ScenarioWorld::Apply(const EventSpec& e) {
     case EventSpec::Kind::kAdd: {
       ObjectState& o = Object(e.target);
       if (!o.present) Spawn(o, PlacementPose(*o.spec, o.spec->xy));
+      o.gone_pose.reset();
       break;
     }
-    case EventSpec::Kind::kRemove:
-      Despawn(Object(e.target));
+    case EventSpec::Kind::kRemove: {
+      ObjectState& o = Object(e.target);
+      if (!o.present) break;
+      Despawn(o);  // leaves o.pose at the last pose
+      o.gone_pose = o.pose;
       break;
+    }
     case EventSpec::Kind::kMove: {
       ObjectState& o = Object(e.target);
-      Despawn(o);
+      if (o.present) {
+        Despawn(o);
+        o.gone_pose = o.pose;
+      }
       Spawn(o, PlacementPose(*o.spec, e.position.head<2>()));
       o.moved = true;
       break;
@@ -332,7 +338,7 @@ std::optional<TriangleMesh> ScenarioWorld::ArmMesh() const {
   return arm;
 }
 
-void ScenarioWorld::AddToScene(RayScene& scene) const {
+void ScenarioWorld::AddToScene(RayScene& scene, bool with_arm) const {
   for (const auto& [mesh, material] : room_) {
     scene.AddObject(mesh, Eigen::Isometry3d::Identity(), material, kRoomObjectId);
   }
@@ -341,19 +347,17 @@ void ScenarioWorld::AddToScene(RayScene& scene) const {
     const Eigen::Isometry3d pose = o.body ? PhysicsWorld::PoseOf(o.body) : o.pose;
     scene.AddObject(o.mesh, pose, s_.materials.at(o.spec->material), o.spec->id);
   }
-  if (const auto arm = ArmMesh()) {
+  if (const auto arm = with_arm ? ArmMesh() : std::nullopt) {
     scene.AddObject(*arm, Eigen::Isometry3d::Identity(),
                     MaterialOr(s_, "skin", {0.85f, 0.62f, 0.50f}), kArmObjectId);
   }
 }
 
-void ScenarioWorld::AddReferenceToScene(RayScene& scene) const {
-  for (const auto& [mesh, material] : room_) {
-    scene.AddObject(mesh, Eigen::Isometry3d::Identity(), material, kRoomObjectId);
-  }
+void ScenarioWorld::AddNoveltyReferenceToScene(RayScene& scene) const {
+  AddToScene(scene, false);
   for (const ObjectState& o : objects_) {
-    if (o.present_at_start) {
-      scene.AddObject(o.mesh, o.start_pose, s_.materials.at(o.spec->material), o.spec->id);
+    if (o.gone_pose) {
+      scene.AddObject(o.mesh, *o.gone_pose, s_.materials.at(o.spec->material), o.spec->id);
     }
   }
 }
@@ -378,7 +382,7 @@ std::vector<int> ScenarioWorld::AddedIds() const {
 std::vector<int> ScenarioWorld::RemovedIds() const {
   std::vector<int> ids;
   for (const ObjectState& o : objects_) {
-    if (o.present_at_start && (!o.present || o.moved)) ids.push_back(o.spec->id);
+    if (o.gone_pose) ids.push_back(o.spec->id);
   }
   return ids;
 }

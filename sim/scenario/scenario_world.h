@@ -43,15 +43,17 @@ class ScenarioWorld {
   bool IsPresent(const std::string& name) const;
   Eigen::Isometry3d ObjectPose(const std::string& name) const;
 
-  /// Adds everything visible now to `scene` (not committed).
-  void AddToScene(RayScene& scene) const;
-  /// Adds the start configuration (objects present at the start, at their settled poses).
-  void AddReferenceToScene(RayScene& scene) const;
+  /// Adds everything visible now to `scene` (not committed); the person's arm only if
+  /// `with_arm`.
+  void AddToScene(RayScene& scene, bool with_arm = true) const;
+  /// The reference for novelty masks: the scene now without the arm, plus every removed object
+  /// at the pose where it was last seen and every moved object at its old place.
+  void AddNoveltyReferenceToScene(RayScene& scene) const;
   /// Lamps as they are now.
   Lighting CurrentLighting() const;
 
-  /// Ids that differ from the start configuration: added (present now, not at the start, or
-  /// moved, or the arm) and removed (present at the start, gone or moved now).
+  /// Ids of changes: added (present now but not at the start, or moved, or the arm) and removed
+  /// (taken away or moved since they were last seen, whenever that was).
   std::vector<int> AddedIds() const;
   std::vector<int> RemovedIds() const;
   /// Events applied so far, as "time kind target" strings for the ground-truth event table.
@@ -62,8 +64,8 @@ class ScenarioWorld {
     const ObjectSpec* spec;
     TriangleMesh mesh;
     dBodyID body = nullptr;
-    Eigen::Isometry3d pose;        // current (fixed objects and absent ones keep theirs)
-    Eigen::Isometry3d start_pose;  // after settling
+    Eigen::Isometry3d pose;  // current (fixed objects and absent ones keep theirs)
+    std::optional<Eigen::Isometry3d> gone_pose;  // where it was before a remove or move
     bool present;
     bool present_at_start;
     bool moved = false;

@@ -57,9 +57,6 @@ std::vector<Frame> Simulate() {
   std::istringstream in(kClip);
   const sim::Scenario s = sim::ParseScenario(in, "clip.scn");
   sim::ScenarioWorld world(s);
-  sim::RayScene reference;
-  world.AddReferenceToScene(reference);
-  reference.Commit();
   std::vector<Frame> frames;
   for (int k = 0; k < s.frames; ++k) {
     const double t = k / s.fps;
@@ -71,6 +68,9 @@ std::vector<Frame> Simulate() {
     ro.frame = std::uint64_t(k);
     const Eigen::Isometry3d pose = world.HeadPose();
     const sim::RenderedFrame f = sim::Render(scene, world.CurrentLighting(), s.camera, pose, ro);
+    sim::RayScene reference;
+    world.AddNoveltyReferenceToScene(reference);
+    reference.Commit();
     const cv::Mat ref_ids = sim::RenderIds(reference, s.camera, pose);
     frames.push_back(
         {f.rgb, f.depth,

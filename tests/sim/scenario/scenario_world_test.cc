@@ -70,13 +70,12 @@ TEST(ScenarioWorld, NoveltyMaskMarksAddedObjectsAndWhereRemovedOnesWere) {
                            "static_camera 1.0 -1.0 1.4 0 0 0.7\n"
                            "event 0.2 add cup\nevent 0.2 remove box\n");
   ScenarioWorld world(s);
-  RayScene reference;
-  world.AddReferenceToScene(reference);
-  reference.Commit();
   world.AdvanceTo(1.0);
-  RayScene now;
+  RayScene now, reference;
   world.AddToScene(now);
   now.Commit();
+  world.AddNoveltyReferenceToScene(reference);
+  reference.Commit();
   const cv::Mat ids = RenderIds(now, s.camera, world.HeadPose());
   const cv::Mat ref_ids = RenderIds(reference, s.camera, world.HeadPose());
   const cv::Mat mask =
@@ -85,12 +84,32 @@ TEST(ScenarioWorld, NoveltyMaskMarksAddedObjectsAndWhereRemovedOnesWere) {
   for (int i = 0; i < mask.rows * mask.cols; ++i) {
     const int m = mask.at<uint8_t>(i);
     EXPECT_EQ(m == 255, ids.at<int>(i) == 4);                             // the cup now
-    EXPECT_EQ(m == 128, ref_ids.at<int>(i) == 3 && ids.at<int>(i) != 4);  // the box before
+    EXPECT_EQ(m == 128, ref_ids.at<int>(i) == 3 && ids.at<int>(i) != 4);  // where the box was
     added += m == 255;
     removed += m == 128;
   }
   EXPECT_GT(added, 20);
   EXPECT_GT(removed, 20);
+}
+
+TEST(ScenarioWorld, AnObjectAddedAndLaterRemovedLeavesARemovedRegion) {
+  const Scenario s = Parse(std::string(kTable) +
+                           "static_camera 1.0 -1.0 1.4 0 0 0.7\n"
+                           "event 0.2 add cup\nevent 1.0 remove cup\n");
+  ScenarioWorld world(s);
+  world.AdvanceTo(1.5);
+  EXPECT_EQ(world.RemovedIds(), std::vector<int>{4});
+  EXPECT_TRUE(world.AddedIds().empty());
+  RayScene now, reference;
+  world.AddToScene(now);
+  now.Commit();
+  world.AddNoveltyReferenceToScene(reference);
+  reference.Commit();
+  const cv::Mat mask = GroundTruthWriter::NoveltyMask(
+      RenderIds(now, s.camera, world.HeadPose()), RenderIds(reference, s.camera, world.HeadPose()),
+      world.AddedIds(), world.RemovedIds());
+  EXPECT_GT(cv::countNonZero(mask == 128), 20);
+  EXPECT_EQ(cv::countNonZero(mask == 255), 0);
 }
 
 TEST(ScenarioWorld, CameraHeadSitsOnTheMastLookingAtTheArcCentre) {
