@@ -122,8 +122,8 @@ std::string Fmt(double v) {
 }
 
 void WriteReport(const std::string& out, const std::vector<Row>& rows,
-                 const std::vector<Phase>& phases, const std::vector<int>& panel_frames,
-                 int frames, double seconds, int views) {
+                 const std::vector<Phase>& phases, const std::vector<int>& panel_frames, int frames,
+                 double seconds, int views) {
   eval::HtmlReport report("NoveltyMaps — Bayesian surprise vs image differencing");
   char summary[256];
   std::snprintf(summary, sizeof summary,
@@ -163,26 +163,28 @@ void WriteReport(const std::string& out, const std::vector<Row>& rows,
       }
       if (n == 0) continue;
       table.push_back({phase, std::to_string(n), Fmt(s[0] / n), Fmt(s[1] / n), Fmt(s[2] / n),
-                       Fmt(s[3] / n),
-                       s[0] > s[1] ? "surprise" : "differencing"});
+                       Fmt(s[3] / n), s[0] > s[1] ? "surprise" : "differencing"});
     }
     report.Table({"phase", "frames", "mean AS surprise", "mean AS differencing",
                   "mean PAS surprise", "mean PAS differencing", "higher AS"},
                  table);
   }
   report.Heading("Panels: camera | expected (τ) | surprise | uncertainty Σβ | differencing");
-  for (int f : panel_frames) report.Image("panels/" + Stem(f) + ".png", "frame " + std::to_string(f));
+  for (int f : panel_frames)
+    report.Image("panels/" + Stem(f) + ".png", "frame " + std::to_string(f));
   report.Save(out + "/report.html");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  TCLAP::CmdLine cmd("Bayesian surprise with the probabilistic appearance map over an RGB-D "
-                     "rawlog, against image differencing.", ' ', "0.1");
+  TCLAP::CmdLine cmd(
+      "Bayesian surprise with the probabilistic appearance map over an RGB-D "
+      "rawlog, against image differencing.",
+      ' ', "0.1");
   TCLAP::ValueArg<std::string> rawlog("", "rawlog", "RGB-D rawlog", true, "", "R.rawlog", cmd);
-  TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground-truth folder (poses, masks)",
-                                     true, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground-truth folder (poses, masks)", true,
+                                     "", "DIR", cmd);
   TCLAP::ValueArg<std::string> out("", "out", "Output folder", true, "", "OUT", cmd);
   TCLAP::ValueArg<std::string> config("", "config", "Options (.ini, section [AppearanceMap])",
                                       false, "", "INI", cmd);
@@ -228,8 +230,8 @@ int main(int argc, char** argv) {
           Row r{f.index, PhaseOf(phases, f.index), object,
                 eval::AttentionalSelectivity(p.surprise, region),
                 eval::AttentionalSelectivity(d.difference, region)};
-          csv << r.frame << "," << r.phase << "," << r.object << "," << Fmt(r.surprise.as_db)
-              << "," << Fmt(r.surprise.pas_db) << "," << Fmt(r.difference.as_db) << ","
+          csv << r.frame << "," << r.phase << "," << r.object << "," << Fmt(r.surprise.as_db) << ","
+              << Fmt(r.surprise.pas_db) << "," << Fmt(r.difference.as_db) << ","
               << Fmt(r.difference.pas_db) << "\n";
           rows.push_back(r);
         }
@@ -243,7 +245,7 @@ int main(int argc, char** argv) {
         cv::imwrite(dir + "/panels/" + stem + ".png", bgr);
         panel_frames.push_back(f.index);
       }
-      if (frames % 10 == 0) {
+      if (frames % 50 == 0) {
         const double s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "\r[novelty-run] frame %d, %.1f frames/s, %d views   ", f.index,
@@ -257,9 +259,10 @@ int main(int argc, char** argv) {
     for (const std::string& why : reader.skip_reasons()) {
       std::fprintf(stderr, "novelty-run: skipped %s\n", why.c_str());
     }
-    std::printf("%d frames (%d skipped, %d without pose) in %.1f s\n  metrics: %s/metrics.csv\n"
-                "  report:  %s/report.html\n",
-                frames, reader.skipped(), no_pose, seconds, dir.c_str(), dir.c_str());
+    std::printf(
+        "%d frames (%d skipped, %d without pose) in %.1f s\n  metrics: %s/metrics.csv\n"
+        "  report:  %s/report.html\n",
+        frames, reader.skipped(), no_pose, seconds, dir.c_str(), dir.c_str());
     return 0;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());

@@ -6,6 +6,19 @@
 
 namespace novelty::appearance {
 
+namespace {
+
+bool SameCamera(const views::PinholeCamera& a, const views::PinholeCamera& b) {
+  return a.width == b.width && a.height == b.height && a.fx == b.fx && a.fy == b.fy &&
+         a.cx == b.cx && a.cy == b.cy;
+}
+
+bool SamePose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return (a.matrix() - b.matrix()).cwiseAbs().maxCoeff() < 1e-9;
+}
+
+}  // namespace
+
 ViewBasedMap::ViewBasedMap(const ViewBasedMapOptions& options)
     : options_(options), warper_(options.warp) {}
 
@@ -21,6 +34,20 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
       p.value.push_back(m);
     }
     p.valid = cv::Mat::zeros(camera.height, camera.width, CV_8UC1);
+    return p;
+  }
+  // A camera exactly at a reference view (a static camera) needs no warp: the view's own
+  // pixels are the prediction, every one of them valid.
+  for (int j : p.selected) {
+    const views::ReferenceView& v = store_.view(j);
+    if (!SameCamera(v.camera, camera) || !SamePose(v.T_world_cam, T_world_cam)) continue;
+    p.selected = {j};
+    for (const auto& [name, channels] : names) {
+      cv::Mat value;
+      v.planes.at(name).convertTo(value, CV_32F);
+      p.value.push_back(value);
+    }
+    p.valid = cv::Mat(camera.height, camera.width, CV_8UC1, cv::Scalar(255));
     return p;
   }
   warps_.resize(p.selected.size());

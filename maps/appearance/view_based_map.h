@@ -8,6 +8,8 @@
 //     the virtual camera's central ray — with its payload, depth and pose. This is how 4.3's "the
 //     latest reference parameter image selected" is read here: it keeps every region of the map
 //     represented by its closest, freshest view.
+// A camera exactly at a reference view's pose (a static camera) is predicted from that view's
+// pixels without warping.
 #pragma once
 
 #include <Eigen/Geometry>
