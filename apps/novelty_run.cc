@@ -192,11 +192,18 @@ int main(int argc, char** argv) {
                                   cmd);
   TCLAP::ValueArg<int> panels_every("", "panels-every", "Write every K-th panel (default 10)",
                                     false, 10, "K", cmd);
+  TCLAP::ValueArg<double> reduction("", "view-reduction",
+                                    "Space reference views N times wider than configured: the "
+                                    "thesis's R2 and R4 experiments (fig. 4.13) use 2 and 4",
+                                    false, 1.0, "N", cmd);
   try {
     cmd.parse(argc, argv);
-    const appearance::AppearanceMapOptions options =
+    appearance::AppearanceMapOptions options =
         config.isSet() ? mrpt_plugins::LoadAppearanceMapOptions(config.getValue())
                        : appearance::AppearanceMapOptions{};
+    if (!(reduction.getValue() >= 1.0))
+      throw std::invalid_argument("--view-reduction must be >= 1");
+    options.views.new_view_distance *= reduction.getValue();
     const std::string gt = truth.getValue(), dir = out.getValue();
     const auto poses = sensors::LoadGroundTruthPoses(gt + "/poses.csv");
     const auto names = ReadObjects(gt);

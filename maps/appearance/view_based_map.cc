@@ -73,7 +73,7 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& came
   double nearest = std::numeric_limits<double>::infinity();
   int nearest_view = -1;
   for (int j = 0; j < store_.size(); ++j) {
-    const double d = (store_.view(j).T_world_cam.translation() - T_world_cam.translation()).norm();
+    const double d = (anchors_[std::size_t(j)].translation() - T_world_cam.translation()).norm();
     if (d < nearest) {
       nearest = d;
       nearest_view = j;
@@ -87,13 +87,14 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& came
   UpdateResult r;
   bool add = nearest_view < 0 || nearest >= options_.new_view_distance;
   if (!add) {
-    const Eigen::Vector3d z0 = store_.view(nearest_view).T_world_cam.linear().col(2);
+    const Eigen::Vector3d z0 = anchors_[std::size_t(nearest_view)].linear().col(2);
     const double angle = std::acos(std::clamp(z0.dot(T_world_cam.linear().col(2)), -1.0, 1.0));
     add = angle >= options_.new_view_angle;
   }
   if (add || selected.empty()) {
     r.added = true;
     r.view = store_.Add(std::move(v));
+    anchors_.push_back(T_world_cam);
   } else {
     r.view = selected.front();
     store_.Replace(r.view, std::move(v));

@@ -1,9 +1,11 @@
 // The image-based skeleton shared by the appearance map and the differencing baseline (4.3):
 // reference views holding named payload planes; prediction at any viewpoint by view selection,
 // depth-mesh warping and blending (ch. 3); and the update policy that keeps the map current:
-//   - a frame farther than `new_view_distance` from every view, or turned more than
-//     `new_view_angle` from the nearest, becomes a new reference view (the first pass over a
-//     trajectory creates the map);
+//   - a frame farther than `new_view_distance` from every view's anchor (the pose where the view
+//     was created), or turned more than `new_view_angle` from the nearest anchor, becomes a new
+//     reference view (the first pass over a trajectory creates the map). Anchors, not the
+//     current poses, decide: a replacement moves a view's pose to the frame's, and measured
+//     against current poses a view would be dragged along by every frame near it;
 //   - otherwise the frame replaces the best-matching selected view — the one of least cost for
 //     the virtual camera's central ray — with its payload, depth and pose. This is how 4.3's "the
 //     latest reference parameter image selected" is read here: it keeps every region of the map
@@ -60,11 +62,11 @@ class ViewBasedMap {
                       const std::vector<int>& selected);
 
   const views::ReferenceViewStore& store() const { return store_; }
-  views::ReferenceViewStore& mutable_store() { return store_; }
 
  private:
   ViewBasedMapOptions options_;
   views::ReferenceViewStore store_;
+  std::vector<Eigen::Isometry3d> anchors_;  // pose of each view when it was created
   views::DepthMeshWarper warper_;
   std::vector<views::WarpField> warps_;  // reused from frame to frame
 };
