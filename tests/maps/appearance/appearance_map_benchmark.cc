@@ -9,17 +9,13 @@
 
 #include "maps/appearance/appearance_map.h"
 #include "maps/appearance/differencing_map.h"
-#include "sim/render/renderer.h"
 #include "sim/scenario/scenario_parser.h"
-#include "sim/scenario/scenario_world.h"
+#include "sim/scenario/simulate_frames.h"
 
 namespace novelty::appearance {
 namespace {
 
-struct Frame {
-  cv::Mat rgb, depth;
-  Eigen::Isometry3d pose;
-};
+using Frame = sim::SimulatedFrame;
 
 std::vector<Frame> Simulate(const std::string& camera_line) {
   std::istringstream in(R"(
@@ -38,21 +34,7 @@ object cloth plane 1.3 0.9 cloth at 0 0 on table
 object box box 0.14 0.06 0.20 red at 0.25 0.20 on cloth mass 0.4
 lamp l1 -1.0 0.8 2.6 2.2 2.1 1.9
 )" + camera_line);
-  const sim::Scenario s = sim::ParseScenario(in, "bench.scn");
-  sim::ScenarioWorld world(s);
-  std::vector<Frame> frames;
-  for (int k = 0; k < s.frames; ++k) {
-    world.AdvanceTo(k / s.fps);
-    sim::RayScene scene;
-    world.AddToScene(scene);
-    scene.Commit();
-    sim::RenderOptions ro = s.render;
-    ro.frame = std::uint64_t(k);
-    const sim::RenderedFrame f =
-        sim::Render(scene, world.CurrentLighting(), s.camera, world.HeadPose(), ro);
-    frames.push_back({f.rgb, f.depth, world.HeadPose()});
-  }
-  return frames;
+  return sim::SimulateFrames(sim::ParseScenario(in, "bench.scn"));
 }
 
 const views::PinholeCamera kCam = views::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180);
@@ -61,11 +43,12 @@ void BM_AppearanceMapMovingCamera(benchmark::State& state) {
   static const std::vector<Frame> frames =
       Simulate("arc 0 0 1.6 -100 -80 0.1\nstop 0.5\narc 0 0 1.6 -80 -100 0.1\n");
   AppearanceMap map;
-  for (int k = 0; k < 30; ++k) map.Insert(frames[k].rgb, frames[k].depth, kCam, frames[k].pose);
+  for (int k = 0; k < 30; ++k)
+    map.Insert(frames[k].rgb, frames[k].depth, kCam, frames[k].T_world_cam);
   std::size_t k = 30, views = 0, n = 0;
   for (auto _ : state) {
     const Frame& f = frames[k];
-    views += map.Insert(f.rgb, f.depth, kCam, f.pose).selected.size();
+    views += map.Insert(f.rgb, f.depth, kCam, f.T_world_cam).selected.size();
     ++n;
     k = k + 1 < frames.size() ? k + 1 : 30;
   }
@@ -77,11 +60,12 @@ void BM_DifferencingMapMovingCamera(benchmark::State& state) {
   static const std::vector<Frame> frames =
       Simulate("arc 0 0 1.6 -100 -80 0.1\nstop 0.5\narc 0 0 1.6 -80 -100 0.1\n");
   DifferencingMap map;
-  for (int k = 0; k < 30; ++k) map.Insert(frames[k].rgb, frames[k].depth, kCam, frames[k].pose);
+  for (int k = 0; k < 30; ++k)
+    map.Insert(frames[k].rgb, frames[k].depth, kCam, frames[k].T_world_cam);
   std::size_t k = 30;
   for (auto _ : state) {
     const Frame& f = frames[k];
-    benchmark::DoNotOptimize(map.Insert(f.rgb, f.depth, kCam, f.pose).difference.data);
+    benchmark::DoNotOptimize(map.Insert(f.rgb, f.depth, kCam, f.T_world_cam).difference.data);
     k = k + 1 < frames.size() ? k + 1 : 30;
   }
 }
@@ -98,7 +82,7 @@ void BM_AppearanceMapStaticCamera(benchmark::State& state) {
   std::size_t k = 0;
   for (auto _ : state) {
     const Frame& f = StaticFrames()[k];
-    benchmark::DoNotOptimize(map.Insert(f.rgb, f.depth, kCam, f.pose).surprise.data);
+    benchmark::DoNotOptimize(map.Insert(f.rgb, f.depth, kCam, f.T_world_cam).surprise.data);
     k = (k + 1) % StaticFrames().size();
   }
 }

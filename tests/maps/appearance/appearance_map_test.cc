@@ -9,10 +9,8 @@
 
 #include "maps/appearance/differencing_map.h"
 #include "maps/eval/attentional_selectivity.h"
-#include "sim/output/ground_truth_writer.h"
-#include "sim/render/renderer.h"
 #include "sim/scenario/scenario_parser.h"
-#include "sim/scenario/scenario_world.h"
+#include "sim/scenario/simulate_frames.h"
 
 namespace novelty::appearance {
 namespace {
@@ -47,37 +45,11 @@ stop 1.0
 event 9.0 add cup
 )";
 
-struct Frame {
-  cv::Mat rgb, depth, novelty;
-  Eigen::Isometry3d pose;
-  double t;
-};
+using Frame = sim::SimulatedFrame;
 
 std::vector<Frame> Simulate(const std::string& text) {
   std::istringstream in(text);
-  const sim::Scenario s = sim::ParseScenario(in, "clip.scn");
-  sim::ScenarioWorld world(s);
-  std::vector<Frame> frames;
-  for (int k = 0; k < s.frames; ++k) {
-    const double t = k / s.fps;
-    world.AdvanceTo(t);
-    sim::RayScene scene;
-    world.AddToScene(scene);
-    scene.Commit();
-    sim::RenderOptions ro = s.render;
-    ro.frame = std::uint64_t(k);
-    const Eigen::Isometry3d pose = world.HeadPose();
-    const sim::RenderedFrame f = sim::Render(scene, world.CurrentLighting(), s.camera, pose, ro);
-    sim::RayScene reference;
-    world.AddNoveltyReferenceToScene(reference);
-    reference.Commit();
-    const cv::Mat ref_ids = sim::RenderIds(reference, s.camera, pose);
-    frames.push_back(
-        {f.rgb, f.depth,
-         sim::GroundTruthWriter::NoveltyMask(f.ids, ref_ids, world.AddedIds(), world.RemovedIds()),
-         pose, t});
-  }
-  return frames;
+  return sim::SimulateFrames(sim::ParseScenario(in, "clip.scn"));
 }
 
 const std::vector<Frame>& Clip() {
@@ -117,15 +89,15 @@ TEST(AppearanceMap, LearnsTheSceneAndIsSurprisedByTheNewCup) {
   int quiet_frames = 0;
   for (std::size_t k = 0; k < Clip().size(); ++k) {
     const Frame& f = Clip()[k];
-    const AppearanceProducts p = map.Insert(f.rgb, f.depth, cam, f.pose);
-    const DifferencingProducts d = baseline.Insert(f.rgb, f.depth, cam, f.pose);
-    (f.t < 4.5 ? added_first : added_later) += p.update.added;
-    if (f.t > 5.0 && f.t < 8.5) {  // second pass, nothing has changed
+    const AppearanceProducts p = map.Insert(f.rgb, f.depth, cam, f.T_world_cam);
+    const DifferencingProducts d = baseline.Insert(f.rgb, f.depth, cam, f.T_world_cam);
+    (f.time < 4.5 ? added_first : added_later) += p.update.added;
+    if (f.time > 5.0 && f.time < 8.5) {  // second pass, nothing has changed
       quiet_median += MedianValid(p.surprise);
       ++quiet_frames;
     }
     const cv::Mat cup = f.novelty == 255;
-    if (f.t > 9.5 && cv::countNonZero(cup) > 50) {  // third pass, the cup in view
+    if (f.time > 9.5 && cv::countNonZero(cup) > 50) {  // third pass, the cup in view
       as_surprise += eval::AttentionalSelectivity(p.surprise, cup).as_db;
       as_difference += eval::AttentionalSelectivity(d.difference, cup).as_db;
       ++cup_frames;
@@ -156,10 +128,10 @@ TEST(AppearanceMap, SurpriseSingsOutTheGlassBetterThanDifferencing) {
   double as_surprise = 0.0, as_difference = 0.0, pas_surprise = 0.0, pas_difference = 0.0;
   int n = 0;
   for (const Frame& f : GlassClip()) {
-    const AppearanceProducts p = map.Insert(f.rgb, f.depth, cam, f.pose);
-    const DifferencingProducts d = baseline.Insert(f.rgb, f.depth, cam, f.pose);
+    const AppearanceProducts p = map.Insert(f.rgb, f.depth, cam, f.T_world_cam);
+    const DifferencingProducts d = baseline.Insert(f.rgb, f.depth, cam, f.T_world_cam);
     const cv::Mat glass = f.novelty == 255;
-    if (f.t > 9.5 && cv::countNonZero(glass) > 50) {
+    if (f.time > 9.5 && cv::countNonZero(glass) > 50) {
       const eval::Selectivity s = eval::AttentionalSelectivity(p.surprise, glass);
       const eval::Selectivity t = eval::AttentionalSelectivity(d.difference, glass);
       as_surprise += s.as_db, as_difference += t.as_db;
@@ -182,8 +154,8 @@ TEST(AppearanceMap, HalfPrecisionStorageChangesSurpriseLittle) {
   double worst = 0.0;
   for (std::size_t k = 0; k < Clip().size(); ++k) {
     const Frame& f = Clip()[k];
-    const cv::Mat a = half_map.Insert(f.rgb, f.depth, cam, f.pose).surprise;
-    const cv::Mat b = full_map.Insert(f.rgb, f.depth, cam, f.pose).surprise;
+    const cv::Mat a = half_map.Insert(f.rgb, f.depth, cam, f.T_world_cam).surprise;
+    const cv::Mat b = full_map.Insert(f.rgb, f.depth, cam, f.T_world_cam).surprise;
     for (int i = 0; i < a.rows * a.cols; ++i) {
       const float x = a.at<float>(i), y = b.at<float>(i);
       if (std::isnan(x) || std::isnan(y)) continue;
@@ -199,9 +171,10 @@ TEST(AppearanceMap, BadFramesAreRejectedAndLeaveTheMapUnchanged) {
   const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 1.0);
   AppearanceMap map;
   const Frame& f = Clip()[0];
-  map.Insert(f.rgb, f.depth, cam, f.pose);
-  EXPECT_THROW(map.Insert(cv::Mat(10, 10, CV_8UC3), f.depth, cam, f.pose), std::invalid_argument);
-  Eigen::Isometry3d bad = f.pose;
+  map.Insert(f.rgb, f.depth, cam, f.T_world_cam);
+  EXPECT_THROW(map.Insert(cv::Mat(10, 10, CV_8UC3), f.depth, cam, f.T_world_cam),
+               std::invalid_argument);
+  Eigen::Isometry3d bad = f.T_world_cam;
   bad.linear() *= 1.1;
   EXPECT_THROW(map.Insert(f.rgb, f.depth, cam, bad), std::invalid_argument);
   EXPECT_EQ(map.store().size(), 1);

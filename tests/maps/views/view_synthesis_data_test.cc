@@ -9,9 +9,8 @@
 #include "maps/views/view_blender.h"
 #include "maps/views/view_selection.h"
 #include "sensors/dataset/rgbd_folder_reader.h"
-#include "sim/render/renderer.h"
 #include "sim/scenario/scenario_parser.h"
-#include "sim/scenario/scenario_world.h"
+#include "sim/scenario/simulate_frames.h"
 
 namespace novelty::views {
 namespace {
@@ -64,27 +63,19 @@ TEST(ViewSynthesisOnRealData, IclNuimFrame4ReprojectsIntoFrame2) {
 TEST(ViewSynthesisOnSimulatedData, HeldOutFramesMatchTheRenderedOnes) {
   const sim::Scenario s =
       sim::LoadScenario(std::string(NOVELTY_SOURCE_DIR) + "/share/scenarios/glass_and_cup.scn");
-  sim::ScenarioWorld world(s);
   std::vector<ReferenceView> refs;
   std::vector<std::pair<Eigen::Isometry3d, cv::Mat>> held_out;
-  for (int k = 0; k < 48; ++k) {
-    world.AdvanceTo(k / s.fps);
-    sim::RayScene scene;
-    world.AddToScene(scene);
-    scene.Commit();
-    sim::RenderOptions ro = s.render;
-    ro.frame = std::uint64_t(k);
-    const Eigen::Isometry3d pose = world.HeadPose();
-    const sim::RenderedFrame f = sim::Render(scene, world.CurrentLighting(), s.camera, pose, ro);
+  for (const sim::SimulatedFrame& f : sim::SimulateFrames(s, 48)) {
+    const int k = f.index - 1;
     if (k % 4 == 0) {
       ReferenceView v;
       v.camera = s.camera;
-      v.T_world_cam = pose;
+      v.T_world_cam = f.T_world_cam;
       v.depth = f.depth;
       v.planes["rgb"] = f.rgb;
       refs.push_back(v);
     } else if (k % 4 == 2) {
-      held_out.emplace_back(pose, f.rgb);
+      held_out.emplace_back(f.T_world_cam, f.rgb);
     }
   }
   std::vector<Eigen::Isometry3d> poses;
