@@ -1,5 +1,7 @@
 #include "sensors/rawlog/rawlog_frame_reader.h"
 
+#include "sensors/rawlog/rgbd_observation.h"
+
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
@@ -51,33 +53,10 @@ bool RawlogFrameReader::Next(Frame& frame) {
     const std::string where = path_ + ": RGB-D frame " + std::to_string(index);
     try {
       scan->load();
-      if (!scan->hasRangeImage || !scan->hasIntensityImage) {
-        throw std::runtime_error("no range or no intensity image");
-      }
-      const cv::Mat bgr = scan->intensityImage.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
-      const auto& range = scan->rangeImage;
-      if (bgr.empty() || bgr.type() != CV_8UC3 || bgr.rows != int(range.rows()) ||
-          bgr.cols != int(range.cols())) {
-        throw std::runtime_error("intensity image missing or not the range image's size");
-      }
+      DecodeRgbd(*scan, frame.rgb, frame.depth, frame.camera);
       frame.index = index;
       frame.time = mrpt::Clock::toDouble(scan->timestamp);
       frame.label = scan->sensorLabel;
-      cv::cvtColor(bgr, frame.rgb, cv::COLOR_BGR2RGB);
-      frame.depth.create(bgr.rows, bgr.cols, CV_32FC1);
-      for (int r = 0; r < bgr.rows; ++r) {
-        for (int c = 0; c < bgr.cols; ++c) {
-          frame.depth.at<float>(r, c) = float(range(r, c)) * scan->rangeUnits;
-        }
-      }
-      const mrpt::img::TCamera& k = scan->cameraParamsIntensity;
-      frame.camera.width = int(k.ncols);
-      frame.camera.height = int(k.nrows);
-      frame.camera.fx = k.fx();
-      frame.camera.fy = k.fy();
-      frame.camera.cx = k.cx();
-      frame.camera.cy = k.cy();
-      frame.camera.Check();
       scan->unload();
       return true;
     } catch (const std::exception& e) {

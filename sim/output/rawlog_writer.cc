@@ -1,5 +1,7 @@
 #include "sim/output/rawlog_writer.h"
 
+#include "sensors/rawlog/rgbd_observation.h"
+
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationBearingRange.h>
@@ -22,24 +24,6 @@ constexpr double kEpoch = 1293840000.0;  // 2011-01-01 00:00:00 UTC
 
 mrpt::Clock::time_point Stamp(double t) {
   return mrpt::Clock::fromDouble(kEpoch + t);
-}
-
-mrpt::poses::CPose3D ToMrpt(const Eigen::Isometry3d& p) {
-  mrpt::math::CMatrixDouble44 m;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) m(r, c) = p.matrix()(r, c);
-  return mrpt::poses::CPose3D(m);
-}
-
-mrpt::img::TCamera ToMrpt(const views::PinholeCamera& c) {
-  mrpt::img::TCamera t;
-  t.ncols = static_cast<uint32_t>(c.width);
-  t.nrows = static_cast<uint32_t>(c.height);
-  t.fx(c.fx);
-  t.fy(c.fy);
-  t.cx(c.cx);
-  t.cy(c.cy);
-  return t;
 }
 
 }  // namespace
@@ -93,8 +77,8 @@ void RawlogWriter::WriteImage(double t, const std::string& label, const cv::Mat&
   mrpt::obs::CObservationImage obs;
   obs.timestamp = Stamp(t);
   obs.sensorLabel = label;
-  obs.cameraParams = ToMrpt(camera);
-  obs.cameraPose = ToMrpt(robot_from_camera);
+  obs.cameraParams = sensors::ToMrpt(camera);
+  obs.cameraPose = sensors::ToMrpt(robot_from_camera);
   obs.image = External(images_dir_, rgb, stem + ".png");
   auto arch = mrpt::serialization::archiveFrom(impl_->file);
   arch << obs;
@@ -108,8 +92,8 @@ void RawlogWriter::WriteStereo(double t, const cv::Mat& left, const cv::Mat& rig
   mrpt::obs::CObservationStereoImages obs;
   obs.timestamp = Stamp(t);
   obs.sensorLabel = "STEREO";
-  obs.leftCamera = obs.rightCamera = ToMrpt(camera);
-  obs.cameraPose = mrpt::poses::CPose3DQuat(ToMrpt(robot_from_left));
+  obs.leftCamera = obs.rightCamera = sensors::ToMrpt(camera);
+  obs.cameraPose = mrpt::poses::CPose3DQuat(sensors::ToMrpt(robot_from_left));
   obs.rightCameraPose = mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(baseline, 0, 0, 0, 0, 0));
   obs.imageLeft = External(images_dir_, left, stem + "_left.png");
   obs.imageRight = External(images_dir_, right, stem + "_right.png");
@@ -122,29 +106,10 @@ void RawlogWriter::WriteStereo(double t, const cv::Mat& left, const cv::Mat& rig
 void RawlogWriter::WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth,
                              const views::PinholeCamera& camera,
                              const Eigen::Isometry3d& robot_from_camera, const std::string& stem) {
-  mrpt::obs::CObservation3DRangeScan obs;
-  obs.timestamp = Stamp(t);
-  obs.sensorLabel = "RGBD";
-  obs.cameraParams = obs.cameraParamsIntensity = ToMrpt(camera);
-  // MRPT's 3D-scan sensor frame has +X forward, +Y left, +Z up.
-  Eigen::Isometry3d camera_from_sensor = Eigen::Isometry3d::Identity();
-  camera_from_sensor.linear() << 0, -1, 0, 0, 0, -1, 1, 0, 0;
-  obs.sensorPose = ToMrpt(robot_from_camera * camera_from_sensor);
-  obs.range_is_depth = true;
-  obs.rangeUnits = 0.0002f;  // 0.2 mm steps, up to 13 m
-  obs.hasRangeImage = true;
-  obs.rangeImage_setSize(depth.rows, depth.cols);
-  for (int r = 0; r < depth.rows; ++r) {
-    for (int c = 0; c < depth.cols; ++c) {
-      const float d = depth.at<float>(r, c);
-      obs.rangeImage(r, c) = (d > 0 && std::isfinite(d))
-                                 ? uint16_t(std::min(65535.0f, std::round(d / obs.rangeUnits)))
-                                 : 0;
-    }
-  }
+  mrpt::obs::CObservation3DRangeScan obs =
+      sensors::MakeRgbdObservation(kEpoch + t, rgb, depth, camera, robot_from_camera);
   obs.rangeImage_convertToExternalStorage(stem + "_depth.bin", images_dir_ + "/");
-  obs.hasIntensityImage = true;
-  obs.intensityImage = External(images_dir_, rgb, stem + ".png");
+  obs.intensityImage = External(images_dir_, rgb, stem + ".png");  // in place of the in-memory one
   auto arch = mrpt::serialization::archiveFrom(impl_->file);
   arch << obs;
   ++count_;
