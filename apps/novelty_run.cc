@@ -9,8 +9,9 @@
 //   OUT/metrics.csv        frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff for every
 //                          changed object in view (regions from the ground-truth novelty masks:
 //                          added objects and the arm by id, "removed" where objects were taken)
-//   OUT/report.html        plots of AS/PAS over frames, a table per object and phase, panels.
-// Progress on stderr. (Saving the map and the MRPT map classes come with CAppearanceMap.)
+//   OUT/report.html        plots of AS/PAS over frames, a table per object and phase, panels,
+// and the map (OUT/map.appearance_map, or --map-out; --map-in continues from a saved map).
+// Progress on stderr.
 #include <tclap/CmdLine.h>
 
 #include <chrono>
@@ -30,6 +31,7 @@
 #include "maps/eval/false_color.h"
 #include "maps/eval/html_report.h"
 #include "mrpt_plugins/appearance_map_options.h"
+#include "mrpt_plugins/c_appearance_map.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 
 namespace {
@@ -192,6 +194,11 @@ int main(int argc, char** argv) {
                                   cmd);
   TCLAP::ValueArg<int> panels_every("", "panels-every", "Write every K-th panel (default 10)",
                                     false, 10, "K", cmd);
+  TCLAP::ValueArg<std::string> map_in("", "map-in", "Continue from a saved appearance map", false,
+                                      "", "M", cmd);
+  TCLAP::ValueArg<std::string> map_out(
+      "", "map-out", "Save the appearance map here (default OUT/map.appearance_map)", false, "",
+      "M", cmd);
   TCLAP::ValueArg<double> reduction("", "view-reduction",
                                     "Space reference views N times wider than configured: the "
                                     "thesis's R2 and R4 experiments (fig. 4.13) use 2 and 4",
@@ -210,7 +217,8 @@ int main(int argc, char** argv) {
     const auto phases = ReadPhases(gt);
     std::filesystem::create_directories(dir + "/panels");
     sensors::RawlogFrameReader reader(rawlog.getValue());
-    appearance::AppearanceMap map(options);
+    mrpt_plugins::CAppearanceMap map(options);
+    if (map_in.isSet()) map.LoadFromFile(map_in.getValue());  // its options come with it
     appearance::DifferencingMap baseline(options.views);
     std::ofstream csv(dir + "/metrics.csv");
     csv << "frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff\n";
@@ -225,7 +233,8 @@ int main(int argc, char** argv) {
         ++no_pose;
         continue;
       }
-      const appearance::AppearanceProducts p = map.Insert(f.rgb, f.depth, f.camera, pose->second);
+      const appearance::AppearanceProducts& p =
+          map.InsertFrame(f.rgb, f.depth, f.camera, pose->second);
       const appearance::DifferencingProducts d =
           baseline.Insert(f.rgb, f.depth, f.camera, pose->second);
       ++frames;
@@ -256,20 +265,22 @@ int main(int argc, char** argv) {
         const double s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::fprintf(stderr, "\r[novelty-run] frame %d, %.1f frames/s, %d views   ", f.index,
-                     frames / s, map.store().size());
+                     frames / s, map.map().store().size());
       }
     }
     std::fprintf(stderr, "\n");
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    WriteReport(dir, rows, phases, panel_frames, frames, seconds, map.store().size());
+    WriteReport(dir, rows, phases, panel_frames, frames, seconds, map.map().store().size());
+    const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";
+    map.SaveToFile(saved);
     for (const std::string& why : reader.skip_reasons()) {
       std::fprintf(stderr, "novelty-run: skipped %s\n", why.c_str());
     }
     std::printf(
         "%d frames (%d skipped, %d without pose) in %.1f s\n  metrics: %s/metrics.csv\n"
-        "  report:  %s/report.html\n",
-        frames, reader.skipped(), no_pose, seconds, dir.c_str(), dir.c_str());
+        "  map:     %s\n  report:  %s/report.html\n",
+        frames, reader.skipped(), no_pose, seconds, dir.c_str(), saved.c_str(), dir.c_str());
     return 0;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());

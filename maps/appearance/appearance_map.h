@@ -52,6 +52,9 @@ class AppearanceMap {
 
   const views::ReferenceViewStore& store() const { return map_.store(); }
   const AppearanceMapOptions& options() const { return options_; }
+  /// The reference views and their anchors, for saving and loading a map.
+  const ViewBasedMap& view_map() const { return map_; }
+  ViewBasedMap& view_map() { return map_; }
 
   /// Channel layout of the working parameter image (stored as "ab_sigma": α, β×3, σ×3 and
   /// "tau": τ×3).

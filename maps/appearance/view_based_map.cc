@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace novelty::appearance {
 
@@ -63,6 +65,18 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
     p.valid = std::move(b.valid);  // the same for every plane: it depends on the warps only
   }
   return p;
+}
+
+void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
+                           std::vector<Eigen::Isometry3d> anchors) {
+  if (views.size() != anchors.size()) {
+    throw std::invalid_argument("ViewBasedMap::Restore: " + std::to_string(views.size()) +
+                                " views but " + std::to_string(anchors.size()) + " anchors");
+  }
+  views::ReferenceViewStore store;
+  for (views::ReferenceView& v : views) store.Add(std::move(v));  // checks every view
+  store_ = std::move(store);
+  anchors_ = std::move(anchors);
 }
 
 ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& camera,

@@ -62,6 +62,11 @@ class ViewBasedMap {
                       const std::vector<int>& selected);
 
   const views::ReferenceViewStore& store() const { return store_; }
+  /// The pose of each view when it was created (same order as the store).
+  const std::vector<Eigen::Isometry3d>& anchors() const { return anchors_; }
+  /// Replaces the whole content (for loading a saved map). Throws std::invalid_argument if the
+  /// counts differ or a view is invalid; the map is then unchanged.
+  void Restore(std::vector<views::ReferenceView> views, std::vector<Eigen::Isometry3d> anchors);
 
  private:
   ViewBasedMapOptions options_;

@@ -1,0 +1,127 @@
+#include "mrpt_plugins/c_appearance_map.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sensors/rawlog/rgbd_observation.h"
+#include "sim/scenario/scenario_parser.h"
+#include "sim/scenario/simulate_frames.h"
+
+namespace novelty::mrpt_plugins {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<sim::SimulatedFrame>& Frames() {
+  static const std::vector<sim::SimulatedFrame> frames = [] {
+    std::istringstream in(R"(
+name clip
+frames 36
+fps 7
+camera 160 120 60
+rig rgbd
+mount 0.0 0.0 1.10 90 16
+material wood phong 0.45 0.28 0.14 0.1 20
+material cloth phong 0.92 0.90 0.84
+texture cloth stripes 0.25 0.35 0.70 20
+material red phong 0.75 0.10 0.08 0.2 30
+object table box 1.2 0.8 0.72 wood at 0 0 fixed
+object cloth plane 1.3 0.9 cloth at 0 0 on table
+object box box 0.14 0.06 0.20 red at 0.25 0.20 on cloth mass 0.4
+lamp l1 -1.0 0.8 2.6 2.2 2.1 1.9
+arc 0 0 1.6 -100 -80 0.15
+stop 0.5
+arc 0 0 1.6 -80 -100 0.15
+)");
+    return sim::SimulateFrames(sim::ParseScenario(in, "clip.scn"));
+  }();
+  return frames;
+}
+
+// The frame as an observation from a sensor at its true pose, the robot at the origin.
+mrpt::obs::CObservation3DRangeScan Observation(const sim::SimulatedFrame& f) {
+  return sensors::MakeRgbdObservation(f.time, f.rgb, f.depth,
+                                      views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180),
+                                      f.T_world_cam);
+}
+
+bool SameMaps(const cv::Mat& a, const cv::Mat& b) {
+  for (int i = 0; i < a.rows * a.cols; ++i) {
+    const float x = a.at<float>(i), y = b.at<float>(i);
+    if (!(x == y || (std::isnan(x) && std::isnan(y)))) return false;
+  }
+  return true;
+}
+
+TEST(CAppearanceMap, SurpriseAfterSaveAndLoadEqualsSurpriseWithout) {
+  CAppearanceMap kept;
+  for (int k = 0; k < 20; ++k) ASSERT_TRUE(kept.insertObservation(Observation(Frames()[k])));
+  EXPECT_FALSE(kept.isEmpty());
+  const fs::path file = fs::temp_directory_path() / "novelty_test.appearance_map";
+  kept.SaveToFile(file.string());
+  CAppearanceMap reloaded;
+  reloaded.LoadFromFile(file.string());
+  EXPECT_EQ(reloaded.map().store().size(), kept.map().store().size());
+  for (std::size_t k = 20; k < Frames().size(); ++k) {
+    kept.insertObservation(Observation(Frames()[k]));
+    reloaded.insertObservation(Observation(Frames()[k]));
+    ASSERT_TRUE(SameMaps(kept.lastProducts().surprise, reloaded.lastProducts().surprise))
+        << "frame " << k;
+  }
+}
+
+TEST(CAppearanceMap, TruncatedOrForeignFilesAreRejectedAndTheMapKept) {
+  CAppearanceMap map;
+  for (int k = 0; k < 5; ++k) map.insertObservation(Observation(Frames()[k]));
+  const fs::path file = fs::temp_directory_path() / "novelty_truncated.appearance_map";
+  map.SaveToFile(file.string());
+  fs::resize_file(file, fs::file_size(file) / 2);
+  CAppearanceMap other;
+  for (int k = 0; k < 3; ++k) other.insertObservation(Observation(Frames()[k]));
+  const int before = other.map().store().size();
+  EXPECT_THROW(other.LoadFromFile(file.string()), std::runtime_error);
+  std::ofstream(file, std::ios::trunc) << "not a map at all";
+  try {
+    other.LoadFromFile(file.string());
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(other.map().store().size(), before);
+  other.insertObservation(Observation(Frames()[3]));  // and it still works
+}
+
+TEST(CAppearanceMap, DeclaredInAMultiMetricMapIniWithItsOptions) {
+  const mrpt::config::CConfigFileMemory ini(R"(
+[map]
+CAppearanceMap_count = 1
+[map_CAppearanceMap_00_options]
+forgetting_factor = 0.7
+)");
+  mrpt::maps::TSetOfMetricMapInitializers inits;
+  inits.loadFromConfigFile(ini, "map");
+  mrpt::maps::CMultiMetricMap multi;
+  multi.setListOfMaps(inits);
+  ASSERT_EQ(multi.maps.size(), 1u);
+  const auto map = std::dynamic_pointer_cast<CAppearanceMap>(multi.maps[0]);
+  ASSERT_TRUE(map);
+  EXPECT_EQ(map->map().options().surprise.update.forgetting_factor, 0.7);
+}
+
+TEST(CAppearanceMap, VisualisationHasOneFrustumPerView) {
+  CAppearanceMap map;
+  for (int k = 0; k < 6; ++k) map.insertObservation(Observation(Frames()[k]));
+  mrpt::opengl::CSetOfObjects objects;
+  map.getVisualizationInto(objects);
+  EXPECT_EQ(int(objects.size()), map.map().store().size());
+  EXPECT_NE(map.asString().find("reference views"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace novelty::mrpt_plugins
