@@ -10,7 +10,8 @@
 //                          changed object in view (regions from the ground-truth novelty masks:
 //                          added objects and the arm by id, "removed" where objects were taken)
 //   OUT/report.html        plots of AS/PAS over frames, a table per object and phase, panels,
-// and the map (OUT/map.appearance_map, or --map-out; --map-in continues from a saved map).
+// and the map (OUT/map.appearance_map, or --map-out; --map-in continues from a saved map) with
+// its reference-view frusta as OUT/map.3Dscene for SceneViewer3D.
 // Progress on stderr.
 #include <tclap/CmdLine.h>
 
@@ -274,6 +275,7 @@ int main(int argc, char** argv) {
     WriteReport(dir, rows, phases, panel_frames, frames, seconds, map.map().store().size());
     const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";
     map.SaveToFile(saved);
+    map.SaveSceneFile(dir + "/map.3Dscene");  // for SceneViewer3D
     for (const std::string& why : reader.skip_reasons()) {
       std::fprintf(stderr, "novelty-run: skipped %s\n", why.c_str());
     }

@@ -4,6 +4,7 @@
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/opengl/CFrustum.h>
+#include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -239,6 +240,16 @@ void CAppearanceMap::LoadFromFile(const std::string& path) {
   }
   map_ = std::move(loaded.map_);
   last_ = {};
+}
+
+void CAppearanceMap::SaveSceneFile(const std::string& path) const {
+  mrpt::opengl::COpenGLScene scene;
+  auto objects = mrpt::opengl::CSetOfObjects::Create();
+  getVisualizationInto(*objects);
+  scene.insert(objects);
+  const std::string tmp = path + ".tmp";
+  if (!scene.saveToFile(tmp)) throw std::runtime_error(path + ": cannot write the scene");
+  std::filesystem::rename(tmp, path);
 }
 
 void CAppearanceMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {

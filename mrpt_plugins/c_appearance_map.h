@@ -31,6 +31,9 @@ class CAppearanceMap : public mrpt::maps::CMetricMap {
   bool isEmpty() const override;
   std::string asString() const override;
   void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
+  /// Writes the visualization (frusta) as an MRPT scene that SceneViewer3D opens; throws
+  /// std::runtime_error naming the file on failure.
+  void SaveSceneFile(const std::string& path) const;
   /// Saves the map as `prefix + ".appearance_map"` (see SaveToFile).
   void saveMetricMapRepresentationToFile(const std::string& prefix) const override;
 

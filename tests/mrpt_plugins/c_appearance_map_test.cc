@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 
 #include <filesystem>
@@ -121,6 +122,14 @@ TEST(CAppearanceMap, VisualisationHasOneFrustumPerView) {
   map.getVisualizationInto(objects);
   EXPECT_EQ(int(objects.size()), map.map().store().size());
   EXPECT_NE(map.asString().find("reference views"), std::string::npos);
+  // The scene file MRPT's SceneViewer3D opens reads back with the same objects.
+  const fs::path scene_file = fs::temp_directory_path() / "novelty_test_map.3Dscene";
+  map.SaveSceneFile(scene_file.string());
+  mrpt::opengl::COpenGLScene scene;
+  ASSERT_TRUE(scene.loadFromFile(scene_file.string()));
+  const auto loaded = scene.getByClass<mrpt::opengl::CSetOfObjects>();
+  ASSERT_TRUE(loaded);
+  EXPECT_EQ(int(loaded->size()), map.map().store().size());
 }
 
 }  // namespace
