@@ -19,14 +19,20 @@ struct DifferencingProducts {
 
 class DifferencingMap {
  public:
-  explicit DifferencingMap(const ViewBasedMapOptions& options = {}) : map_(options) {}
+  explicit DifferencingMap(const ViewBasedMapOptions& options = {})
+      : options_(options), map_(options) {}
   /// Same inputs and errors as AppearanceMap::Insert.
   DifferencingProducts Insert(const cv::Mat& rgb, const cv::Mat& depth,
                               const views::PinholeCamera& camera,
                               const Eigen::Isometry3d& T_world_cam);
   const views::ReferenceViewStore& store() const { return map_.store(); }
+  const ViewBasedMapOptions& options() const { return options_; }
+  /// The reference images and their anchors, for saving and loading a map.
+  const ViewBasedMap& view_map() const { return map_; }
+  ViewBasedMap& view_map() { return map_; }
 
  private:
+  ViewBasedMapOptions options_;
   ViewBasedMap map_;
 };
 

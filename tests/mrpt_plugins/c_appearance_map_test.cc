@@ -10,47 +10,13 @@
 #include <fstream>
 #include <sstream>
 
-#include "sensors/rawlog/rgbd_observation.h"
-#include "sim/scenario/scenario_parser.h"
-#include "sim/scenario/simulate_frames.h"
+#include "mrpt_plugins/register_maps.h"
+#include "tests/mrpt_plugins/clip_observations.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
 
 namespace fs = std::filesystem;
-
-const std::vector<sim::SimulatedFrame>& Frames() {
-  static const std::vector<sim::SimulatedFrame> frames = [] {
-    std::istringstream in(R"(
-name clip
-frames 36
-fps 7
-camera 160 120 60
-rig rgbd
-mount 0.0 0.0 1.10 90 16
-material wood phong 0.45 0.28 0.14 0.1 20
-material cloth phong 0.92 0.90 0.84
-texture cloth stripes 0.25 0.35 0.70 20
-material red phong 0.75 0.10 0.08 0.2 30
-object table box 1.2 0.8 0.72 wood at 0 0 fixed
-object cloth plane 1.3 0.9 cloth at 0 0 on table
-object box box 0.14 0.06 0.20 red at 0.25 0.20 on cloth mass 0.4
-lamp l1 -1.0 0.8 2.6 2.2 2.1 1.9
-arc 0 0 1.6 -100 -80 0.15
-stop 0.5
-arc 0 0 1.6 -80 -100 0.15
-)");
-    return sim::SimulateFrames(sim::ParseScenario(in, "clip.scn"));
-  }();
-  return frames;
-}
-
-// The frame as an observation from a sensor at its true pose, the robot at the origin.
-mrpt::obs::CObservation3DRangeScan Observation(const sim::SimulatedFrame& f) {
-  return sensors::MakeRgbdObservation(f.time, f.rgb, f.depth,
-                                      views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180),
-                                      f.T_world_cam);
-}
 
 bool SameMaps(const cv::Mat& a, const cv::Mat& b) {
   for (int i = 0; i < a.rows * a.cols; ++i) {
@@ -105,6 +71,7 @@ CAppearanceMap_count = 1
 [map_CAppearanceMap_00_options]
 forgetting_factor = 0.7
 )");
+  RegisterMaps();
   mrpt::maps::TSetOfMetricMapInitializers inits;
   inits.loadFromConfigFile(ini, "map");
   mrpt::maps::CMultiMetricMap multi;

@@ -1,0 +1,115 @@
+#include "mrpt_plugins/c_differencing_map.h"
+
+#include <mrpt/opengl/CSetOfObjects.h>
+
+#include <sstream>
+
+#include "mrpt_plugins/appearance_map_options.h"
+#include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/register_maps.h"
+
+using novelty::mrpt_plugins::CDifferencingMap;
+
+MAP_DEFINITION_REGISTER("CDifferencingMap,novelty::mrpt_plugins::CDifferencingMap",
+                        novelty::mrpt_plugins::CDifferencingMap)
+
+IMPLEMENTS_SERIALIZABLE(CDifferencingMap, CMetricMap, novelty::mrpt_plugins)
+
+namespace novelty::mrpt_plugins {
+
+CDifferencingMap::CDifferencingMap(const appearance::ViewBasedMapOptions& options)
+    : map_(std::make_unique<appearance::DifferencingMap>(options)) {}
+
+bool CDifferencingMap::isEmpty() const {
+  return map_->store().size() == 0;
+}
+
+std::string CDifferencingMap::asString() const {
+  std::ostringstream s;
+  s << "CDifferencingMap: " << map_->store().size() << " reference views";
+  return s.str();
+}
+
+void CDifferencingMap::internal_clear() {
+  map_ = std::make_unique<appearance::DifferencingMap>(map_->options());
+  last_ = {};
+}
+
+bool CDifferencingMap::internal_insertObservation(
+    const mrpt::obs::CObservation& obs, const std::optional<const mrpt::poses::CPose3D>& robot) {
+  ObservedFrame f;
+  try {
+    if (!DecodeObservation(obs, robot, f)) return false;
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("CDifferencingMap: ") + e.what());
+  }
+  InsertFrame(f.rgb, f.depth, f.camera, f.T_world_cam);
+  return true;
+}
+
+const appearance::DifferencingProducts& CDifferencingMap::InsertFrame(
+    const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCamera& camera,
+    const Eigen::Isometry3d& T_world_cam) {
+  last_ = map_->Insert(rgb, depth, camera, T_world_cam);
+  return last_;
+}
+
+void CDifferencingMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
+  AddViewFrusta(map_->store(), {}, o);
+}
+
+uint8_t CDifferencingMap::serializeGetVersion() const {
+  return 0;
+}
+
+void CDifferencingMap::serializeTo(mrpt::serialization::CArchive& out) const {
+  const appearance::ViewBasedMapOptions& o = map_->options();
+  out << o.new_view_distance << o.new_view_angle << o.warp.max_relative_depth_jump
+      << o.blend.depth_tolerance;
+  WriteViewMap(out, map_->view_map());
+}
+
+void CDifferencingMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
+  if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+  appearance::ViewBasedMapOptions o;
+  in >> o.new_view_distance >> o.new_view_angle >> o.warp.max_relative_depth_jump >>
+      o.blend.depth_tolerance;
+  auto map = std::make_unique<appearance::DifferencingMap>(o);
+  ReadViewMap(in, map->view_map());
+  map_ = std::move(map);  // only now: a failure above leaves the map as it was
+  last_ = {};
+}
+
+void CDifferencingMap::SaveToFile(const std::string& path) const {
+  SaveAtomically(*this, path);
+}
+
+void CDifferencingMap::LoadFromFile(const std::string& path) {
+  RegisterMaps();  // the archive names the class
+  CDifferencingMap loaded;
+  LoadInto(loaded, path, "CDifferencingMap");
+  map_ = std::move(loaded.map_);
+  last_ = {};
+}
+
+void CDifferencingMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {
+  SaveToFile(prefix + ".differencing_map");
+}
+
+CDifferencingMap::TMapDefinition::TMapDefinition() = default;
+
+void CDifferencingMap::TMapDefinition::loadFromConfigFile_map_specific(
+    const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
+  options = LoadAppearanceMapOptions(source, prefix + "_options", "map definition").views;
+}
+
+void CDifferencingMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {
+  out << "CDifferencingMap: new_view_distance=" << options.new_view_distance << "\n";
+}
+
+mrpt::maps::CMetricMap* CDifferencingMap::internal_CreateFromMapDefinition(
+    const mrpt::maps::TMetricMapInitializer& def) {
+  return new CDifferencingMap(dynamic_cast<const CDifferencingMap::TMapDefinition&>(def).options);
+}
+
+}  // namespace novelty::mrpt_plugins

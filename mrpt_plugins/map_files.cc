@@ -1,0 +1,160 @@
+#include "mrpt_plugins/map_files.h"
+
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/opengl/CFrustum.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "sensors/rawlog/rgbd_observation.h"
+
+namespace novelty::mrpt_plugins {
+
+namespace {
+
+void WriteMat(mrpt::serialization::CArchive& out, const cv::Mat& m) {
+  const cv::Mat c = m.isContinuous() ? m : m.clone();
+  out << int32_t(c.type()) << int32_t(c.rows) << int32_t(c.cols);
+  out.WriteBuffer(c.data, c.total() * c.elemSize());
+}
+
+cv::Mat ReadMat(mrpt::serialization::CArchive& in) {
+  int32_t type, rows, cols;
+  in >> type >> rows >> cols;
+  if (rows < 0 || cols < 0 || rows > 100000 || cols > 100000) {
+    throw std::runtime_error("corrupt image size " + std::to_string(rows) + "x" +
+                             std::to_string(cols));
+  }
+  cv::Mat m(rows, cols, type);
+  in.ReadBuffer(m.data, m.total() * m.elemSize());
+  return m;
+}
+
+void WritePose(mrpt::serialization::CArchive& out, const Eigen::Isometry3d& p) {
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) out << p.matrix()(r, c);
+}
+
+Eigen::Isometry3d ReadPose(mrpt::serialization::CArchive& in) {
+  Eigen::Isometry3d p = Eigen::Isometry3d::Identity();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) in >> p.matrix()(r, c);
+  return p;
+}
+
+}  // namespace
+
+bool DecodeObservation(const mrpt::obs::CObservation& obs,
+                       const std::optional<const mrpt::poses::CPose3D>& robot,
+                       ObservedFrame& frame) {
+  const auto* scan = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obs);
+  if (!scan) return false;
+  scan->load();
+  try {
+    sensors::DecodeRgbd(*scan, frame.rgb, frame.depth, frame.camera);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument("observation '" + scan->sensorLabel + "': " + e.what());
+  }
+  const Eigen::Isometry3d world_from_robot =
+      robot ? sensors::ToEigen(*robot) : Eigen::Isometry3d::Identity();
+  frame.T_world_cam = world_from_robot * sensors::CameraOnRobot(*scan);
+  return true;
+}
+
+void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map) {
+  const views::ReferenceViewStore& store = map.store();
+  out << int32_t(store.size());
+  for (int j = 0; j < store.size(); ++j) {
+    const views::ReferenceView& v = store.view(j);
+    out << int32_t(v.camera.width) << int32_t(v.camera.height) << v.camera.fx << v.camera.fy
+        << v.camera.cx << v.camera.cy;
+    WritePose(out, v.T_world_cam);
+    WritePose(out, map.anchors()[std::size_t(j)]);
+    WriteMat(out, v.depth);
+    out << int32_t(v.planes.size());
+    for (const auto& [name, plane] : v.planes) {
+      out << name;
+      WriteMat(out, plane);
+    }
+  }
+}
+
+void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map) {
+  int32_t n;
+  in >> n;
+  if (n < 0 || n > 1000000) throw std::runtime_error("corrupt view count");
+  std::vector<views::ReferenceView> views;
+  std::vector<Eigen::Isometry3d> anchors;
+  for (int32_t j = 0; j < n; ++j) {
+    views::ReferenceView v;
+    int32_t w, h;
+    in >> w >> h >> v.camera.fx >> v.camera.fy >> v.camera.cx >> v.camera.cy;
+    v.camera.width = w;
+    v.camera.height = h;
+    v.T_world_cam = ReadPose(in);
+    anchors.push_back(ReadPose(in));
+    v.depth = ReadMat(in);
+    int32_t planes;
+    in >> planes;
+    for (int32_t k = 0; k < planes; ++k) {
+      std::string name;
+      in >> name;
+      v.planes[name] = ReadMat(in);
+    }
+    views.push_back(std::move(v));
+  }
+  map.Restore(std::move(views), std::move(anchors));
+}
+
+void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<double>& badness,
+                   mrpt::opengl::CSetOfObjects& o) {
+  // Frusta point along their +X: turn the camera's +Z onto it.
+  Eigen::Isometry3d cam_from_frustum = Eigen::Isometry3d::Identity();
+  cam_from_frustum.linear() << 0, -1, 0, 0, 0, -1, 1, 0, 0;
+  for (int j = 0; j < store.size(); ++j) {
+    const views::ReferenceView& v = store.view(j);
+    const double hfov = 2.0 * std::atan(0.5 * v.camera.width / std::abs(v.camera.fx));
+    const double vfov = 2.0 * std::atan(0.5 * v.camera.height / std::abs(v.camera.fy));
+    auto f = mrpt::opengl::CFrustum::Create(0.01f, 0.08f, float(hfov * 180 / M_PI),
+                                            float(vfov * 180 / M_PI), 1.0f, true, false);
+    if (badness.empty()) {
+      f->setColor_u8(160, 160, 160);
+    } else {
+      const double u = std::clamp(badness[std::size_t(j)], 0.0, 1.0);
+      f->setColor_u8(uint8_t(255 * u), uint8_t(255 * (1 - u)), 40);
+    }
+    f->setPose(sensors::ToMrpt(v.T_world_cam * cam_from_frustum));
+    o.insert(f);
+  }
+}
+
+void SaveAtomically(const mrpt::serialization::CSerializable& object, const std::string& path) {
+  const std::string tmp = path + ".tmp";
+  {
+    mrpt::io::CFileGZOutputStream file(tmp);
+    if (!file.fileOpenCorrectly()) throw std::runtime_error(tmp + ": cannot open for writing");
+    auto arch = mrpt::serialization::archiveFrom(file);
+    arch << object;
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+void LoadInto(mrpt::serialization::CSerializable& object, const std::string& path,
+              const std::string& kind) {
+  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such map file");
+  try {
+    mrpt::io::CFileGZInputStream file(path);
+    auto arch = mrpt::serialization::archiveFrom(file);
+    arch >> object;
+  } catch (const std::exception&) {
+    // MRPT's own message spans several lines of parser detail; say what matters.
+    throw std::runtime_error(path + ": not a readable " + kind +
+                             " (truncated, or another kind of file)");
+  }
+}
+
+}  // namespace novelty::mrpt_plugins

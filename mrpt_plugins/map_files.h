@@ -1,0 +1,50 @@
+// What the map classes share: reading an RGB-D frame out of an observation, archiving a
+// view-based map, and saving/loading MRPT-serialized maps atomically.
+#pragma once
+
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/serialization/CSerializable.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "maps/appearance/view_based_map.h"
+
+namespace novelty::mrpt_plugins {
+
+/// A decoded RGB-D frame in world coordinates.
+struct ObservedFrame {
+  cv::Mat rgb, depth;
+  views::PinholeCamera camera;
+  Eigen::Isometry3d T_world_cam = Eigen::Isometry3d::Identity();
+};
+
+/// The frame of a CObservation3DRangeScan with an intensity image (loading external images),
+/// its camera at robot_pose ⊕ sensor pose (robot at the origin if no pose). Returns false for
+/// other observations; throws std::invalid_argument naming the sensor if the scan is unusable.
+bool DecodeObservation(const mrpt::obs::CObservation& obs,
+                       const std::optional<const mrpt::poses::CPose3D>& robot_pose,
+                       ObservedFrame& frame);
+
+/// Views (camera, pose, anchor, depth, named planes) of a view-based map.
+void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map);
+/// Reads what WriteViewMap wrote into `map` (replacing its views only if all reads succeed).
+void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map);
+
+/// One frustum per reference view at its pose; `badness[j]` in [0, 1] colours view j from green
+/// to red (empty: all grey).
+void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<double>& badness,
+                   mrpt::opengl::CSetOfObjects& o);
+
+/// Serializes `object` to `path` through a temporary file and a rename.
+void SaveAtomically(const mrpt::serialization::CSerializable& object, const std::string& path);
+/// Deserializes `path` into `object` (a fresh one: on failure the caller's map is untouched);
+/// throws std::runtime_error naming the file and `kind`.
+void LoadInto(mrpt::serialization::CSerializable& object, const std::string& path,
+              const std::string& kind);
+
+}  // namespace novelty::mrpt_plugins
