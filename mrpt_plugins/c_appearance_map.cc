@@ -54,41 +54,13 @@ double MeanUncertainty(const views::ReferenceView& v) {
 }  // namespace
 
 CAppearanceMap::CAppearanceMap(const appearance::AppearanceMapOptions& options)
-    : map_(std::make_unique<appearance::AppearanceMap>(options)) {}
-
-bool CAppearanceMap::isEmpty() const {
-  return map_->store().size() == 0;
-}
+    : ViewMapAdapter(options, "CAppearanceMap", ".appearance_map") {}
 
 std::string CAppearanceMap::asString() const {
   std::ostringstream s;
   s << "CAppearanceMap: " << map_->store().size() << " reference views, "
     << map_->store().BytesUsed() / (1024 * 1024) << " MiB";
   return s.str();
-}
-
-void CAppearanceMap::internal_clear() {
-  map_ = std::make_unique<appearance::AppearanceMap>(map_->options());
-  last_ = {};
-}
-
-bool CAppearanceMap::internal_insertObservation(
-    const mrpt::obs::CObservation& obs, const std::optional<const mrpt::poses::CPose3D>& robot) {
-  ObservedFrame f;
-  try {
-    if (!DecodeObservation(obs, robot, f)) return false;
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string("CAppearanceMap: ") + e.what());
-  }
-  InsertFrame(f.rgb, f.depth, f.camera, f.T_world_cam);
-  return true;
-}
-
-const appearance::AppearanceProducts& CAppearanceMap::InsertFrame(
-    const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCamera& camera,
-    const Eigen::Isometry3d& T_world_cam) {
-  last_ = map_->Insert(rgb, depth, camera, T_world_cam);
-  return last_;
 }
 
 void CAppearanceMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
@@ -118,34 +90,7 @@ void CAppearanceMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
       in, o, [](auto& a, double& v) { a >> v; }, [](auto& a, bool& v) { a >> v; });
   auto map = std::make_unique<appearance::AppearanceMap>(o);
   ReadViewMap(in, map->view_map());
-  map_ = std::move(map);  // only now: a failure above leaves the map as it was
-  last_ = {};
-}
-
-void CAppearanceMap::SaveToFile(const std::string& path) const {
-  SaveAtomically(*this, path);
-}
-
-void CAppearanceMap::LoadFromFile(const std::string& path) {
-  RegisterMaps();         // the archive names the class
-  CAppearanceMap loaded;  // a fresh map: on failure this one is untouched
-  LoadInto(loaded, path, "CAppearanceMap");
-  map_ = std::move(loaded.map_);
-  last_ = {};
-}
-
-void CAppearanceMap::SaveSceneFile(const std::string& path) const {
-  mrpt::opengl::COpenGLScene scene;
-  auto objects = mrpt::opengl::CSetOfObjects::Create();
-  getVisualizationInto(*objects);
-  scene.insert(objects);
-  const std::string tmp = path + ".tmp";
-  if (!scene.saveToFile(tmp)) throw std::runtime_error(path + ": cannot write the scene");
-  std::filesystem::rename(tmp, path);
-}
-
-void CAppearanceMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {
-  SaveToFile(prefix + ".appearance_map");
+  ReplaceMap(std::move(map));  // only now: a failure above leaves the map as it was
 }
 
 // --- CMultiMetricMap integration ---------------------------------------------------------------

@@ -18,40 +18,12 @@ IMPLEMENTS_SERIALIZABLE(CDifferencingMap, CMetricMap, novelty::mrpt_plugins)
 namespace novelty::mrpt_plugins {
 
 CDifferencingMap::CDifferencingMap(const appearance::ViewBasedMapOptions& options)
-    : map_(std::make_unique<appearance::DifferencingMap>(options)) {}
-
-bool CDifferencingMap::isEmpty() const {
-  return map_->store().size() == 0;
-}
+    : ViewMapAdapter(options, "CDifferencingMap", ".differencing_map") {}
 
 std::string CDifferencingMap::asString() const {
   std::ostringstream s;
   s << "CDifferencingMap: " << map_->store().size() << " reference views";
   return s.str();
-}
-
-void CDifferencingMap::internal_clear() {
-  map_ = std::make_unique<appearance::DifferencingMap>(map_->options());
-  last_ = {};
-}
-
-bool CDifferencingMap::internal_insertObservation(
-    const mrpt::obs::CObservation& obs, const std::optional<const mrpt::poses::CPose3D>& robot) {
-  ObservedFrame f;
-  try {
-    if (!DecodeObservation(obs, robot, f)) return false;
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string("CDifferencingMap: ") + e.what());
-  }
-  InsertFrame(f.rgb, f.depth, f.camera, f.T_world_cam);
-  return true;
-}
-
-const appearance::DifferencingProducts& CDifferencingMap::InsertFrame(
-    const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCamera& camera,
-    const Eigen::Isometry3d& T_world_cam) {
-  last_ = map_->Insert(rgb, depth, camera, T_world_cam);
-  return last_;
 }
 
 void CDifferencingMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
@@ -76,24 +48,7 @@ void CDifferencingMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t 
       o.blend.depth_tolerance;
   auto map = std::make_unique<appearance::DifferencingMap>(o);
   ReadViewMap(in, map->view_map());
-  map_ = std::move(map);  // only now: a failure above leaves the map as it was
-  last_ = {};
-}
-
-void CDifferencingMap::SaveToFile(const std::string& path) const {
-  SaveAtomically(*this, path);
-}
-
-void CDifferencingMap::LoadFromFile(const std::string& path) {
-  RegisterMaps();  // the archive names the class
-  CDifferencingMap loaded;
-  LoadInto(loaded, path, "CDifferencingMap");
-  map_ = std::move(loaded.map_);
-  last_ = {};
-}
-
-void CDifferencingMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {
-  SaveToFile(prefix + ".differencing_map");
+  ReplaceMap(std::move(map));  // only now: a failure above leaves the map as it was
 }
 
 CDifferencingMap::TMapDefinition::TMapDefinition() = default;
