@@ -10,4 +10,4 @@ build/bin/novelty-sim share/scenarios/glass_and_cup.scn --out "$out/glass_and_cu
 build/bin/novelty-run --rawlog "$out/glass_and_cup/glass_and_cup.rawlog" \
   --groundtruth "$out/glass_and_cup/groundtruth" --config share/appearance.ini \
   --out "$out/glass_and_cup_run"
-echo "Report: $(pwd)/$out/glass_and_cup_run/report.html"
+echo "Report: $(realpath "$out")/glass_and_cup_run/report.html"
