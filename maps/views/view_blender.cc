@@ -86,45 +86,72 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float tolerance = float(1.0 + o.depth_tolerance);
   // One pass over the virtual image: per pixel, the nearest depth (if a tolerance is set), then
-  // the weighted sum of the valid views' bilinear samples (same result as OpenCV's remap).
-  cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
-    std::vector<float> acc(static_cast<std::size_t>(channels), 0.0f);
-    for (int y = rows.start; y < rows.end; ++y) {
-      float* out = result.value.ptr<float>(y);
-      uint8_t* valid = result.valid.ptr<uint8_t>(y);
-      for (int x = 0; x < size.width; ++x) {
-        float nearest = std::numeric_limits<float>::infinity();
-        if (o.depth_tolerance > 0.0) {
-          for (const WarpField& w : warps) {
+  // the weighted sum of the valid views' bilinear samples. `sample(k, u, v, w, acc)` is inlined
+  // when every plane has the same depth (the usual case), else called through a pointer.
+  auto blend = [&](auto sample) {
+    cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
+      std::vector<float> acc(static_cast<std::size_t>(channels), 0.0f);
+      for (int y = rows.start; y < rows.end; ++y) {
+        float* out = result.value.ptr<float>(y);
+        uint8_t* valid = result.valid.ptr<uint8_t>(y);
+        for (int x = 0; x < size.width; ++x) {
+          float nearest = std::numeric_limits<float>::infinity();
+          if (o.depth_tolerance > 0.0) {
+            for (const WarpField& w : warps) {
+              const float d = w.depth.ptr<float>(y)[x];
+              if (d > 0.0f) nearest = std::min(nearest, d);
+            }
+            nearest *= tolerance;
+          }
+          std::fill(acc.begin(), acc.end(), 0.0f);
+          float weight_sum = 0.0f;
+          for (std::size_t k = 0; k < warps.size(); ++k) {
+            const WarpField& w = warps[k];
             const float d = w.depth.ptr<float>(y)[x];
-            if (d > 0.0f) nearest = std::min(nearest, d);
+            if (!(d > 0.0f) || d > nearest) continue;
+            float weight = o.weights.empty() ? 1.0f : float(o.weights[k]);
+            if (o.resolution_power > 0.0) {
+              weight *= float(std::pow(d / w.source_depth.ptr<float>(y)[x], o.resolution_power));
+            }
+            if (o.angle_power > 0.0) {
+              weight *=
+                  float(std::pow(std::max(w.cos_angle.ptr<float>(y)[x], 1e-6f), o.angle_power));
+            }
+            const cv::Vec2f uv = w.map.ptr<cv::Vec2f>(y)[x];
+            sample(k, uv[0], uv[1], weight, acc.data());
+            weight_sum += weight;
           }
-          nearest *= tolerance;
-        }
-        std::fill(acc.begin(), acc.end(), 0.0f);
-        float weight_sum = 0.0f;
-        for (std::size_t k = 0; k < warps.size(); ++k) {
-          const WarpField& w = warps[k];
-          const float d = w.depth.ptr<float>(y)[x];
-          if (!(d > 0.0f) || d > nearest) continue;
-          float weight = o.weights.empty() ? 1.0f : float(o.weights[k]);
-          if (o.resolution_power > 0.0) {
-            weight *= float(std::pow(d / w.source_depth.ptr<float>(y)[x], o.resolution_power));
+          valid[x] = weight_sum > 0.0f ? 255 : 0;
+          for (int c = 0; c < channels; ++c) {
+            out[x * channels + c] = weight_sum > 0.0f ? acc[std::size_t(c)] / weight_sum : nan;
           }
-          if (o.angle_power > 0.0) {
-            weight *= float(std::pow(std::max(w.cos_angle.ptr<float>(y)[x], 1e-6f), o.angle_power));
-          }
-          const cv::Vec2f uv = w.map.ptr<cv::Vec2f>(y)[x];
-          samplers[k](planes[k], uv[0], uv[1], weight, channels, acc.data());
-          weight_sum += weight;
-        }
-        valid[x] = weight_sum > 0.0f ? 255 : 0;
-        for (int c = 0; c < channels; ++c) {
-          out[x * channels + c] = weight_sum > 0.0f ? acc[std::size_t(c)] / weight_sum : nan;
         }
       }
-    }
-  });
+    });
+  };
+  auto typed = [&](auto tag) {
+    using T = decltype(tag);
+    blend([&](std::size_t k, float u, float v, float w, float* acc) {
+      AddSample<T>(planes[k], u, v, w, channels, acc);
+    });
+  };
+  bool uniform = true;
+  for (const cv::Mat& p : planes) uniform &= p.depth() == planes[0].depth();
+  switch (uniform ? planes[0].depth() : -1) {
+    case CV_8U:
+      typed(uint8_t{});
+      break;
+    case CV_16F:
+      typed(cv::float16_t{});
+      break;
+    case CV_32F:
+      typed(float{});
+      break;
+    default:
+      blend([&](std::size_t k, float u, float v, float w, float* acc) {
+        samplers[k](planes[k], u, v, w, channels, acc);
+      });
+  }
   result.covered = cv::countNonZero(result.valid);
   return result;
 }
