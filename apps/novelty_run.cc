@@ -31,6 +31,7 @@
 #include "maps/eval/attentional_selectivity.h"
 #include "maps/eval/false_color.h"
 #include "maps/eval/html_report.h"
+#include "maps/eval/write_rgb_image.h"
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/c_appearance_map.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
@@ -257,9 +258,7 @@ int main(int argc, char** argv) {
         const cv::Mat panel = eval::SideBySide(
             {f.rgb, p.expected_rgb, eval::FalseColor(p.surprise, 20.0),
              eval::FalseColor(p.uncertainty, 1e4, true), eval::FalseColor(d.difference, 150.0)});
-        cv::Mat bgr;
-        cv::cvtColor(panel, bgr, cv::COLOR_RGB2BGR);
-        cv::imwrite(dir + "/panels/" + stem + ".png", bgr);
+        eval::WriteRgbImage(dir + "/panels/" + stem + ".png", panel);
         panel_frames.push_back(f.index);
       }
       if (frames % 50 == 0) {

@@ -27,6 +27,7 @@
 #include <sstream>
 
 #include "maps/eval/psnr.h"
+#include "maps/eval/write_rgb_image.h"
 #include "maps/views/depth_mesh_warper.h"
 #include "maps/views/reference_view_store.h"
 #include "maps/views/view_blender.h"
@@ -74,12 +75,6 @@ std::pair<cv::Mat, cv::Mat> Synthesise(views::DepthMeshWarper& warper,
   return {rgb8, b.valid};
 }
 
-void WriteRgb(const std::string& path, const cv::Mat& rgb) {
-  cv::Mat bgr;
-  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-  if (!cv::imwrite(path, bgr)) throw std::runtime_error(path + ": cannot write image");
-}
-
 int FolderMode(const std::string& dir, const views::PinholeCamera& intrinsics, double depth_scale,
                int target, const std::string& sources, const std::string& out,
                views::DepthMeshWarper& warper, const views::BlendOptions& blend) {
@@ -97,7 +92,7 @@ int FolderMode(const std::string& dir, const views::PinholeCamera& intrinsics, d
   for (const auto& r : refs) ptrs.push_back(&r);
   std::vector<views::WarpField> warps;
   const auto [rgb8, valid] = Synthesise(warper, ptrs, cam, truth.T_world_cam, blend, warps);
-  WriteRgb(out, rgb8);
+  eval::WriteRgbImage(out, rgb8);
   std::printf("PSNR=%.2f coverage=%.4f\n", eval::Psnr(rgb8, truth.rgb, valid),
               double(cv::countNonZero(valid)) / (cam.width * cam.height));
   return 0;
@@ -154,7 +149,7 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
     const double psnr = eval::Psnr(rgb8, f.rgb, valid);
     char name[32];
     std::snprintf(name, sizeof name, "/%06d.png", f.index);
-    WriteRgb(out_dir + name, rgb8);
+    eval::WriteRgbImage(out_dir + name, rgb8);
     csv << f.index << "," << f.time - t_start << "," << ms << "," << refs.size() << "," << psnr
         << "," << double(cv::countNonZero(valid)) / (f.camera.width * f.camera.height) << "\n";
     psnr_sum += psnr;

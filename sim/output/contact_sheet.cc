@@ -1,6 +1,5 @@
 #include "sim/output/contact_sheet.h"
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -21,12 +20,6 @@ cv::Mat ContactSheet(const std::vector<std::pair<std::string, cv::Mat>>& tiles, 
                 cv::Scalar(235, 235, 235), 1, cv::LINE_AA);
   }
   return sheet;
-}
-
-void WriteRgbPng(const std::string& path, const cv::Mat& rgb) {
-  cv::Mat bgr;
-  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-  if (!cv::imwrite(path, bgr)) throw std::runtime_error(path + ": cannot write image");
 }
 
 }  // namespace novelty::sim

@@ -11,7 +11,4 @@ namespace novelty::sim {
 /// RGB tiles (all the same size) → one RGB image, `columns` wide, each tile labelled.
 cv::Mat ContactSheet(const std::vector<std::pair<std::string, cv::Mat>>& tiles, int columns);
 
-/// Writes an RGB image as PNG (converted to OpenCV's BGR); throws naming the path on failure.
-void WriteRgbPng(const std::string& path, const cv::Mat& rgb);
-
 }  // namespace novelty::sim

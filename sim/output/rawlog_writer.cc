@@ -1,5 +1,6 @@
 #include "sim/output/rawlog_writer.h"
 
+#include "maps/eval/write_rgb_image.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 #include <mrpt/io/CFileOutputStream.h>
@@ -61,11 +62,7 @@ void RawlogWriter::Close() {
 // Saves an RGB image as PNG under NAME_Images and returns a CImage that refers to it.
 static mrpt::img::CImage External(const std::string& images_dir, const cv::Mat& rgb,
                                   const std::string& file) {
-  cv::Mat bgr;
-  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-  if (!cv::imwrite(images_dir + "/" + file, bgr)) {
-    throw std::runtime_error(images_dir + "/" + file + ": cannot write image");
-  }
+  eval::WriteRgbImage(images_dir + "/" + file, rgb);
   mrpt::img::CImage img;
   img.setExternalStorage(file);
   return img;

@@ -1,0 +1,15 @@
+#include "maps/eval/write_rgb_image.h"
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+namespace novelty::eval {
+
+void WriteRgbImage(const std::string& path, const cv::Mat& rgb) {
+  cv::Mat bgr;
+  cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+  if (!cv::imwrite(path, bgr)) throw std::runtime_error(path + ": cannot write image");
+}
+
+}  // namespace novelty::eval
