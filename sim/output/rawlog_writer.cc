@@ -1,11 +1,11 @@
 #include "sim/output/rawlog_writer.h"
 
 #include "maps/eval/write_rgb_image.h"
+#include "sensors/rawlog/led_observation.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
-#include <mrpt/obs/CObservationBearingRange.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationStereoImages.h>
@@ -112,25 +112,8 @@ void RawlogWriter::WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth,
   ++count_;
 }
 
-void RawlogWriter::WriteTracker(double t, const LedMeasurement& leds, double noise_std) {
-  mrpt::obs::CObservationBearingRange obs;
-  obs.timestamp = Stamp(t);
-  obs.sensorLabel = "LED_TRACKER";
-  obs.minSensorDistance = 0.0f;
-  obs.maxSensorDistance = 20.0f;
-  obs.fieldOfView_yaw = float(2 * M_PI);
-  obs.fieldOfView_pitch = float(M_PI);
-  obs.sensor_std_range = float(noise_std);
-  for (int i = 0; i < 4; ++i) {
-    if (!leds[i]) continue;
-    const Eigen::Vector3d p = *leds[i];
-    mrpt::obs::CObservationBearingRange::TMeasurement m;
-    m.range = float(p.norm());
-    m.yaw = float(std::atan2(p.y(), p.x()));
-    m.pitch = float(std::atan2(-p.z(), std::hypot(p.x(), p.y())));  // MRPT: pitch = −elevation
-    m.landmarkID = i + 1;
-    obs.sensedData.push_back(m);
-  }
+void RawlogWriter::WriteTracker(double t, const sensors::LedMeasurement& leds, double noise_std) {
+  auto obs = sensors::MakeLedObservation(kEpoch + t, leds, noise_std);
   auto arch = mrpt::serialization::archiveFrom(impl_->file);
   arch << obs;
   ++count_;

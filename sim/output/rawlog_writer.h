@@ -46,7 +46,7 @@ class RawlogWriter {
   void WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth,
                  const views::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
                  const std::string& stem);
-  void WriteTracker(double t, const LedMeasurement& leds, double noise_std);
+  void WriteTracker(double t, const sensors::LedMeasurement& leds, double noise_std);
   void WriteOdometry(double t, const Odometry& odometry);
 
   /// Flushes and renames the temporary to the final name. Called by the destructor if needed,

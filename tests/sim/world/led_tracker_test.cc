@@ -23,9 +23,10 @@ TEST(LedTracker, NoiselessLedsFormThePlateFrame) {
   const LedMeasurement m = tracker.Measure(SomeHeadPose());
   for (const auto& led : m) ASSERT_TRUE(led.has_value());
   const Eigen::Vector3d l1 = *m[0], l2 = *m[1], l3 = *m[2], l4 = *m[3];
-  EXPECT_NEAR((l1 - l4).norm(), spec.plate_length, 1e-12);  // LED 4 → 1: plate x
-  EXPECT_NEAR((l3 - l4).norm(), spec.plate_width, 1e-12);   // LED 4 → 3: plate y
-  EXPECT_NEAR((l2 - l4).norm(), std::hypot(spec.plate_length, spec.plate_width), 1e-12);
+  const double a = 0.20, b = 0.12;          // the nominal XB3 plate
+  EXPECT_NEAR((l1 - l4).norm(), a, 1e-12);  // LED 4 → 1: plate x
+  EXPECT_NEAR((l3 - l4).norm(), b, 1e-12);  // LED 4 → 3: plate y
+  EXPECT_NEAR((l2 - l4).norm(), std::hypot(a, b), 1e-12);
   EXPECT_NEAR((l1 - l4).dot(l3 - l4), 0.0, 1e-12);  // rectangle
   // On a level head the plate is horizontal, 8 cm above the optical centre, x along the view.
   for (const auto& led : m) EXPECT_NEAR(led->z(), 1.18, 1e-12);
