@@ -82,18 +82,20 @@ void DecodeRgbd(const mrpt::obs::CObservation3DRangeScan& obs, cv::Mat& rgb, cv:
   if (!obs.hasRangeImage || !obs.hasIntensityImage) {
     throw std::runtime_error("no range or no intensity image");
   }
-  const cv::Mat bgr = obs.intensityImage.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
   const auto& range = obs.rangeImage;
-  if (bgr.empty() || bgr.type() != CV_8UC3 || bgr.rows != int(range.rows()) ||
-      bgr.cols != int(range.cols())) {
-    throw std::runtime_error("intensity image missing or not the range image's size");
+  rgb = RgbFromImage(obs.intensityImage);
+  if (rgb.rows != int(range.rows()) || rgb.cols != int(range.cols())) {
+    throw std::runtime_error("intensity image not the range image's size");
   }
-  cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-  depth.create(bgr.rows, bgr.cols, CV_32FC1);
-  for (int r = 0; r < bgr.rows; ++r) {
-    for (int c = 0; c < bgr.cols; ++c) depth.at<float>(r, c) = float(range(r, c)) * obs.rangeUnits;
+  depth.create(rgb.rows, rgb.cols, CV_32FC1);
+  for (int r = 0; r < rgb.rows; ++r) {
+    for (int c = 0; c < rgb.cols; ++c) depth.at<float>(r, c) = float(range(r, c)) * obs.rangeUnits;
   }
-  const mrpt::img::TCamera& k = obs.cameraParamsIntensity;
+  camera = FromMrpt(obs.cameraParamsIntensity);
+}
+
+views::PinholeCamera FromMrpt(const mrpt::img::TCamera& k) {
+  views::PinholeCamera camera;
   camera.width = int(k.ncols);
   camera.height = int(k.nrows);
   camera.fx = k.fx();
@@ -101,6 +103,20 @@ void DecodeRgbd(const mrpt::obs::CObservation3DRangeScan& obs, cv::Mat& rgb, cv:
   camera.cx = k.cx();
   camera.cy = k.cy();
   camera.Check();
+  return camera;
+}
+
+cv::Mat RgbFromImage(const mrpt::img::CImage& image) {
+  const cv::Mat bgr = image.asCvMat<cv::Mat>(mrpt::img::SHALLOW_COPY);
+  if (bgr.empty()) throw std::runtime_error("image missing or unreadable");
+  cv::Mat rgb;
+  if (bgr.type() == CV_8UC3)
+    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+  else if (bgr.type() == CV_8UC1)
+    cv::cvtColor(bgr, rgb, cv::COLOR_GRAY2RGB);
+  else
+    throw std::runtime_error("image is neither 8-bit colour nor grey");
+  return rgb;
 }
 
 }  // namespace novelty::sensors

@@ -28,6 +28,11 @@ Eigen::Isometry3d CameraOnRobot(const mrpt::obs::CObservation3DRangeScan& obs);
 void DecodeRgbd(const mrpt::obs::CObservation3DRangeScan& obs, cv::Mat& rgb, cv::Mat& depth,
                 views::PinholeCamera& camera);
 
+/// Intrinsics from MRPT's; throws std::invalid_argument for a bad camera (PinholeCamera::Check).
+views::PinholeCamera FromMrpt(const mrpt::img::TCamera& camera);
+/// A loaded CImage (colour or grey) as CV_8UC3 R G B; throws std::runtime_error if it is empty.
+cv::Mat RgbFromImage(const mrpt::img::CImage& image);
+
 Eigen::Isometry3d ToEigen(const mrpt::poses::CPose3D& pose);
 mrpt::poses::CPose3D ToMrpt(const Eigen::Isometry3d& pose);
 mrpt::img::TCamera ToMrpt(const views::PinholeCamera& camera);

@@ -200,6 +200,7 @@ RenderedFrame Render(const RayScene& scene, const Lighting& lighting,
   const CameraResponse response(options);
   const Eigen::Matrix3d R = T_world_cam.linear();
   const Eigen::Vector3d origin = T_world_cam.translation();
+  const int n = std::max(1, options.pixel_samples);
   auto render_rows = [&](int row_begin, int row_end) {
     for (int v = row_begin; v < row_end; ++v) {
       for (int u = 0; u < camera.width; ++u) {
@@ -209,7 +210,15 @@ RenderedFrame Render(const RayScene& scene, const Lighting& lighting,
         // Ray direction with camera-z = 1: the hit's ray parameter is the depth.
         const Eigen::Vector3d dir = R * camera.RayCam(u, v);
         RayHit first;
-        const Eigen::Vector3f radiance = tracer.Trace(origin, dir, 0, &first);
+        Eigen::Vector3f radiance = tracer.Trace(origin, dir, 0, &first);
+        if (n > 1) {  // box filter over the pixel: the mean of an n × n grid of rays
+          radiance.setZero();
+          for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+              radiance += tracer.Trace(
+                  origin, R * camera.RayCam(u + (j + 0.5) / n - 0.5, v + (i + 0.5) / n - 0.5), 0);
+          radiance /= float(n * n);
+        }
         cv::Vec3b& px = out.rgb.at<cv::Vec3b>(v, u);
         for (int k = 0; k < 3; ++k) {
           px[k] = ToByte(response(radiance[k]), options.noise_sigma, random);

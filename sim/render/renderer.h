@@ -23,6 +23,11 @@ struct RenderOptions {
   /// Seed of the sensor noise and the soft-shadow sampling; with `frame`, fixes every random draw.
   std::uint64_t seed = 0;
   std::uint64_t frame = 0;
+  /// n: the colour of a pixel is the mean radiance of an n × n grid of rays over the pixel's
+  /// area, as a real sensor integrates light over its pixels. 1 = one ray through the centre
+  /// (fast, but hard texture edges alias, which costs stereo matching sub-pixel precision).
+  /// Depth and ids always come from the centre ray.
+  int pixel_samples = 1;
   /// Shadow rays per area lamp (radius > 0); point lamps use one.
   int soft_shadow_samples = 16;
   /// Reflection/refraction depth for metal and glass.

@@ -209,8 +209,11 @@ class Parser {
         s_.render.exposure = l.Positive("exposure");
       else if (key == "shadow_samples")
         s_.render.soft_shadow_samples = PositiveInt(l, "shadow_samples");
+      else if (key == "pixel_samples")
+        s_.render.pixel_samples = PositiveInt(l, "pixel_samples");
       else
-        l.Fail("unknown sensor setting '" + key + "' (noise, gamma, exposure, shadow_samples)");
+        l.Fail("unknown sensor setting '" + key +
+               "' (noise, gamma, exposure, shadow_samples, pixel_samples)");
     }
   }
 
