@@ -2,9 +2,11 @@
 //
 //   novelty-run --rawlog DIR/<name>.rawlog --groundtruth DIR/groundtruth --out OUT
 //               [--config share/appearance.ini] [--frames N] [--panels-every K]
+//               [--poses groundtruth|rawlog]
 //
-// Plays the rawlog with ground-truth poses, updates the probabilistic appearance map and the
-// image-differencing baseline, and writes
+// Plays the rawlog with ground-truth poses (or, with --poses rawlog, the camera poses that
+// novelty-poses put into it; depth may come from novelty-depth), updates the probabilistic
+// appearance map and the image-differencing baseline, and writes
 //   OUT/panels/NNNNNN.png  camera | expected | surprise | uncertainty | differencing
 //   OUT/metrics.csv        frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff for every
 //                          changed object in view (regions from the ground-truth novelty masks:
@@ -23,6 +25,7 @@
 #include <map>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -201,6 +204,13 @@ int main(int argc, char** argv) {
   TCLAP::ValueArg<std::string> map_out(
       "", "map-out", "Save the appearance map here (default OUT/map.appearance_map)", false, "",
       "M", cmd);
+  std::vector<std::string> pose_sources = {"groundtruth", "rawlog"};
+  TCLAP::ValuesConstraint<std::string> allowed_poses(pose_sources);
+  TCLAP::ValueArg<std::string> pose_source(
+      "", "poses",
+      "Camera poses from the ground truth (default) or from the rawlog's pose observations "
+      "(novelty-poses); the ground truth still gives the evaluation masks",
+      false, "groundtruth", &allowed_poses, cmd);
   TCLAP::ValueArg<double> reduction("", "view-reduction",
                                     "Space reference views N times wider than configured: the "
                                     "thesis's R2 and R4 experiments (fig. 4.13) use 2 and 4",
@@ -230,15 +240,17 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     for (sensors::Frame f; reader.Next(f);) {
       if (max_frames.isSet() && frames >= max_frames.getValue()) break;
-      const auto pose = poses.find(f.index);
-      if (pose == poses.end()) {
+      std::optional<Eigen::Isometry3d> pose = f.pose;
+      if (pose_source.getValue() == "groundtruth") {
+        const auto it = poses.find(f.index);
+        pose = it == poses.end() ? std::nullopt : std::optional<Eigen::Isometry3d>(it->second);
+      }
+      if (!pose) {
         ++no_pose;
         continue;
       }
-      const appearance::AppearanceProducts& p =
-          map.InsertFrame(f.rgb, f.depth, f.camera, pose->second);
-      const appearance::DifferencingProducts d =
-          baseline.Insert(f.rgb, f.depth, f.camera, pose->second);
+      const appearance::AppearanceProducts& p = map.InsertFrame(f.rgb, f.depth, f.camera, *pose);
+      const appearance::DifferencingProducts d = baseline.Insert(f.rgb, f.depth, f.camera, *pose);
       ++frames;
       const std::string stem = Stem(f.index);
       const cv::Mat novelty = cv::imread(gt + "/novelty/" + stem + ".png", cv::IMREAD_UNCHANGED);

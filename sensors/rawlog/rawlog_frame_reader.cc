@@ -1,5 +1,6 @@
 #include "sensors/rawlog/rawlog_frame_reader.h"
 
+#include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 #include <mrpt/img/CImage.h>
@@ -19,6 +20,7 @@ class RawlogFrameReader::Impl {
  public:
   explicit Impl(const std::string& path) : file(path) {}
   mrpt::io::CFileGZInputStream file;
+  mrpt::obs::CObservationRobotPose::Ptr last_pose;  // the latest camera pose seen
 };
 
 RawlogFrameReader::RawlogFrameReader(const std::string& path) : path_(path) {
@@ -47,6 +49,10 @@ bool RawlogFrameReader::Next(Frame& frame) {
                                ": " + e.what());
     }
     ++objects_;
+    if (auto pose = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obj)) {
+      impl_->last_pose = pose;
+      continue;
+    }
     auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation3DRangeScan>(obj);
     if (!scan) continue;
     const int index = ++frames_;
@@ -57,6 +63,12 @@ bool RawlogFrameReader::Next(Frame& frame) {
       frame.index = index;
       frame.time = mrpt::Clock::toDouble(scan->timestamp);
       frame.label = scan->sensorLabel;
+      frame.pose.reset();
+      frame.pose_source.clear();
+      if (const auto& p = impl_->last_pose; p && p->timestamp == scan->timestamp) {
+        frame.pose = RobotPoseOf(*p) * CameraOnRobot(*scan);
+        frame.pose_source = p->sensorLabel;
+      }
       scan->unload();
       return true;
     } catch (const std::exception& e) {

@@ -2,8 +2,9 @@
 // tools read): each CObservation3DRangeScan with an intensity image becomes a Frame with RGB,
 // depth in metres and intrinsics. Externally stored images are looked up in MRPT's
 // `<name>_Images/` folder beside the rawlog. Poses come separately (ground truth, tracker).
-// Observations of other kinds are passed over; a range scan that cannot be loaded or is
-// inconsistent is skipped and counted, with the reason kept for the log.
+// A CObservationRobotPose with the same timestamp before a frame gives its camera pose
+// (camera_pose_observation.h). Observations of other kinds are passed over; a range scan that
+// cannot be loaded or is inconsistent is skipped and counted, with the reason kept for the log.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -25,6 +26,10 @@ struct Frame {
   cv::Mat rgb;        ///< CV_8UC3 R G B
   cv::Mat depth;      ///< CV_32FC1 metres along +Z, 0 = unknown
   views::PinholeCamera camera;
+  /// T_world_cam from a CObservationRobotPose with the frame's timestamp just before it
+  /// (camera_pose_observation.h: novelty-poses), if there is one; its label in pose_source.
+  std::optional<Eigen::Isometry3d> pose;
+  std::string pose_source;
 };
 
 class RawlogFrameReader {

@@ -1,15 +1,12 @@
 #include "sim/output/rawlog_writer.h"
 
-#include "maps/eval/write_rgb_image.h"
 #include "sensors/rawlog/led_observation.h"
+#include "sensors/rawlog/rawlog_output.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
-#include <mrpt/io/CFileOutputStream.h>
-#include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CObservationStereoImages.h>
-#include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
 #include <filesystem>
@@ -29,43 +26,13 @@ mrpt::Clock::time_point Stamp(double t) {
 
 }  // namespace
 
-class RawlogWriter::Impl {
- public:
-  explicit Impl(const std::string& path) : file(path) {
-    if (!file.fileOpenCorrectly()) throw std::runtime_error(path + ": cannot open for writing");
-  }
-  mrpt::io::CFileOutputStream file;
-};
-
 RawlogWriter::RawlogWriter(const std::string& dir, const std::string& name)
-    : final_path_(dir + "/" + name + ".rawlog"),
-      temp_path_(final_path_ + ".tmp"),
-      images_dir_(dir + "/" + name + "_Images") {
-  std::filesystem::create_directories(images_dir_);
-  impl_ = std::make_unique<Impl>(temp_path_);
-}
+    : out_(std::make_unique<sensors::RawlogOutput>(dir + "/" + name + ".rawlog")) {}
 
-RawlogWriter::~RawlogWriter() {
-  try {
-    Close();
-  } catch (...) {  // a destructor must not throw; Close() reports errors when called directly
-  }
-}
+RawlogWriter::~RawlogWriter() = default;
 
 void RawlogWriter::Close() {
-  if (!impl_) return;
-  impl_->file.close();
-  impl_.reset();
-  std::filesystem::rename(temp_path_, final_path_);
-}
-
-// Saves an RGB image as PNG under NAME_Images and returns a CImage that refers to it.
-static mrpt::img::CImage External(const std::string& images_dir, const cv::Mat& rgb,
-                                  const std::string& file) {
-  eval::WriteRgbImage(images_dir + "/" + file, rgb);
-  mrpt::img::CImage img;
-  img.setExternalStorage(file);
-  return img;
+  out_->Close();
 }
 
 void RawlogWriter::WriteImage(double t, const std::string& label, const cv::Mat& rgb,
@@ -76,10 +43,8 @@ void RawlogWriter::WriteImage(double t, const std::string& label, const cv::Mat&
   obs.sensorLabel = label;
   obs.cameraParams = sensors::ToMrpt(camera);
   obs.cameraPose = sensors::ToMrpt(robot_from_camera);
-  obs.image = External(images_dir_, rgb, stem + ".png");
-  auto arch = mrpt::serialization::archiveFrom(impl_->file);
-  arch << obs;
-  ++count_;
+  obs.image = out_->ExternalImage(rgb, stem + ".png");
+  out_->Write(obs);
 }
 
 void RawlogWriter::WriteStereo(double t, const cv::Mat& left, const cv::Mat& right,
@@ -92,31 +57,20 @@ void RawlogWriter::WriteStereo(double t, const cv::Mat& left, const cv::Mat& rig
   obs.leftCamera = obs.rightCamera = sensors::ToMrpt(camera);
   obs.cameraPose = mrpt::poses::CPose3DQuat(sensors::ToMrpt(robot_from_left));
   obs.rightCameraPose = mrpt::poses::CPose3DQuat(mrpt::poses::CPose3D(baseline, 0, 0, 0, 0, 0));
-  obs.imageLeft = External(images_dir_, left, stem + "_left.png");
-  obs.imageRight = External(images_dir_, right, stem + "_right.png");
+  obs.imageLeft = out_->ExternalImage(left, stem + "_left.png");
+  obs.imageRight = out_->ExternalImage(right, stem + "_right.png");
   obs.hasImageRight = true;
-  auto arch = mrpt::serialization::archiveFrom(impl_->file);
-  arch << obs;
-  ++count_;
+  out_->Write(obs);
 }
 
 void RawlogWriter::WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth,
                              const views::PinholeCamera& camera,
                              const Eigen::Isometry3d& robot_from_camera, const std::string& stem) {
-  mrpt::obs::CObservation3DRangeScan obs =
-      sensors::MakeRgbdObservation(kEpoch + t, rgb, depth, camera, robot_from_camera);
-  obs.rangeImage_convertToExternalStorage(stem + "_depth.bin", images_dir_ + "/");
-  obs.intensityImage = External(images_dir_, rgb, stem + ".png");  // in place of the in-memory one
-  auto arch = mrpt::serialization::archiveFrom(impl_->file);
-  arch << obs;
-  ++count_;
+  out_->WriteRgbd(kEpoch + t, rgb, depth, camera, robot_from_camera, stem);
 }
 
 void RawlogWriter::WriteTracker(double t, const sensors::LedMeasurement& leds, double noise_std) {
-  auto obs = sensors::MakeLedObservation(kEpoch + t, leds, noise_std);
-  auto arch = mrpt::serialization::archiveFrom(impl_->file);
-  arch << obs;
-  ++count_;
+  out_->Write(sensors::MakeLedObservation(kEpoch + t, leds, noise_std));
 }
 
 void RawlogWriter::WriteOdometry(double t, const Odometry& o) {
@@ -129,9 +83,7 @@ void RawlogWriter::WriteOdometry(double t, const Odometry& o) {
   obs.encoderRightTicks = static_cast<int32_t>(o.right_ticks);
   obs.hasVelocities = true;
   obs.velocityLocal = mrpt::math::TTwist2D(o.v, 0.0, o.w);
-  auto arch = mrpt::serialization::archiveFrom(impl_->file);
-  arch << obs;
-  ++count_;
+  out_->Write(obs);
 }
 
 }  // namespace novelty::sim

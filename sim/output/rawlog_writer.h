@@ -1,6 +1,6 @@
-// Writes an MRPT rawlog in the "observations" format (a plain sequence of serialized
-// CObservation objects) with images stored externally in MRPT's `<name>_Images/` folder beside
-// the rawlog, so `rawlog-edit`, `RawLogViewer` and MRPT's CRawlog read it.
+// Writes a scenario's sensors into an MRPT rawlog (sensors/rawlog/rawlog_output.h: observations
+// format, images external in `<name>_Images/`, atomic), so `rawlog-edit`, `RawLogViewer` and
+// MRPT's CRawlog read it.
 //
 // What each sensor becomes:
 //   camera (mono, trinocular)  CObservationImage; cameraPose = camera on the robot, camera frame
@@ -27,6 +27,8 @@
 #include "sim/world/led_tracker.h"
 #include "sim/world/pioneer3dx.h"
 
+#include "sensors/rawlog/rawlog_output.h"
+
 namespace novelty::sim {
 
 class RawlogWriter {
@@ -52,15 +54,12 @@ class RawlogWriter {
   /// Flushes and renames the temporary to the final name. Called by the destructor if needed,
   /// but call it to get errors as exceptions.
   void Close();
-  std::string rawlog_path() const { return final_path_; }
-  std::string images_dir() const { return images_dir_; }
-  int observations() const { return count_; }
+  std::string rawlog_path() const { return out_->path(); }
+  std::string images_dir() const { return out_->images_dir(); }
+  int observations() const { return out_->objects(); }
 
  private:
-  class Impl;
-  std::unique_ptr<Impl> impl_;
-  std::string final_path_, temp_path_, images_dir_;
-  int count_ = 0;
+  std::unique_ptr<sensors::RawlogOutput> out_;
 };
 
 }  // namespace novelty::sim
