@@ -10,8 +10,12 @@
 // the timestamps of the camera observations. OUT is IN with a CObservationRobotPose
 // "POSE_TRACKER" before every camera observation that got a pose
 // (sensors/rawlog/camera_pose_observation.h); novelty-run --poses rawlog uses them.
+// --source visual: visual localization on the rig's stereo or trinocular images (KLT features,
+// stereo triangulation, PnP + RANSAC, re-localization against keyframes; sensors/localization):
+// the first frame is the origin (as the thesis's VGPS) unless --groundtruth gives its true pose.
+// Poses go to the observations of the rig frames (same timestamps). Run it before
+// novelty-depth, which copies the pose observations through to its RGB-D scans.
 // With --groundtruth the pose error against novelty-sim's poses.csv is printed.
-// --source visual (KLT + stereo visual localization) is not implemented yet and says so.
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationImage.h>
@@ -23,13 +27,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <sstream>
 
+#include "sensors/localization/visual_odometry.h"
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/led_observation.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rawlog_output.h"
 #include "sensors/rawlog/rgbd_observation.h"
+#include "sensors/rawlog/rig_frame_reader.h"
 #include "sensors/tracker/led_pose_estimator.h"
 #include "sensors/tracker/pose_trajectory.h"
 
@@ -76,6 +84,30 @@ sensors::PoseTrajectory TrackerTrajectory(const std::string& rawlog, int* reject
   return sensors::PoseTrajectory(std::move(poses));
 }
 
+// Camera poses of the rig frames by visual localization, keyed by timestamp.
+std::map<double, Eigen::Isometry3d> VisualPoses(const std::string& rawlog,
+                                                const std::optional<Eigen::Isometry3d>& first,
+                                                int* lost) {
+  sensors::RigFrameReader reader(rawlog);
+  std::optional<sensors::VisualOdometry> vo;
+  std::map<double, Eigen::Isometry3d> poses;
+  int frames = 0;
+  for (sensors::RigFrame f; reader.Next(f, nullptr);) {
+    if (!vo)
+      vo.emplace(sensors::VisualOdometryOptions{}, first.value_or(Eigen::Isometry3d::Identity()));
+    sensors::StereoPair pair{f.time,       f.images[0],  f.images[1],
+                             f.cameras[0], f.cameras[1], f.ref_from_camera[1]};
+    std::string why;
+    if (const auto r = vo->Track(pair, &why))
+      poses[f.time] = r->world_from_camera;
+    else
+      ++*lost, std::fprintf(stderr, "\n[novelty-poses] frame %d: %s\n", f.index, why.c_str());
+    if (++frames % 10 == 0) std::fprintf(stderr, "\r[novelty-poses] frame %d   ", frames);
+  }
+  if (frames == 0) throw std::runtime_error(rawlog + ": no stereo or trinocular frames");
+  return poses;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -93,17 +125,33 @@ int main(int argc, char** argv) {
     TCLAP::ValueArg<std::string> truth("", "groundtruth", "Report errors against this folder",
                                        false, "", "DIR", cmd);
     cmd.parse(argc, argv);
-    if (source.getValue() == "visual")
-      throw std::runtime_error(
-          "--source visual: visual localization (KLT + stereo) is not implemented yet; use "
-          "--source tracker");
     if (std::filesystem::absolute(in.getValue()) == std::filesystem::absolute(out.getValue()))
       throw std::invalid_argument("--out must differ from the input rawlog");
 
+    const bool visual = source.getValue() == "visual";
     int rejected = 0;
-    const sensors::PoseTrajectory trajectory = TrackerTrajectory(in.getValue(), &rejected);
+    std::optional<sensors::PoseTrajectory> trajectory;
+    std::map<double, Eigen::Isometry3d> visual_poses;
+    if (visual) {
+      std::optional<Eigen::Isometry3d> first;
+      if (truth.isSet()) {
+        const auto gt = sensors::LoadGroundTruthPoses(truth.getValue() + "/poses.csv");
+        if (!gt.empty()) first = gt.begin()->second;
+      }
+      visual_poses = VisualPoses(in.getValue(), first, &rejected);
+    } else {
+      trajectory = TrackerTrajectory(in.getValue(), &rejected);
+    }
     sensors::PoseInterpolationOptions interpolation;
     interpolation.smoothing_half_window = smoothing.getValue();
+    auto pose_at = [&](double t, std::string* why) -> std::optional<Eigen::Isometry3d> {
+      if (!visual) return trajectory->At(t, interpolation, why);
+      const auto it = visual_poses.find(t);
+      if (it != visual_poses.end()) return it->second;
+      *why = "no visual pose at " + std::to_string(t) + " s";
+      return std::nullopt;
+    };
+    const std::string label = visual ? "POSE_VISUAL" : "POSE_TRACKER";
 
     mrpt::io::CFileGZInputStream file(in.getValue());
     if (!file.fileOpenCorrectly()) throw std::runtime_error(in.getValue() + ": cannot open");
@@ -127,9 +175,8 @@ int main(int argc, char** argv) {
         const auto& o = dynamic_cast<const mrpt::obs::CObservation&>(*obj);
         std::string why;
         const double t = mrpt::Clock::toDouble(o.timestamp);
-        if (const auto pose = trajectory.At(t, interpolation, &why)) {
-          output.Write(
-              sensors::MakeCameraPoseObservation(t, *pose, *mount, "POSE_TRACKER", 0.001, 0.003));
+        if (const auto pose = pose_at(t, &why)) {
+          output.Write(sensors::MakeCameraPoseObservation(t, *pose, *mount, label, 0.001, 0.003));
           ++posed;
         } else {
           reasons.push_back(why);
@@ -138,29 +185,39 @@ int main(int argc, char** argv) {
       output.Write(*obj);
     }
     output.Close();
-    std::printf("%d of %d camera observations got a pose (%d tracker samples rejected) → %s\n",
-                posed, cameras, rejected, output.path().c_str());
+    std::printf("%d of %d camera observations got a pose (%d %s rejected) → %s\n", posed, cameras,
+                rejected, visual ? "frames" : "tracker samples", output.path().c_str());
     for (size_t i = 0; i < std::min<size_t>(reasons.size(), 5); ++i)
       std::printf("  no pose: %s\n", reasons[i].c_str());
     if (reasons.size() > 5) std::printf("  … and %zu more\n", reasons.size() - 5);
 
-    if (truth.isSet()) {  // pose error per RGB-D frame against novelty-sim's ground truth
+    if (truth.isSet()) {  // pose error per frame against novelty-sim's ground truth
       const auto gt = sensors::LoadGroundTruthPoses(truth.getValue() + "/poses.csv");
-      sensors::RawlogFrameReader reader(output.path());
+      std::vector<std::pair<int, Eigen::Isometry3d>> estimated;  // frame index, pose
+      if (visual) {  // rig frames in time order are frames 1, 2, … (none are lost here)
+        int index = 0;
+        for (const auto& [t, pose] : visual_poses) estimated.emplace_back(++index, pose);
+        if (rejected > 0) estimated.clear();  // indices would not match; skip the report
+      } else {
+        sensors::RawlogFrameReader reader(output.path());
+        for (sensors::Frame f; reader.Next(f);)
+          if (f.pose) estimated.emplace_back(f.index, *f.pose);
+      }
       std::vector<double> angle, shift;
-      for (sensors::Frame f; reader.Next(f);) {
-        const auto g = gt.find(f.index);
-        if (!f.pose || g == gt.end()) continue;
-        angle.push_back(
-            Eigen::AngleAxisd(f.pose->linear().transpose() * g->second.linear()).angle() * 180 /
-            M_PI);
-        shift.push_back((f.pose->translation() - g->second.translation()).norm() * 1000);
+      for (const auto& [index, pose] : estimated) {
+        const auto g = gt.find(index);
+        if (g == gt.end()) continue;
+        angle.push_back(Eigen::AngleAxisd(pose.linear().transpose() * g->second.linear()).angle() *
+                        180 / M_PI);
+        shift.push_back((pose.translation() - g->second.translation()).norm() * 1000);
       }
       if (!angle.empty()) {
+        std::printf("last frame %d: %.3f°, %.1f mm off\n", estimated.back().first, angle.back(),
+                    shift.back());
         std::sort(angle.begin(), angle.end());
         std::sort(shift.begin(), shift.end());
         std::printf(
-            "error against ground truth over %zu RGB-D frames: rotation median %.3f° "
+            "error against ground truth over %zu frames: rotation median %.3f° "
             "(95 %%: %.3f°), translation median %.2f mm (95 %%: %.2f mm)\n",
             angle.size(), angle[angle.size() / 2], angle[angle.size() * 95 / 100],
             shift[shift.size() / 2], shift[shift.size() * 95 / 100]);

@@ -1,0 +1,363 @@
+#include "sensors/localization/visual_odometry.h"
+
+#include <algorithm>
+#include <map>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core/eigen.hpp>
+#include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/video/tracking.hpp>
+
+#include "sensors/tracker/rigid_fit.h"
+
+namespace novelty::sensors {
+namespace {
+
+struct Feature {
+  cv::Point2f px;         // in the latest reference image
+  Eigen::Vector3d world;  // triangulated when new, then kept
+  int anchor_frame;       // the frame it was detected in
+  cv::Point2f anchor_px;  // and where
+};
+
+struct Keyframe {
+  std::vector<Eigen::Vector3d> world;
+  cv::Mat descriptors;  // ORB, one row per world point
+};
+
+cv::Mat Grey(const cv::Mat& image) {
+  if (image.channels() == 1) return image;
+  cv::Mat grey;
+  cv::cvtColor(image, grey, cv::COLOR_RGB2GRAY);
+  return grey;
+}
+
+double Tukey(double r, double c) {
+  if (r >= c) return 0.0;
+  const double u = r / c;
+  return (1 - u * u) * (1 - u * u);
+}
+
+}  // namespace
+
+class VisualOdometry::Impl {
+ public:
+  Impl(const VisualOdometryOptions& o, const Eigen::Isometry3d& initial)
+      : options(o), pose(initial), orb(cv::ORB::create(500)) {}
+
+  VisualOdometryOptions options;
+  Eigen::Isometry3d pose;
+  bool started = false;
+  int frame = 0;
+  cv::Mat previous_grey;
+  std::vector<Feature> features;
+  std::map<int, cv::Mat> anchors;  // grey images features were detected in, while in use
+  std::vector<Keyframe> keyframes;
+  cv::Ptr<cv::ORB> orb;
+
+  // Focal length × baseline: converts a depth error at depth Z into disparity pixels (·/Z²).
+  static double FocalBaseline(const StereoPair& p) {
+    return std::abs(p.reference_camera.fx) * p.reference_from_other.translation().norm();
+  }
+
+  void TrackFeatures(const cv::Mat& grey) {
+    if (features.empty()) return;
+    std::vector<cv::Point2f> from, to, back;
+    for (const Feature& f : features) from.push_back(f.px);
+    std::vector<unsigned char> status, status_back;
+    std::vector<float> err;
+    const cv::Size win(options.stereo.klt_window, options.stereo.klt_window);
+    cv::calcOpticalFlowPyrLK(previous_grey, grey, from, to, status, err, win, 3);
+    cv::calcOpticalFlowPyrLK(grey, previous_grey, to, back, status_back, err, win, 3);
+    std::vector<Feature> kept;
+    for (size_t i = 0; i < features.size(); ++i) {
+      if (!status[i] || !status_back[i] || cv::norm(back[i] - from[i]) > options.max_track_error)
+        continue;
+      if (to[i].x < 0 || to[i].y < 0 || to[i].x > grey.cols - 1 || to[i].y > grey.rows - 1)
+        continue;
+      kept.push_back({to[i], features[i].world, features[i].anchor_frame, features[i].anchor_px});
+    }
+    features.swap(kept);
+    RefineAgainstAnchors(grey);
+  }
+
+  // Frame-to-frame KLT drifts by a fraction of a pixel per frame (its template is the last
+  // image). Re-aligning each feature with its appearance where it was detected removes the
+  // drift; a feature whose appearance no longer matches is dropped.
+  void RefineAgainstAnchors(const cv::Mat& grey) {
+    std::map<int, std::vector<size_t>> by_anchor;
+    for (size_t i = 0; i < features.size(); ++i) by_anchor[features[i].anchor_frame].push_back(i);
+    std::vector<bool> keep(features.size(), true);
+    const cv::Size win(options.stereo.klt_window, options.stereo.klt_window);
+    for (const auto& [frame_id, members] : by_anchor) {
+      std::vector<cv::Point2f> from, to;
+      for (size_t i : members) from.push_back(features[i].anchor_px), to.push_back(features[i].px);
+      std::vector<unsigned char> status;
+      std::vector<float> err;
+      cv::calcOpticalFlowPyrLK(
+          anchors.at(frame_id), grey, from, to, status, err, win, 1,
+          cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 30, 0.01),
+          cv::OPTFLOW_USE_INITIAL_FLOW);
+      for (size_t j = 0; j < members.size(); ++j) {
+        Feature& f = features[members[j]];
+        if (!status[j] || cv::norm(to[j] - f.px) > options.max_anchor_shift) {
+          keep[members[j]] = false;
+          continue;
+        }
+        f.px = to[j];
+      }
+    }
+    std::vector<Feature> kept;
+    for (size_t i = 0; i < features.size(); ++i)
+      if (keep[i]) kept.push_back(features[i]);
+    features.swap(kept);
+    // Forget anchor images no feature refers to any more.
+    for (auto it = anchors.begin(); it != anchors.end();) {
+      const bool used = std::any_of(features.begin(), features.end(),
+                                    [&](const Feature& f) { return f.anchor_frame == it->first; });
+      it = used ? std::next(it) : anchors.erase(it);
+    }
+  }
+
+  // Inliers and a first pose by PnP + RANSAC on the reprojections (robust against the heavy tail
+  // of "corners" at occlusion boundaries that no 3D point explains); nullopt if it fails.
+  std::optional<Eigen::Isometry3d> RansacPose(const std::vector<Eigen::Vector3d>& world,
+                                              const std::vector<cv::Point2f>& image,
+                                              const views::PinholeCamera& c,
+                                              std::vector<bool>& inlier) {
+    std::vector<cv::Point3f> object;
+    for (const auto& w : world) object.emplace_back(float(w.x()), float(w.y()), float(w.z()));
+    const cv::Mat k = (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
+    const Eigen::Isometry3d guess = pose.inverse();
+    cv::Mat r, rvec, tvec;
+    cv::Mat re(3, 3, CV_64F), te(3, 1, CV_64F);
+    for (int i = 0; i < 3; ++i) {
+      te.at<double>(i) = guess.translation()(i);
+      for (int j = 0; j < 3; ++j) re.at<double>(i, j) = guess.linear()(i, j);
+    }
+    cv::Rodrigues(re, rvec);
+    tvec = te;
+    std::vector<int> inliers;
+    if (!cv::solvePnPRansac(object, image, k, cv::noArray(), rvec, tvec, true, 100,
+                            float(options.ransac_reprojection_px), 0.999, inliers))
+      return std::nullopt;
+    inlier.assign(world.size(), false);
+    for (int i : inliers) inlier[i] = true;
+    if (options.pose_from_reprojection) {  // refine on the inliers by Levenberg–Marquardt
+      std::vector<cv::Point3f> o2;
+      std::vector<cv::Point2f> i2;
+      for (int i : inliers) o2.push_back(object[i]), i2.push_back(image[i]);
+      cv::solvePnPRefineLM(o2, i2, k, cv::noArray(), rvec, tvec);
+    }
+    cv::Rodrigues(rvec, r);
+    Eigen::Isometry3d cam_from_world = Eigen::Isometry3d::Identity();
+    for (int i = 0; i < 3; ++i) {
+      cam_from_world.translation()(i) = tvec.at<double>(i);
+      for (int j = 0; j < 3; ++j) cam_from_world.linear()(i, j) = r.at<double>(i, j);
+    }
+    return cam_from_world.inverse();
+  }
+
+  // eq. 3.1–3.4, iterated from `start`: Tukey weights from the residuals of the previous fit,
+  // zero for RANSAC outliers.
+  std::optional<Eigen::Isometry3d> FitPose(const std::vector<Eigen::Vector3d>& world,
+                                           const std::vector<Eigen::Vector3d>& camera,
+                                           const std::vector<bool>& inlier, double fb,
+                                           const Eigen::Isometry3d& start,
+                                           std::vector<double>& weights) {
+    weights.assign(world.size(), 1.0);
+    Eigen::Isometry3d cam_from_world = start.inverse();
+    for (int it = 0; it < options.fit_iterations; ++it) {
+      for (size_t i = 0; i < world.size(); ++i) {
+        const double z = std::max(0.1, camera[i].z());
+        const double residual_px = (camera[i] - cam_from_world * world[i]).norm() * fb / (z * z);
+        weights[i] = inlier[i] ? Tukey(residual_px, options.outlier_threshold_px) : 0.0;
+      }
+      std::string why;
+      const auto fit = FitRigid(world, camera, weights, &why);
+      if (!fit) return std::nullopt;
+      cam_from_world = fit->transform;
+    }
+    return cam_from_world.inverse();
+  }
+
+  void DetectNew(const StereoPair& pair, const cv::Mat& grey, const cv::Mat& other_grey) {
+    const int cw = grey.cols / options.grid_columns, ch = grey.rows / options.grid_rows;
+    std::vector<int> count(options.grid_columns * options.grid_rows, 0);
+    cv::Mat mask(grey.size(), CV_8U, cv::Scalar(255));
+    for (const Feature& f : features) {
+      const int cx = std::min(options.grid_columns - 1, int(f.px.x) / cw);
+      const int cy = std::min(options.grid_rows - 1, int(f.px.y) / ch);
+      ++count[cy * options.grid_columns + cx];
+      cv::circle(mask, f.px, 6, cv::Scalar(0), -1);
+    }
+    std::vector<cv::Point2f> candidates;
+    for (int cy = 0; cy < options.grid_rows; ++cy)
+      for (int cx = 0; cx < options.grid_columns; ++cx) {
+        const int want = options.features_per_cell - count[cy * options.grid_columns + cx];
+        if (want <= 0) continue;
+        const cv::Rect cell(cx * cw, cy * ch, cw, ch);
+        std::vector<cv::Point2f> corners;
+        cv::goodFeaturesToTrack(grey(cell), corners, want, 0.01, 6, mask(cell));
+        for (const cv::Point2f& c : corners) candidates.push_back(c + cv::Point2f(cell.tl()));
+      }
+    if (candidates.empty()) return;
+    cv::cornerSubPix(grey, candidates, cv::Size(4, 4), cv::Size(-1, -1),
+                     cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 20, 0.01));
+    const auto points = TriangulateFeatures(pair, grey, other_grey, candidates, options.stereo);
+    bool any = false;
+    for (size_t i = 0; i < candidates.size(); ++i)
+      if (points[i]) {
+        features.push_back({candidates[i], pose * *points[i], frame, candidates[i]});
+        any = true;
+      }
+    if (any) anchors[frame] = grey;
+  }
+
+  // A keyframe: ORB features of the reference image with their world points (triangulated now).
+  void AddKeyframe(const StereoPair& pair, const cv::Mat& grey, const cv::Mat& other_grey) {
+    std::vector<cv::KeyPoint> keypoints;
+    cv::Mat descriptors;
+    orb->detectAndCompute(grey, cv::noArray(), keypoints, descriptors);
+    std::vector<cv::Point2f> px;
+    for (const cv::KeyPoint& k : keypoints) px.push_back(k.pt);
+    const auto points = TriangulateFeatures(pair, grey, other_grey, px, options.stereo);
+    Keyframe k;
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (!points[i]) continue;
+      k.world.push_back(pose * *points[i]);
+      k.descriptors.push_back(descriptors.row(int(i)));
+    }
+    if (int(k.world.size()) < options.min_inliers) return;
+    keyframes.push_back(std::move(k));
+    if (keyframes.size() > options.max_keyframes) keyframes.erase(keyframes.begin());
+  }
+
+  // ORB matches against every keyframe, PnP + RANSAC on the best: the pose after tracking loss.
+  std::optional<Eigen::Isometry3d> Relocalize(const StereoPair& pair, const cv::Mat& grey) {
+    std::vector<cv::KeyPoint> keypoints;
+    cv::Mat descriptors;
+    orb->detectAndCompute(grey, cv::noArray(), keypoints, descriptors);
+    if (keypoints.size() < 8) return std::nullopt;
+    cv::BFMatcher matcher(cv::NORM_HAMMING);
+    std::optional<Eigen::Isometry3d> best;
+    int best_inliers = options.min_inliers - 1;
+    const views::PinholeCamera& c = pair.reference_camera;
+    const cv::Mat k = (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
+    for (const Keyframe& kf : keyframes) {
+      std::vector<std::vector<cv::DMatch>> knn;
+      matcher.knnMatch(descriptors, kf.descriptors, knn, 2);
+      std::vector<cv::Point3f> object;
+      std::vector<cv::Point2f> image;
+      for (const auto& m : knn) {
+        if (m.size() < 2 || m[0].distance > 0.8f * m[1].distance) continue;
+        const Eigen::Vector3d& w = kf.world[m[0].trainIdx];
+        object.emplace_back(float(w.x()), float(w.y()), float(w.z()));
+        image.push_back(keypoints[m[0].queryIdx].pt);
+      }
+      if (int(object.size()) < options.min_inliers) continue;
+      cv::Mat rvec, tvec;
+      std::vector<int> inliers;
+      if (!cv::solvePnPRansac(object, image, k, cv::noArray(), rvec, tvec, false, 200, 2.0, 0.99,
+                              inliers))
+        continue;
+      if (int(inliers.size()) <= best_inliers) continue;
+      best_inliers = int(inliers.size());
+      cv::Mat r;
+      cv::Rodrigues(rvec, r);
+      Eigen::Matrix3d re;
+      Eigen::Vector3d te;
+      cv::cv2eigen(r, re);
+      cv::cv2eigen(tvec, te);
+      Eigen::Isometry3d cam_from_world = Eigen::Isometry3d::Identity();
+      cam_from_world.linear() = re;
+      cam_from_world.translation() = te;
+      best = cam_from_world.inverse();
+    }
+    return best;
+  }
+};
+
+VisualOdometry::VisualOdometry(const VisualOdometryOptions& options,
+                               const Eigen::Isometry3d& initial_pose)
+    : impl_(std::make_unique<Impl>(options, initial_pose)) {}
+
+VisualOdometry::~VisualOdometry() = default;
+
+std::optional<VisualOdometryResult> VisualOdometry::Track(const StereoPair& pair,
+                                                          std::string* why) {
+  Impl& s = *impl_;
+  auto fail = [&](const std::string& reason) -> std::optional<VisualOdometryResult> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
+  if (pair.reference.empty() || pair.reference.size() != pair.other.size())
+    return fail("stereo images missing or of different sizes");
+  const cv::Mat grey = Grey(pair.reference), other_grey = Grey(pair.other);
+  const double fb = Impl::FocalBaseline(pair);
+  VisualOdometryResult result;
+  ++s.frame;
+  if (!s.started) {
+    s.DetectNew(pair, grey, other_grey);
+    if (int(s.features.size()) < s.options.min_inliers)
+      return fail("only " + std::to_string(s.features.size()) + " features in the first frame");
+    s.started = true;
+  } else {
+    s.TrackFeatures(grey);
+    result.tracked = int(s.features.size());
+    std::vector<cv::Point2f> px;
+    for (const Feature& f : s.features) px.push_back(f.px);
+    const auto camera_points = TriangulateFeatures(pair, grey, other_grey, px, s.options.stereo);
+    std::vector<Eigen::Vector3d> world, camera;
+    std::vector<cv::Point2f> image;
+    std::vector<size_t> index;
+    for (size_t i = 0; i < s.features.size(); ++i)
+      if (camera_points[i]) {
+        world.push_back(s.features[i].world);
+        camera.push_back(*camera_points[i]);
+        image.push_back(s.features[i].px);
+        index.push_back(i);
+      }
+    std::vector<double> weights;
+    std::vector<bool> inlier;
+    std::optional<Eigen::Isometry3d> pose;
+    if (int(world.size()) >= s.options.min_inliers)
+      pose = s.RansacPose(world, image, pair.reference_camera, inlier);
+    if (pose && s.options.pose_from_reprojection)
+      for (size_t i = 0; i < world.size(); ++i) weights.push_back(inlier[i] ? 1.0 : 0.0);
+    else if (pose)
+      pose = s.FitPose(world, camera, inlier, fb, *pose, weights);
+    const int inliers =
+        int(std::count_if(weights.begin(), weights.end(), [](double w) { return w > 0; }));
+    if (!pose || inliers < s.options.min_inliers) {
+      const auto relocalized = s.Relocalize(pair, grey);
+      if (!relocalized) {
+        s.previous_grey = grey;
+        s.features.clear();
+        return fail("tracking lost (" + std::to_string(inliers) +
+                    " inliers) and no keyframe matches");
+      }
+      s.pose = *relocalized;
+      s.features.clear();
+      result.relocalized = true;
+    } else {
+      s.pose = *pose;
+      result.inliers = inliers;
+      // Keep only the features that fitted (outliers: moving objects, mismatches).
+      std::vector<Feature> kept;
+      for (size_t j = 0; j < index.size(); ++j)
+        if (weights[j] > 0) kept.push_back(s.features[index[j]]);
+      s.features.swap(kept);
+    }
+    if (int(s.features.size()) < s.options.min_features) s.DetectNew(pair, grey, other_grey);
+  }
+  if (s.options.keyframe_every > 0 && (s.frame - 1) % s.options.keyframe_every == 0)
+    s.AddKeyframe(pair, grey, other_grey);
+  s.previous_grey = grey;
+  result.world_from_camera = s.pose;
+  if (result.inliers == 0) result.inliers = int(s.features.size());
+  return result;
+}
+
+}  // namespace novelty::sensors
