@@ -1,0 +1,48 @@
+// Registration of an image sequence to the common frame of the first (thesis 6.1.1): visual
+// localization gives each sequence m its own frame; a few support views j_n of it are also
+// localized in the common frame (S) besides their own (M). Each gives the transform between the
+// frames Q_n = S_n · M_n⁻¹ (eq. 6.1); these differ because of the drift along the sequence, so Q
+// is interpolated over the frame index j and every pose mapped as S_j = Q_j · M_j (eq. 6.3).
+//
+// Two ways to interpolate Q_j:
+//  - the thesis's (eq. 6.2): second-order Lagrange polynomials through three support views, of
+//    the rotation columns and the translation, columns normalised afterwards — which leaves them
+//    non-orthogonal in general;
+//  - a least-squares fit with Ceres: Q_j = exp([a + b·j + c·j²]×)·R̄ on SO(3) and t_j quadratic
+//    in j, over any number (≥ 3) of support views, always a rotation.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace novelty::sensors {
+
+struct SupportView {
+  double index = 0;                      ///< j: frame index (or time) in the sequence
+  Eigen::Isometry3d common_from_camera;  ///< S: pose in the common frame
+  Eigen::Isometry3d own_from_camera;     ///< M: pose in the sequence's own frame
+};
+
+/// Q_j by eq. 6.2 from the first three support views (the matrix may be non-orthogonal).
+/// Throws std::invalid_argument with fewer than three or two at the same index.
+Eigen::Matrix4d LagrangeFrameTransform(const std::vector<SupportView>& support, double j);
+
+/// The Ceres fit of Q_j; evaluate with At(). Throws std::invalid_argument with fewer
+/// than three support views.
+class FittedFrameTransform {
+ public:
+  explicit FittedFrameTransform(const std::vector<SupportView>& support);
+  Eigen::Isometry3d At(double j) const;
+
+ private:
+  Eigen::Matrix3d reference_rotation_;
+  double center_ = 0, scale_ = 1;  // j is normalised to (j − center) / scale for conditioning
+  double rotation_[9] = {0};       // a, b, c (angle-axis coefficients)
+  double translation_[9] = {0};    // t0, t1, t2
+};
+
+/// S_j = Q_j · M_j (eq. 6.3) for a 4×4 Q (orthogonal or not).
+Eigen::Matrix4d RegisterPose(const Eigen::Matrix4d& frame_transform,
+                             const Eigen::Isometry3d& own_from_camera);
+
+}  // namespace novelty::sensors
