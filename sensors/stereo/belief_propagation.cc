@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <memory>
 #include <opencv2/core/utility.hpp>
 #include <stdexcept>
 
@@ -15,10 +16,16 @@ enum Direction { kFromLeft = 0, kFromRight = 1, kFromUp = 2, kFromDown = 3 };
 struct Level {
   int w = 0, h = 0, labels = 0;
   std::vector<float> data;
-  std::array<std::vector<float>, 4> in;
+  std::array<std::unique_ptr<float[]>, 4> in;
 
-  Level(int width, int height, int l) : w(width), h(height), labels(l), data(size_t(w) * h * l) {
-    for (auto& m : in) m.assign(data.size(), 0.0f);
+  Level(int width, int height, int l) : w(width), h(height), labels(l), data(size_t(w) * h * l) {}
+  // Message fields: zero on the coarsest level; uninitialised below it, where the parent level's
+  // messages overwrite every entry (writing zeros first cost a third of the run time).
+  void AllocateMessages(bool zero) {
+    for (auto& m : in) {
+      m.reset(new float[data.size()]);
+      if (zero) std::fill_n(m.get(), data.size(), 0.0f);
+    }
   }
   size_t Offset(int x, int y) const { return (size_t(y) * w + x) * labels; }
 };
@@ -58,8 +65,8 @@ void SendMessages(Level& lv, int parity, const BeliefPropagationOptions& opt) {
     std::vector<float> scratch(size_t(5) * labels);
     float* __restrict total = scratch.data();
     float* out[4] = {total + labels, total + 2 * labels, total + 3 * labels, total + 4 * labels};
-    const float* __restrict in[4] = {lv.in[0].data(), lv.in[1].data(), lv.in[2].data(),
-                                     lv.in[3].data()};
+    const float* __restrict in[4] = {lv.in[0].get(), lv.in[1].get(), lv.in[2].get(),
+                                     lv.in[3].get()};
     const float* __restrict data = lv.data.data();
     for (int y = rows.start; y < rows.end; ++y) {
       for (int x = (y + parity) & 1; x < lv.w; x += 2) {
@@ -122,6 +129,7 @@ Labeling RunBeliefPropagation(const CostVolume& volume, const BeliefPropagationO
     throw std::invalid_argument("belief propagation: levels ≥ 1, iterations ≥ 0, costs ≥ 0");
   std::vector<Level> levels = BuildPyramid(volume, o);
   for (int k = int(levels.size()) - 1; k >= 0; --k) {
+    levels[k].AllocateMessages(k + 1 == int(levels.size()));
     if (k + 1 < int(levels.size())) {
       InheritMessages(levels[k + 1], levels[k]);
       levels[k + 1] = Level(0, 0, 0);  // free the coarse level

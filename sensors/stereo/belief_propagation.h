@@ -23,7 +23,7 @@ struct BeliefPropagationOptions {
   /// d: the smoothness cost never exceeds this (lets depth jump at object borders).
   float smoothness_truncation = 1.2f;
   int levels = 5;      ///< pyramid levels (1 = single scale)
-  int iterations = 6;  ///< message passes per level
+  int iterations = 4;  ///< message passes per level
 };
 
 struct Labeling {

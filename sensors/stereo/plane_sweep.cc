@@ -69,13 +69,19 @@ CostVolume PlaneSweep(const cv::Mat& reference, const views::PinholeCamera& came
         Eigen::Matrix3d m = view_from_ref.linear();
         m.col(2) += view_from_ref.translation() / depth;
         const Eigen::Matrix3d hom = Intrinsics(others[i].camera) * m * k_ref_inv;
-        cv::Mat hcv(3, 3, CV_64F);
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c) hcv.at<double>(r, c) = hom(r, c);
-        // The map sends reference pixels to view pixels: warp with WARP_INVERSE_MAP.
-        cv::warpPerspective(sides[i], warped, hcv, ref.size(),
-                            cv::INTER_LINEAR | cv::WARP_INVERSE_MAP, cv::BORDER_CONSTANT,
-                            cv::Scalar::all(0));
+        // The map sends reference pixels to view pixels: warp with WARP_INVERSE_MAP. A rectified
+        // rig (no baseline along the optical axis) gives an affine map: the cheaper warp.
+        const bool affine = std::abs(hom(2, 0)) < 1e-12 && std::abs(hom(2, 1)) < 1e-12;
+        cv::Mat hcv(affine ? 2 : 3, 3, CV_64F);
+        for (int r = 0; r < hcv.rows; ++r)
+          for (int c = 0; c < 3; ++c) hcv.at<double>(r, c) = hom(r, c) / hom(2, 2);
+        const int flags = cv::INTER_LINEAR | cv::WARP_INVERSE_MAP;
+        if (affine)
+          cv::warpAffine(sides[i], warped, hcv, ref.size(), flags, cv::BORDER_CONSTANT,
+                         cv::Scalar::all(0));
+        else
+          cv::warpPerspective(sides[i], warped, hcv, ref.size(), flags, cv::BORDER_CONSTANT,
+                              cv::Scalar::all(0));
         warps.push_back(warped.clone());
       }
       for (int y = 0; y < h; ++y) {
