@@ -3,7 +3,8 @@
 //
 //   name NAME                         frames N            fps F          seed S
 //   camera WIDTH HEIGHT HFOV_DEG      rig mono|rgbd|stereo B|trinocular B
-//   sensor noise SIGMA gamma G exposure E shadow_samples K   (any subset, any order)
+//   sensor noise SIGMA gamma G exposure E shadow_samples K pixel_samples N   (any subset, any
+//                                     order; N × N rays per pixel, renderer.h)
 //   mount X Y Z YAW_DEG PITCH_DEG     camera head on the robot (pitch: down positive)
 //   static_camera X Y Z TX TY TZ      tripod at X Y Z looking at TX TY TZ (no robot)
 //   room SX SY HEIGHT                 walls around the origin
