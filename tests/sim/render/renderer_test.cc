@@ -87,6 +87,37 @@ TEST(Renderer, SphereSilhouetteMatchesTheClosedForm) {
   EXPECT_LT(band, inside / 20);
 }
 
+// pixel_samples: a black sphere before a white background. One ray per pixel gives only black or
+// white; a 4 × 4 grid gives the covered fraction at the silhouette (a box filter), while depth
+// and ids still come from the pixel centre.
+TEST(Renderer, PixelSamplesAverageOverThePixelArea) {
+  RayScene scene;
+  scene.AddObject(MakeSphere(0.5, 96, 48), At(3, 0.2, 1.0), Matte(0.0f), 4);
+  scene.Commit();
+  const views::PinholeCamera cam = views::PinholeCamera::FromFov(200, 150, 0.6);
+  const Eigen::Isometry3d pose = views::LookAt({0, 0, 1.0}, {3, 0, 1.0});
+  RenderOptions o = Exact();
+  o.background = Eigen::Vector3f::Ones();
+  const RenderedFrame one = Render(scene, Lighting{}, cam, pose, o);
+  o.pixel_samples = 4;
+  const RenderedFrame grid = Render(scene, Lighting{}, cam, pose, o);
+  int mixed_one = 0, mixed_grid = 0;
+  double sum_one = 0, sum_grid = 0;
+  for (int v = 0; v < cam.height; ++v)
+    for (int u = 0; u < cam.width; ++u) {
+      const int a = one.rgb.at<cv::Vec3b>(v, u)[0], b = grid.rgb.at<cv::Vec3b>(v, u)[0];
+      mixed_one += a != 0 && a != 255;
+      mixed_grid += b != 0 && b != 255;
+      sum_one += a, sum_grid += b;
+      ASSERT_EQ(one.ids.at<int>(v, u), grid.ids.at<int>(v, u));
+      ASSERT_EQ(one.depth.at<float>(v, u), grid.depth.at<float>(v, u));
+    }
+  EXPECT_EQ(mixed_one, 0);
+  EXPECT_GT(mixed_grid, 100);  // the silhouette's pixels
+  // Same covered area on average: the filter moves no edge, it only grades it.
+  EXPECT_NEAR(sum_grid / sum_one, 1.0, 0.005);
+}
+
 // Slab test: does the segment p → q cross the axis-aligned box [lo, hi]?
 bool SegmentHitsBox(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& lo,
                     const Eigen::Vector3d& hi) {
