@@ -19,6 +19,7 @@ struct Feature {
   Eigen::Vector3d world;  // triangulated when new, then kept
   int anchor_frame;       // the frame it was detected in
   cv::Point2f anchor_px;  // and where
+  int observations = 1;   // triangulations averaged into `world`; 1 = not yet confirmed
 };
 
 struct Keyframe {
@@ -76,7 +77,9 @@ class VisualOdometry::Impl {
         continue;
       if (to[i].x < 0 || to[i].y < 0 || to[i].x > grey.cols - 1 || to[i].y > grey.rows - 1)
         continue;
-      kept.push_back({to[i], features[i].world, features[i].anchor_frame, features[i].anchor_px});
+      Feature f = features[i];
+      f.px = to[i];
+      kept.push_back(f);
     }
     features.swap(kept);
     RefineAgainstAnchors(grey);
@@ -203,13 +206,18 @@ class VisualOdometry::Impl {
         for (const cv::Point2f& c : corners) candidates.push_back(c + cv::Point2f(cell.tl()));
       }
     if (candidates.empty()) return;
+    const bool bootstrap = std::none_of(features.begin(), features.end(),
+                                        [](const Feature& f) { return f.observations > 1; });
     cv::cornerSubPix(grey, candidates, cv::Size(4, 4), cv::Size(-1, -1),
                      cv::TermCriteria(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 20, 0.01));
     const auto points = TriangulateFeatures(pair, grey, other_grey, candidates, options.stereo);
     bool any = false;
     for (size_t i = 0; i < candidates.size(); ++i)
       if (points[i]) {
-        features.push_back({candidates[i], pose * *points[i], frame, candidates[i]});
+        // With no confirmed feature left (first frame, after re-localization) the new ones are
+        // confirmed at once: there is nothing to check them against.
+        features.push_back(
+            {candidates[i], pose * *points[i], frame, candidates[i], bootstrap ? 2 : 1});
         any = true;
       }
     if (any) anchors[frame] = grey;
@@ -313,7 +321,7 @@ std::optional<VisualOdometryResult> VisualOdometry::Track(const StereoPair& pair
     std::vector<cv::Point2f> image;
     std::vector<size_t> index;
     for (size_t i = 0; i < s.features.size(); ++i)
-      if (camera_points[i]) {
+      if (camera_points[i] && s.features[i].observations > 1) {
         world.push_back(s.features[i].world);
         camera.push_back(*camera_points[i]);
         image.push_back(s.features[i].px);
@@ -344,10 +352,28 @@ std::optional<VisualOdometryResult> VisualOdometry::Track(const StereoPair& pair
     } else {
       s.pose = *pose;
       result.inliers = inliers;
-      // Keep only the features that fitted (outliers: moving objects, mismatches).
+      // Keep the features that fitted (outliers: moving objects, mismatches), and confirm new
+      // ones whose second triangulation agrees with the first: a "corner" where two surfaces
+      // meet at an occlusion boundary moves with the viewpoint and is dropped here. Each
+      // triangulation is averaged into the feature's world position (3.1.1: points refined).
+      std::vector<bool> fitted(s.features.size(), false);
+      for (size_t j = 0; j < index.size(); ++j) fitted[index[j]] = weights[j] > 0;
       std::vector<Feature> kept;
-      for (size_t j = 0; j < index.size(); ++j)
-        if (weights[j] > 0) kept.push_back(s.features[index[j]]);
+      for (size_t i = 0; i < s.features.size(); ++i) {
+        Feature f = s.features[i];
+        if (f.observations > 1 && !fitted[i]) continue;
+        if (!camera_points[i]) {
+          if (f.observations > 1) kept.push_back(f);
+          continue;
+        }
+        const Eigen::Vector3d now = s.pose * *camera_points[i];
+        const double z = std::max(0.1, camera_points[i]->z());
+        const double residual_px = (now - f.world).norm() * fb / (z * z);
+        if (f.observations == 1 && residual_px > s.options.outlier_threshold_px) continue;
+        f.world = (f.world * f.observations + now) / (f.observations + 1);
+        ++f.observations;
+        kept.push_back(f);
+      }
       s.features.swap(kept);
     }
     if (int(s.features.size()) < s.options.min_features) s.DetectNew(pair, grey, other_grey);

@@ -2,7 +2,9 @@
 // GPS of [BH04]): KLT features are tracked in the reference images; a feature is triangulated
 // once, when it is new, and its world position kept; every frame the tracked features are
 // triangulated again in the camera frame and the camera pose follows from fitting the two point
-// sets by SVD with outlier weights (eq. 3.1–3.4). Features are detected on a grid so they cover
+// sets by SVD with outlier weights (eq. 3.1–3.4). A new feature joins the map only when its
+// second triangulation agrees with its first (corners at occlusion boundaries do not), and its
+// world position is the mean of its triangulations. Features are detected on a grid so they cover
 // the whole image. When too few features survive, the pose is recovered against kept keyframes
 // (ORB matches + PnP with RANSAC; the thesis's [MMBS09] used SURF).
 #pragma once
