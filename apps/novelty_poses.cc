@@ -16,11 +16,9 @@
 // Poses go to the observations of the rig frames (same timestamps). Run it before
 // novelty-depth, which copies the pose observations through to its RGB-D scans.
 // With --groundtruth the pose error against novelty-sim's poses.csv is printed.
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CObservationStereoImages.h>
-#include <mrpt/serialization/CArchive.h>
 #include <tclap/CmdLine.h>
 
 #include <algorithm>
@@ -35,6 +33,7 @@
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/led_observation.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
+#include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rawlog_output.h"
 #include "sensors/rawlog/rgbd_observation.h"
 #include "sensors/rawlog/rig_frame_reader.h"
@@ -153,23 +152,12 @@ int main(int argc, char** argv) {
     };
     const std::string label = visual ? "POSE_VISUAL" : "POSE_TRACKER";
 
-    mrpt::io::CFileGZInputStream file(in.getValue());
-    if (!file.fileOpenCorrectly()) throw std::runtime_error(in.getValue() + ": cannot open");
+    sensors::RawlogInput input(in.getValue());
     sensors::RawlogOutput output(out.getValue());
     output.ShareImagesOf(in.getValue());
-    auto arch = mrpt::serialization::archiveFrom(file);
     int cameras = 0, posed = 0;
     std::vector<std::string> reasons;
-    for (int object = 1;; ++object) {
-      mrpt::serialization::CSerializable::Ptr obj;
-      try {
-        arch >> obj;
-      } catch (const mrpt::serialization::CExceptionEOF&) {
-        break;
-      } catch (const std::exception& e) {
-        throw std::runtime_error(in.getValue() + ": cannot read object " + std::to_string(object) +
-                                 ": " + e.what());
-      }
+    while (const auto obj = input.Next()) {
       if (const auto mount = CameraMount(*obj)) {
         ++cameras;
         const auto& o = dynamic_cast<const mrpt::obs::CObservation&>(*obj);

@@ -1,11 +1,9 @@
 #include "sensors/rawlog/led_observation.h"
 
-#include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/serialization/CArchive.h>
-
 #include <cmath>
-#include <filesystem>
 #include <stdexcept>
+
+#include "sensors/rawlog/rawlog_input.h"
 
 namespace novelty::sensors {
 
@@ -49,28 +47,16 @@ LedSample DecodeLedObservation(const mrpt::obs::CObservationBearingRange& obs) {
 
 std::vector<LedSample> ReadLedSamples(const std::string& rawlog,
                                       std::vector<std::string>* skipped) {
-  if (!std::filesystem::exists(rawlog)) throw std::runtime_error(rawlog + ": no such rawlog");
-  mrpt::io::CFileGZInputStream file(rawlog);
-  if (!file.fileOpenCorrectly()) throw std::runtime_error(rawlog + ": cannot open rawlog");
-  auto arch = mrpt::serialization::archiveFrom(file);
+  RawlogInput input(rawlog);
   std::vector<LedSample> samples;
-  for (int object = 1;; ++object) {
-    mrpt::serialization::CSerializable::Ptr obj;
-    try {
-      arch >> obj;
-    } catch (const mrpt::serialization::CExceptionEOF&) {
-      break;
-    } catch (const std::exception& e) {
-      throw std::runtime_error(rawlog + ": cannot read object " + std::to_string(object) + ": " +
-                               e.what());
-    }
+  while (const auto obj = input.Next()) {
     auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservationBearingRange>(obj);
     if (!obs || obs->sensorLabel != kLedTrackerLabel) continue;
     try {
       samples.push_back(DecodeLedObservation(*obs));
     } catch (const std::exception& e) {
       if (skipped)
-        skipped->push_back(rawlog + ": object " + std::to_string(object) + ": " + e.what());
+        skipped->push_back(rawlog + ": object " + std::to_string(input.object()) + ": " + e.what());
     }
   }
   return samples;

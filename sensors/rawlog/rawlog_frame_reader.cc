@@ -1,14 +1,11 @@
 #include "sensors/rawlog/rawlog_frame_reader.h"
 
 #include "sensors/rawlog/camera_pose_observation.h"
+#include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
-#include <mrpt/img/CImage.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
-#include <mrpt/serialization/CArchive.h>
 
-#include <filesystem>
 #include <fstream>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
@@ -18,37 +15,21 @@ namespace novelty::sensors {
 
 class RawlogFrameReader::Impl {
  public:
-  explicit Impl(const std::string& path) : file(path) {}
-  mrpt::io::CFileGZInputStream file;
+  explicit Impl(const std::string& path) : input(path) {}
+  RawlogInput input;
   mrpt::obs::CObservationRobotPose::Ptr last_pose;  // the latest camera pose seen
 };
 
-RawlogFrameReader::RawlogFrameReader(const std::string& path) : path_(path) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such rawlog");
-  impl_ = std::make_unique<Impl>(path);
-  if (!impl_->file.fileOpenCorrectly()) throw std::runtime_error(path + ": cannot open rawlog");
-  // MRPT resolves external images against one process-wide folder: its rawlog convention.
-  const std::filesystem::path p(path);
-  mrpt::img::CImage::setImagesPathBase(
-      (p.parent_path() / (p.stem().string() + "_Images")).string());
-}
+RawlogFrameReader::RawlogFrameReader(const std::string& path)
+    : impl_(std::make_unique<Impl>(path)), path_(path) {}
 
 RawlogFrameReader::~RawlogFrameReader() = default;
 
 bool RawlogFrameReader::Next(Frame& frame) {
-  auto arch = mrpt::serialization::archiveFrom(impl_->file);
   while (true) {
-    mrpt::serialization::CSerializable::Ptr obj;
-    try {
-      arch >> obj;
-    } catch (const mrpt::serialization::CExceptionEOF&) {
-      return false;
-    } catch (const std::exception& e) {
-      // A truncated or foreign file: report where, keep what was read.
-      throw std::runtime_error(path_ + ": cannot read object " + std::to_string(objects_ + 1) +
-                               ": " + e.what());
-    }
-    ++objects_;
+    // A truncated or foreign file throws, naming the object; what was read is kept.
+    const auto obj = impl_->input.Next();
+    if (!obj) return false;
     if (auto pose = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(obj)) {
       impl_->last_pose = pose;
       continue;

@@ -48,7 +48,6 @@ class RawlogFrameReader {
   std::unique_ptr<Impl> impl_;
   std::string path_;
   int frames_ = 0;
-  int objects_ = 0;
   std::vector<std::string> skip_reasons_;
 };
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "maps/eval/write_rgb_image.h"
+#include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 namespace novelty::sensors {
@@ -21,8 +22,7 @@ class RawlogOutput::Impl {
 };
 
 RawlogOutput::RawlogOutput(const std::string& path) : final_path_(path), temp_path_(path + ".tmp") {
-  const std::filesystem::path p(path);
-  images_dir_ = (p.parent_path() / (p.stem().string() + "_Images")).string();
+  images_dir_ = ImagesDirOf(path);
   std::filesystem::create_directories(images_dir_);
   impl_ = std::make_unique<Impl>(temp_path_);
 }
@@ -62,8 +62,7 @@ void RawlogOutput::WriteRgbd(double time, const cv::Mat& rgb, const cv::Mat& dep
 
 void RawlogOutput::ShareImagesOf(const std::string& input_rawlog) const {
   namespace fs = std::filesystem;
-  const fs::path in(input_rawlog);
-  const fs::path dir = in.parent_path() / (in.stem().string() + "_Images");
+  const fs::path dir = ImagesDirOf(input_rawlog);
   if (!fs::exists(dir)) return;  // no external images
   if (fs::equivalent(dir, images_dir_)) return;
   for (const auto& entry : fs::directory_iterator(dir)) {

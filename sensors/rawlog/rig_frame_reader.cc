@@ -1,16 +1,13 @@
 #include "sensors/rawlog/rig_frame_reader.h"
 
-#include <mrpt/img/CImage.h>
-#include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CObservationImage.h>
 #include <mrpt/obs/CObservationStereoImages.h>
-#include <mrpt/serialization/CArchive.h>
 
-#include <filesystem>
-#include <map>
+#include <array>
 #include <optional>
 #include <stdexcept>
 
+#include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 namespace novelty::sensors {
@@ -36,10 +33,9 @@ void CheckSizes(const RigFrame& f) {
 
 class RigFrameReader::Impl {
  public:
-  explicit Impl(const std::string& p) : path(p), file(p) {}
+  explicit Impl(const std::string& p) : path(p), input(p) {}
   std::string path;
-  mrpt::io::CFileGZInputStream file;
-  int objects = 0;
+  RawlogInput input;
   int frames = 0;
   // The trinocular triple being collected (by slot), all with the same timestamp.
   std::array<mrpt::obs::CObservationImage::Ptr, 3> triple;
@@ -55,14 +51,7 @@ class RigFrameReader::Impl {
   }
 };
 
-RigFrameReader::RigFrameReader(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such rawlog");
-  impl_ = std::make_unique<Impl>(path);
-  if (!impl_->file.fileOpenCorrectly()) throw std::runtime_error(path + ": cannot open rawlog");
-  const std::filesystem::path p(path);
-  mrpt::img::CImage::setImagesPathBase(
-      (p.parent_path() / (p.stem().string() + "_Images")).string());
-}
+RigFrameReader::RigFrameReader(const std::string& path) : impl_(std::make_unique<Impl>(path)) {}
 
 RigFrameReader::~RigFrameReader() = default;
 
@@ -98,24 +87,17 @@ static RigFrame FromTriple(std::array<mrpt::obs::CObservationImage::Ptr, 3>& tri
 bool RigFrameReader::Next(RigFrame& frame,
                           std::vector<mrpt::serialization::CSerializable::Ptr>* others) {
   Impl& s = *impl_;
-  auto arch = mrpt::serialization::archiveFrom(s.file);
   auto skip_triple = [&](const std::string& why) {
     ++s.frames;
     skip_reasons_.push_back(s.Where(s.TripleTime()) + ": " + why);
     s.triple = {};
   };
   while (true) {
-    mrpt::serialization::CSerializable::Ptr obj;
-    try {
-      arch >> obj;
-    } catch (const mrpt::serialization::CExceptionEOF&) {
+    const auto obj = s.input.Next();  // throws, naming the object, for a damaged file
+    if (!obj) {
       if (s.TripleStarted()) skip_triple("incomplete trinocular triple at the end");
       return false;
-    } catch (const std::exception& e) {
-      throw std::runtime_error(s.path + ": cannot read object " + std::to_string(s.objects + 1) +
-                               ": " + e.what());
     }
-    ++s.objects;
     std::optional<RigFrame> ready;
     try {
       if (auto stereo = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(obj)) {
