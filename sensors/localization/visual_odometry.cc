@@ -34,6 +34,36 @@ cv::Mat Grey(const cv::Mat& image) {
   return grey;
 }
 
+cv::Mat CameraMatrix(const views::PinholeCamera& c) {
+  return (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
+}
+
+cv::Point3f ToCv(const Eigen::Vector3d& p) {
+  return {float(p.x()), float(p.y()), float(p.z())};
+}
+
+// OpenCV's PnP pose (rvec, tvec: T_cam_world) ⇄ T_world_cam.
+void ToRvecTvec(const Eigen::Isometry3d& world_from_camera, cv::Mat& rvec, cv::Mat& tvec) {
+  const Eigen::Isometry3d cam_from_world = world_from_camera.inverse();
+  cv::Mat r;
+  cv::eigen2cv(Eigen::Matrix3d(cam_from_world.linear()), r);
+  cv::Rodrigues(r, rvec);
+  cv::eigen2cv(Eigen::Vector3d(cam_from_world.translation()), tvec);
+}
+
+Eigen::Isometry3d WorldFromCamera(const cv::Mat& rvec, const cv::Mat& tvec) {
+  cv::Mat r;
+  cv::Rodrigues(rvec, r);
+  Eigen::Matrix3d re;
+  Eigen::Vector3d te;
+  cv::cv2eigen(r, re);
+  cv::cv2eigen(tvec, te);
+  Eigen::Isometry3d cam_from_world = Eigen::Isometry3d::Identity();
+  cam_from_world.linear() = re;
+  cam_from_world.translation() = te;
+  return cam_from_world.inverse();
+}
+
 double Tukey(double r, double c) {
   if (r >= c) return 0.0;
   const double u = r / c;
@@ -130,17 +160,10 @@ class VisualOdometry::Impl {
                                               const views::PinholeCamera& c,
                                               std::vector<bool>& inlier) {
     std::vector<cv::Point3f> object;
-    for (const auto& w : world) object.emplace_back(float(w.x()), float(w.y()), float(w.z()));
-    const cv::Mat k = (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
-    const Eigen::Isometry3d guess = pose.inverse();
-    cv::Mat r, rvec, tvec;
-    cv::Mat re(3, 3, CV_64F), te(3, 1, CV_64F);
-    for (int i = 0; i < 3; ++i) {
-      te.at<double>(i) = guess.translation()(i);
-      for (int j = 0; j < 3; ++j) re.at<double>(i, j) = guess.linear()(i, j);
-    }
-    cv::Rodrigues(re, rvec);
-    tvec = te;
+    for (const auto& w : world) object.push_back(ToCv(w));
+    const cv::Mat k = CameraMatrix(c);
+    cv::Mat rvec, tvec;
+    ToRvecTvec(pose, rvec, tvec);  // the previous pose as the starting guess
     std::vector<int> inliers;
     if (!cv::solvePnPRansac(object, image, k, cv::noArray(), rvec, tvec, true, 100,
                             float(options.ransac_reprojection_px), 0.999, inliers))
@@ -153,13 +176,7 @@ class VisualOdometry::Impl {
       for (int i : inliers) o2.push_back(object[i]), i2.push_back(image[i]);
       cv::solvePnPRefineLM(o2, i2, k, cv::noArray(), rvec, tvec);
     }
-    cv::Rodrigues(rvec, r);
-    Eigen::Isometry3d cam_from_world = Eigen::Isometry3d::Identity();
-    for (int i = 0; i < 3; ++i) {
-      cam_from_world.translation()(i) = tvec.at<double>(i);
-      for (int j = 0; j < 3; ++j) cam_from_world.linear()(i, j) = r.at<double>(i, j);
-    }
-    return cam_from_world.inverse();
+    return WorldFromCamera(rvec, tvec);
   }
 
   // eq. 3.1–3.4, iterated from `start`: Tukey weights from the residuals of the previous fit,
@@ -251,8 +268,7 @@ class VisualOdometry::Impl {
     cv::BFMatcher matcher(cv::NORM_HAMMING);
     std::optional<Eigen::Isometry3d> best;
     int best_inliers = options.min_inliers - 1;
-    const views::PinholeCamera& c = pair.reference_camera;
-    const cv::Mat k = (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
+    const cv::Mat k = CameraMatrix(pair.reference_camera);
     for (const Keyframe& kf : keyframes) {
       std::vector<std::vector<cv::DMatch>> knn;
       matcher.knnMatch(descriptors, kf.descriptors, knn, 2);
@@ -260,8 +276,7 @@ class VisualOdometry::Impl {
       std::vector<cv::Point2f> image;
       for (const auto& m : knn) {
         if (m.size() < 2 || m[0].distance > 0.8f * m[1].distance) continue;
-        const Eigen::Vector3d& w = kf.world[m[0].trainIdx];
-        object.emplace_back(float(w.x()), float(w.y()), float(w.z()));
+        object.push_back(ToCv(kf.world[m[0].trainIdx]));
         image.push_back(keypoints[m[0].queryIdx].pt);
       }
       if (int(object.size()) < options.min_inliers) continue;
@@ -272,16 +287,7 @@ class VisualOdometry::Impl {
         continue;
       if (int(inliers.size()) <= best_inliers) continue;
       best_inliers = int(inliers.size());
-      cv::Mat r;
-      cv::Rodrigues(rvec, r);
-      Eigen::Matrix3d re;
-      Eigen::Vector3d te;
-      cv::cv2eigen(r, re);
-      cv::cv2eigen(tvec, te);
-      Eigen::Isometry3d cam_from_world = Eigen::Isometry3d::Identity();
-      cam_from_world.linear() = re;
-      cam_from_world.translation() = te;
-      best = cam_from_world.inverse();
+      best = WorldFromCamera(rvec, tvec);
     }
     return best;
   }
