@@ -15,27 +15,14 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
 
 #include "maps/eval/depth_accuracy.h"
+#include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rawlog_output.h"
 #include "sensors/rawlog/rig_frame_reader.h"
 #include "sensors/stereo/stereo_depth.h"
 
-namespace {
-
 using namespace novelty;
-
-cv::Mat TrueDepth(const std::string& groundtruth, int frame) {
-  char name[32];
-  std::snprintf(name, sizeof name, "/depth/%06d.png", frame);
-  const cv::Mat png = cv::imread(groundtruth + name, cv::IMREAD_UNCHANGED);
-  cv::Mat depth;
-  if (!png.empty()) png.convertTo(depth, CV_32F, 1.0 / 5000);
-  return depth;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   try {
@@ -87,7 +74,7 @@ int main(int argc, char** argv) {
                        std::string(stem) + "_stereo", "STEREO_DEPTH");
       ++frames;
       if (truth.isSet()) {
-        const cv::Mat true_depth = TrueDepth(truth.getValue(), f.index);
+        const cv::Mat true_depth = sensors::LoadGroundTruthDepth(truth.getValue(), f.index);
         if (!true_depth.empty()) {
           const auto a = eval::MeasureDepthAccuracy(depth.depth, true_depth, f.images[0], {});
           within_sum += a.within_fraction;

@@ -6,7 +6,9 @@
 
 #include <mrpt/obs/CObservation3DRangeScan.h>
 
+#include <cstdio>
 #include <fstream>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <stdexcept>
@@ -82,6 +84,15 @@ std::map<int, Eigen::Isometry3d> LoadGroundTruthPoses(const std::string& path) {
     }
   }
   return poses;
+}
+
+cv::Mat LoadGroundTruthDepth(const std::string& groundtruth_dir, int frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "/depth/%06d.png", frame);
+  const cv::Mat png = cv::imread(groundtruth_dir + name, cv::IMREAD_UNCHANGED);
+  cv::Mat depth;
+  if (!png.empty()) png.convertTo(depth, CV_32F, 1.0 / 5000);
+  return depth;
 }
 
 }  // namespace novelty::sensors

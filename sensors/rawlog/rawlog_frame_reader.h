@@ -55,4 +55,8 @@ class RawlogFrameReader {
 /// std::runtime_error naming the file and line of a malformed row.
 std::map<int, Eigen::Isometry3d> LoadGroundTruthPoses(const std::string& poses_csv);
 
+/// True depth (CV_32F metres, 0 = no surface) of a 1-based frame from novelty-sim's
+/// groundtruth/depth/NNNNNN.png (metres × 5000); empty if the file is missing.
+cv::Mat LoadGroundTruthDepth(const std::string& groundtruth_dir, int frame);
+
 }  // namespace novelty::sensors

@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
 
 #include "maps/eval/depth_accuracy.h"
+#include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rig_frame_reader.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/scenario_runner.h"
@@ -29,15 +29,6 @@ fs::path Simulate(const std::string& scenario, int frames) {
   return dir;
 }
 
-cv::Mat TrueDepth(const fs::path& dir, int frame) {
-  char name[32];
-  std::snprintf(name, sizeof name, "%06d.png", frame);
-  const cv::Mat png = cv::imread((dir / "groundtruth/depth" / name).string(), cv::IMREAD_UNCHANGED);
-  cv::Mat depth;
-  png.convertTo(depth, CV_32F, 1.0 / 5000);
-  return depth;
-}
-
 // The sensors issue's acceptance: ≥ 90 % of textured pixels within 3 % of the true depth.
 void ExpectAccurateDepth(const std::string& scenario, size_t cameras) {
   const fs::path dir = Simulate(scenario, 2);
@@ -50,8 +41,9 @@ void ExpectAccurateDepth(const std::string& scenario, size_t cameras) {
       others.push_back({f.images[i], f.cameras[i], f.ref_from_camera[i]});
     StereoDepthOptions o;
     const StereoDepth depth = ComputeStereoDepth(f.images[0], f.cameras[0], others, o);
-    const eval::DepthAccuracy a =
-        eval::MeasureDepthAccuracy(depth.depth, TrueDepth(dir, f.index), f.images[0], {});
+    const eval::DepthAccuracy a = eval::MeasureDepthAccuracy(
+        depth.depth, LoadGroundTruthDepth((dir / "groundtruth").string(), f.index), f.images[0],
+        {});
     std::printf(
         "%s frame %d: %d textured pixels, %.1f %% within 3 %%, median error %.2f %%; "
         "%d near discontinuities, %.1f %% within\n",
