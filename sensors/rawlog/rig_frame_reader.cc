@@ -99,6 +99,8 @@ bool RigFrameReader::Next(RigFrame& frame,
       return false;
     }
     std::optional<RigFrame> ready;
+    const auto* observation = dynamic_cast<const mrpt::obs::CObservation*>(obj.get());
+    const double time = observation ? mrpt::Clock::toDouble(observation->timestamp) : 0.0;
     try {
       if (auto stereo = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(obj)) {
         ++s.frames;
@@ -121,7 +123,7 @@ bool RigFrameReader::Next(RigFrame& frame,
       }
       CheckSizes(*ready);
     } catch (const std::exception& e) {
-      skip_reasons_.push_back(s.Where(0.0) + ": " + e.what());
+      skip_reasons_.push_back(s.Where(time) + ": " + e.what());
       continue;
     }
     frame = std::move(*ready);
