@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <opencv2/core/utility.hpp>
@@ -44,7 +46,55 @@ int ThreadCount(int requested) {
   return requested > 0 ? requested : std::max(1, cv::getNumThreads());
 }
 
-// Projects every source pixel into the virtual camera (eq. 3.6, 3.9 and the virtual projection).
+// Sixteen lanes of floats / ints with GCC's vector extensions: the compiler maps them to one
+// AVX-512 register or two AVX2 ones; comparisons give lane masks (-1 / 0), `m ? a : b` selects.
+// (Eigen's boolean arrays and select are evaluated lane by lane, which made this kernel scalar.)
+constexpr int kLanes = 16;
+typedef float F16 __attribute__((vector_size(4 * kLanes)));
+typedef int32_t I16 __attribute__((vector_size(4 * kLanes)));
+
+inline F16 Load(const float* p) {
+  F16 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void Store(float* p, F16 v) { std::memcpy(p, &v, sizeof v); }
+inline F16 Min(F16 a, F16 b) { return a < b ? a : b; }
+inline F16 Max(F16 a, F16 b) { return a > b ? a : b; }
+inline F16 AsFloat(I16 m) { return __builtin_convertvector(m, F16); }
+// floor and ceil through int conversion; x must lie within ±2^24 (callers clamp).
+inline F16 Floor(F16 x) {
+  const F16 t = AsFloat(__builtin_convertvector(x, I16));
+  return t + AsFloat(t > x);  // true = -1
+}
+inline F16 Ceil(F16 x) {
+  const F16 t = AsFloat(__builtin_convertvector(x, I16));
+  return t - AsFloat(t < x);
+}
+
+// One source pixel (T = float) or sixteen (T = F16) projected into the virtual camera:
+// p = z · (a·u + row) + t (eq. 3.6, 3.9), then the virtual projection. Unusable vertices (depth
+// not positive or not finite, behind the near plane) get 1/z = 0 and screen position −1, never NaN.
+struct Projection {
+  float ax, ay, az, tx, ty, tz, fx, fy, cx, cy, near_z;
+  template <typename T>
+  void operator()(T z, T fu, float rx, float ry, float rz, float* X, float* Y, float* IZ,
+                  float* SD) const {
+    const T px = z * (ax * fu + rx) + tx;
+    const T py = z * (ay * fu + ry) + ty;
+    const T pz = z * (az * fu + rz) + tz;
+    const auto ok = (z > 0.0f) & (z < 1e30f) & (pz > near_z);
+    const T iz = ok ? 1.0f / pz : T{};
+    Put(X, ok ? fx * px * iz + cx : T{} - 1.0f);
+    Put(Y, ok ? fy * py * iz + cy : T{} - 1.0f);
+    Put(IZ, iz);
+    Put(SD, ok ? z : T{});
+  }
+  static void Put(float* p, float v) { *p = v; }
+  static void Put(float* p, F16 v) { Store(p, v); }
+};
+
+// Projects every source pixel into the virtual camera, sixteen at a time.
 void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, const cv::Mat& depth,
                      const PinholeCamera& dst, double near_plane, int threads, Vertices& v) {
   v.Resize(static_cast<std::size_t>(src.width) * src.height);
@@ -53,50 +103,40 @@ void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, co
   // R · K⁻¹ (u, v, 1) is affine in u and v: a·u + b·v + c.
   const Eigen::Vector3f a = R.col(0) / float(src.fx), b = R.col(1) / float(src.fy);
   const Eigen::Vector3f c = R.col(2) - a * float(src.cx) - b * float(src.cy);
-  const float fx = float(dst.fx), fy = float(dst.fy), cx = float(dst.cx), cy = float(dst.cy);
-  const float near_z = float(near_plane);
+  const Projection project{a.x(),          a.y(),          a.z(),          t.x(),
+                           t.y(),          t.z(),          float(dst.fx),  float(dst.fy),
+                           float(dst.cx),  float(dst.cy),  float(near_plane)};
+  F16 lane_u;
+  for (int k = 0; k < kLanes; ++k) lane_u[k] = float(k);
   ParallelBlocks(src.height, ThreadCount(threads), [&](int r0, int r1) {
     for (int r = r0; r < r1; ++r) {
       const float* d = depth.ptr<float>(r);
       const std::size_t base = std::size_t(r) * src.width;
-      using Row = Eigen::Map<Eigen::ArrayXf>;
-      const Eigen::Map<const Eigen::ArrayXf> z_src(d, src.width);
       const Eigen::Vector3f row = b * float(r) + c;
-      const Eigen::ArrayXf us = Eigen::ArrayXf::LinSpaced(src.width, 0.0f, float(src.width - 1));
-      // p = z · (a·u + row) + t, per coordinate, for the whole row at once.
-      const Eigen::ArrayXf px = z_src * (a.x() * us + row.x()) + t.x();
-      const Eigen::ArrayXf py = z_src * (a.y() * us + row.y()) + t.y();
-      const Eigen::ArrayXf pz = z_src * (a.z() * us + row.z()) + t.z();
-      // Valid: positive depth (NaN fails) and in front of the near plane.
-      const Eigen::Array<bool, Eigen::Dynamic, 1> ok = (z_src > 0.0f) && (pz > near_z);
-      const Eigen::ArrayXf iz = ok.select(pz.inverse(), 0.0f);
-      Row(&v.x[base], src.width) = fx * px * iz + cx;
-      Row(&v.y[base], src.width) = fy * py * iz + cy;
-      Row(&v.inv_z[base], src.width) = iz;
-      Row(&v.source_depth[base], src.width) = ok.select(z_src, 0.0f);
+      int u = 0;
+      for (; u + kLanes <= src.width; u += kLanes) {
+        project(Load(d + u), lane_u + float(u), row.x(), row.y(), row.z(), &v.x[base + u],
+                &v.y[base + u], &v.inv_z[base + u], &v.source_depth[base + u]);
+      }
+      for (; u < src.width; ++u) {
+        project(d[u], float(u), row.x(), row.y(), row.z(), &v.x[base + u], &v.y[base + u],
+                &v.inv_z[base + u], &v.source_depth[base + u]);
+      }
     }
   });
 }
 
-// The rasteriser's output for one thread: inverse depth (the z-buffer, 0 = empty — nearer is
-// larger, so no division per pixel), source depth and source coordinates.
-struct Target {
-  cv::Mat inv_z, source_depth, uv;
-  // Sizes (reusing the memory of an earlier call) and clears the z-buffer; the other buffers
-  // are only read where the z-buffer was written, so they need no clearing.
-  void Reset(int rows, int cols) {
-    inv_z.create(rows, cols, CV_32FC1);
-    source_depth.create(rows, cols, CV_32FC1);
-    uv.create(rows, cols, CV_32FC2);
-    inv_z.setTo(0.0f);
-  }
-  // Keeps, per pixel, the nearer of this and `other`.
-  void Merge(const Target& other) {
-    const cv::Mat nearer = other.inv_z > inv_z;
-    other.inv_z.copyTo(inv_z, nearer);
-    other.source_depth.copyTo(source_depth, nearer);
-    other.uv.copyTo(uv, nearer);
-  }
+// What the rasteriser keeps per virtual pixel, packed so that one z-test and write touch one
+// 16-byte slot: inverse depth (the z-buffer, 0 = empty — nearer is larger, so no division per
+// pixel), the source depth and the source coordinates.
+struct alignas(16) Texel {
+  float inv_z, source_depth, u, v;
+};
+
+// One thread's target.
+struct TargetView {
+  Texel* texels;
+  int width, height;
 };
 
 // Rasterises one triangle with vertices a, b, c (source pixel coordinates sa, sb, sc) into the
@@ -105,8 +145,8 @@ struct Target {
 inline __attribute__((always_inline)) void Rasterise(const Vertex& a, const Vertex& b,
                                                      const Vertex& c, const cv::Vec2f& sa,
                                                      const cv::Vec2f& sb, const cv::Vec2f& sc,
-                                                     int x0, int x1, int y0, int y1, float* iz_buf,
-                                                     float* zs_buf, cv::Vec2f* uv_buf, int width) {
+                                                     int x0, int x1, int y0, int y1,
+                                                     const TargetView& t) {
   const float area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   if (std::abs(area) < 1e-12f) return;
   const float inv_area = 1.0f / area;
@@ -119,11 +159,10 @@ inline __attribute__((always_inline)) void Rasterise(const Vertex& a, const Vert
       const float wa = 1.0f - wb - wc;
       if (wa < -1e-5f || wb < -1e-5f || wc < -1e-5f) continue;
       const float iz = wa * a.inv_z + wb * b.inv_z + wc * c.inv_z;
-      const std::size_t i = std::size_t(y) * width + x;
-      if (iz <= iz_buf[i]) continue;  // z-test on inverse depth
-      iz_buf[i] = iz;
-      zs_buf[i] = wa * a.source_depth + wb * b.source_depth + wc * c.source_depth;
-      uv_buf[i] = wa * sa + wb * sb + wc * sc;
+      Texel& out = t.texels[std::size_t(y) * t.width + x];
+      if (iz <= out.inv_z) continue;  // z-test on inverse depth
+      const cv::Vec2f s = wa * sa + wb * sb + wc * sc;
+      out = {iz, wa * a.source_depth + wb * b.source_depth + wc * c.source_depth, s[0], s[1]};
     }
   }
 }
@@ -152,14 +191,6 @@ cv::Mat ViewAngles(const cv::Mat& depth, const PinholeCamera& cam, const Eigen::
   return cos_angle;
 }
 
-// Buffers of one thread's target, as raw pointers, with the virtual image size.
-struct TargetView {
-  float* iz;
-  float* zs;
-  cv::Vec2f* uv;
-  int width, height;
-};
-
 // The general case: one quad (source pixels (u, r)…(u+1, r+1)) as two triangles.
 void RasteriseQuad(const Vertices& v, int w, int u, int r, float max_ratio, const TargetView& t) {
   const std::size_t i = std::size_t(r) * w + u;
@@ -177,75 +208,93 @@ void RasteriseQuad(const Vertices& v, int w, int u, int r, float max_ratio, cons
   const float fu = float(u), fr = float(r);
   const cv::Vec2f s00{fu, fr}, s10{fu + 1, fr}, s01{fu, fr + 1}, s11{fu + 1, fr + 1};
   if (Usable(p00, p10, p11, max_ratio)) {
-    Rasterise(p00, p10, p11, s00, s10, s11, x0, x1, y0, y1, t.iz, t.zs, t.uv, t.width);
+    Rasterise(p00, p10, p11, s00, s10, s11, x0, x1, y0, y1, t);
   }
   if (Usable(p00, p11, p01, max_ratio)) {
-    Rasterise(p00, p11, p01, s00, s11, s01, x0, x1, y0, y1, t.iz, t.zs, t.uv, t.width);
+    Rasterise(p00, p11, p01, s00, s11, s01, x0, x1, y0, y1, t);
   }
 }
 
-// Sixteen quads of one row at a time. Between views of similar resolution most quads have a
-// pixel-centre bounding box with exactly one pixel centre or none; such lanes are decided with
-// SIMD arithmetic — the same formulas as Rasterise — and only their z-test and write are scalar.
-// Lanes whose box holds more pixels go through RasteriseQuad.
+// Sixteen quads of one row at a time. Between views of similar resolution nearly every quad's
+// pixel-centre bounding box holds at most 2×2 pixel centres; for those lanes the four candidate
+// pixels are decided with SIMD arithmetic — the same formulas as Rasterise — and only the z-test
+// and write are scalar. Lanes whose box holds more pixels go through RasteriseQuad.
 void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, const TargetView& t) {
-  constexpr int kLanes = 16;
-  using P = Eigen::Array<float, kLanes, 1>;
-  using B = Eigen::Array<bool, kLanes, 1>;  // masks evaluated: expressions would dangle
-  using M = Eigen::Map<const P, Eigen::Unaligned>;
   const std::size_t base = std::size_t(r) * w;
-  const float eps = -1e-5f;
+  const F16 zero = F16{} + 0.0f, one = zero + 1.0f, eps = zero - 1e-5f;
+  const F16 x_max = zero + float(t.width - 1), y_max = zero + float(t.height - 1);
+  const F16 lo = zero - 1e6f, hi = zero + 1e6f;
   int u = 0;
   for (; u + kLanes < w; u += kLanes) {
     const std::size_t i = base + u;
-    const P x00 = M(&v.x[i]), x10 = M(&v.x[i + 1]), x01 = M(&v.x[i + w]), x11 = M(&v.x[i + w + 1]);
-    const P y00 = M(&v.y[i]), y10 = M(&v.y[i + 1]), y01 = M(&v.y[i + w]), y11 = M(&v.y[i + w + 1]);
-    const P bx0 = x00.min(x10).min(x01.min(x11)).ceil().max(0.0f);
-    const P bx1 = x00.max(x10).max(x01.max(x11)).floor().min(float(t.width - 1));
-    const P by0 = y00.min(y10).min(y01.min(y11)).ceil().max(0.0f);
-    const P by1 = y00.max(y10).max(y01.max(y11)).floor().min(float(t.height - 1));
-    const B empty = (bx0 > bx1) || (by0 > by1) || !(bx0 == bx0);  // NaN-safe
-    if (empty.all()) continue;
-    const B single = (bx0 == bx1) && (by0 == by1);
-    const P i00 = M(&v.inv_z[i]), i10 = M(&v.inv_z[i + 1]), i01 = M(&v.inv_z[i + w]),
-            i11 = M(&v.inv_z[i + w + 1]);
-    const P z00 = M(&v.source_depth[i]), z10 = M(&v.source_depth[i + 1]),
-            z01 = M(&v.source_depth[i + w]), z11 = M(&v.source_depth[i + w + 1]);
-    // Weights of b and c at the candidate pixel (bx0, by0) for triangle (00, b, c).
-    auto weights = [&](const P& bx, const P& by, const P& cx, const P& cy, P& wb, P& wc) -> B {
-      const P area = (bx - x00) * (cy - y00) - (by - y00) * (cx - x00);
-      const P inv_area = area.inverse();
-      wb = ((bx0 - x00) * (cy - y00) - (by0 - y00) * (cx - x00)) * inv_area;
-      wc = ((bx - x00) * (by0 - y00) - (by - y00) * (bx0 - x00)) * inv_area;
-      return area.abs() >= 1e-12f;
-    };
-    auto usable = [&](const P& ib, const P& ic, const P& zb, const P& zc) -> B {
-      return (i00 != 0.0f) && (ib != 0.0f) && (ic != 0.0f) &&
-             (z00.max(zb).max(zc) <= z00.min(zb).min(zc) * max_ratio);
-    };
-    P wbA, wcA, wbB, wcB;
-    const B okA = weights(x10, y10, x11, y11, wbA, wcA) && usable(i10, i11, z10, z11);
-    const B okB = weights(x11, y11, x01, y01, wbB, wcB) && usable(i11, i01, z11, z01);
-    const P waA = 1.0f - wbA - wcA, waB = 1.0f - wbB - wcB;
-    const B inA = okA && (waA >= eps) && (wbA >= eps) && (wcA >= eps);
-    const B inB = okB && (waB >= eps) && (wbB >= eps) && (wcB >= eps);
-    const P wa = inA.select(waA, waB), wb = inA.select(wbA, wbB), wc = inA.select(wcA, wcB);
-    const P iz = wa * i00 + wb * inA.select(i10, i11) + wc * inA.select(i11, i01);
-    const P zs = wa * z00 + wb * inA.select(z10, z11) + wc * inA.select(z11, z01);
-    const P su = wb + inA.select(wc, P::Zero());  // offsets from (u, r) in the source
-    const P sv = inA.select(wc, wb + wc);
+    const F16 x00 = Load(&v.x[i]), x10 = Load(&v.x[i + 1]), x01 = Load(&v.x[i + w]),
+              x11 = Load(&v.x[i + w + 1]);
+    const F16 y00 = Load(&v.y[i]), y10 = Load(&v.y[i + 1]), y01 = Load(&v.y[i + w]),
+              y11 = Load(&v.y[i + w + 1]);
+    const F16 i00 = Load(&v.inv_z[i]), i10 = Load(&v.inv_z[i + 1]), i01 = Load(&v.inv_z[i + w]),
+              i11 = Load(&v.inv_z[i + w + 1]);
+    const I16 v00 = i00 != zero, v10 = i10 != zero, v01 = i01 != zero, v11 = i11 != zero;
+    // The box; an unusable vertex takes p00's place (its triangles are not drawn).
+    const F16 bx10 = v10 ? x10 : x00, by10 = v10 ? y10 : y00;
+    const F16 bx01 = v01 ? x01 : x00, by01 = v01 ? y01 : y00;
+    const F16 bx11 = v11 ? x11 : x00, by11 = v11 ? y11 : y00;
+    const F16 qx0 = Max(Ceil(Max(Min(Min(x00, bx10), Min(bx01, bx11)), lo)), zero);
+    const F16 qx1 = Min(Floor(Min(Max(Max(x00, bx10), Max(bx01, bx11)), hi)), x_max);
+    const F16 qy0 = Max(Ceil(Max(Min(Min(y00, by10), Min(by01, by11)), lo)), zero);
+    const F16 qy1 = Min(Floor(Min(Max(Max(y00, by10), Max(by01, by11)), hi)), y_max);
+    const F16 nx = qx1 - qx0 + one, ny = qy1 - qy0 + one;
+    const I16 any = v00 & v11 & (v10 | v01) & (nx >= one) & (ny >= one);
+    const I16 small = any & (nx <= one + one) & (ny <= one + one);
+    const I16 big = any & ~small;
+    bool any_lane = false;
+    for (int k = 0; k < kLanes; ++k) any_lane |= any[k] != 0;
+    if (!any_lane) continue;
+
+    const F16 z00 = Load(&v.source_depth[i]), z10 = Load(&v.source_depth[i + 1]),
+              z01 = Load(&v.source_depth[i + w]), z11 = Load(&v.source_depth[i + w + 1]);
+    const F16 ax = x10 - x00, ay = y10 - y00;  // p10 − p00
+    const F16 dx = x11 - x00, dy = y11 - y00;  // p11 − p00
+    const F16 bx = x01 - x00, by = y01 - y00;  // p01 − p00
+    const F16 area_a = ax * dy - ay * dx, area_b = dx * by - dy * bx;
+    const F16 inv_a = one / area_a, inv_b = one / area_b;
+    const F16 ratio = zero + max_ratio, tiny = zero + 1e-12f;
+    const I16 ok_a = small & v10 & ((area_a >= tiny) | (area_a <= -tiny)) &
+                     (Max(z00, Max(z10, z11)) <= Min(z00, Min(z10, z11)) * ratio);
+    const I16 ok_b = small & v01 & ((area_b >= tiny) | (area_b <= -tiny)) &
+                     (Max(z00, Max(z11, z01)) <= Min(z00, Min(z11, z01)) * ratio);
+    F16 c_iz[4], c_zs[4], c_su[4], c_sv[4];
+    for (int c = 0; c < 4; ++c) {
+      const float ox = float(c & 1), oy = float(c >> 1);
+      const I16 in_box = (zero + ox < nx) & (zero + oy < ny);
+      const F16 qx = qx0 + ox - x00, qy = qy0 + oy - y00;
+      // Triangle A = (p00, p10, p11), B = (p00, p11, p01): weights of its 2nd and 3rd vertex.
+      const F16 wb_a = (qx * dy - qy * dx) * inv_a, wc_a = (ax * qy - ay * qx) * inv_a;
+      const F16 wb_b = (qx * by - qy * bx) * inv_b, wc_b = (dx * qy - dy * qx) * inv_b;
+      const F16 wa_a = one - wb_a - wc_a, wa_b = one - wb_b - wc_b;
+      const I16 in_a = in_box & ok_a & (wa_a >= eps) & (wb_a >= eps) & (wc_a >= eps);
+      const I16 in_b = in_box & ok_b & (wa_b >= eps) & (wb_b >= eps) & (wc_b >= eps);
+      const F16 wa = in_a ? wa_a : wa_b, wb = in_a ? wb_a : wb_b, wc = in_a ? wc_a : wc_b;
+      const F16 ib = in_a ? i10 : i11, ic = in_a ? i11 : i01;
+      const F16 zb = in_a ? z10 : z11, zc = in_a ? z11 : z01;
+      c_iz[c] = (in_a | in_b) ? wa * i00 + wb * ib + wc * ic : zero;
+      c_zs[c] = wa * z00 + wb * zb + wc * zc;
+      c_su[c] = in_a ? wb + wc : wb;  // A: (1,0),(1,1); B: (1,1),(0,1)
+      c_sv[c] = in_a ? wc : wb + wc;
+    }
     for (int k = 0; k < kLanes; ++k) {
-      if (empty[k]) continue;
-      if (!single[k]) {
+      if (big[k]) {
         RasteriseQuad(v, w, u + k, r, max_ratio, t);
         continue;
       }
-      if (!inA[k] && !inB[k]) continue;
-      const std::size_t j = std::size_t(by0[k]) * t.width + std::size_t(bx0[k]);
-      if (iz[k] <= t.iz[j]) continue;  // z-test on inverse depth
-      t.iz[j] = iz[k];
-      t.zs[j] = zs[k];
-      t.uv[j] = cv::Vec2f(float(u + k) + su[k], float(r) + sv[k]);
+      if (!small[k]) continue;
+      const std::size_t j0 = std::size_t(qy0[k]) * t.width + std::size_t(qx0[k]);
+      for (int c = 0; c < 4; ++c) {
+        const float iz = c_iz[c][k];
+        if (iz == 0.0f) continue;
+        Texel& out = t.texels[j0 + std::size_t(c >> 1) * t.width + std::size_t(c & 1)];
+        if (iz <= out.inv_z) continue;  // z-test on inverse depth
+        out = {iz, c_zs[c][k], float(u + k) + c_su[c][k], float(r) + c_sv[c][k]};
+      }
     }
   }
   for (; u + 1 < w; ++u) RasteriseQuad(v, w, u, r, max_ratio, t);
@@ -255,9 +304,45 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
 
 struct DepthMeshWarper::Scratch {
   Vertices vertices;
-  std::vector<Target> targets;
-  cv::Mat covered;
+  std::vector<std::vector<Texel>> targets;  // one per thread
 };
+
+namespace {
+
+// The field from the threads' targets: per virtual pixel the nearest surface any thread drew.
+void Finalise(const std::vector<std::vector<Texel>>& targets, int width, int height,
+              WarpField& field) {
+  field.depth.create(height, width, CV_32FC1);
+  field.source_depth.create(height, width, CV_32FC1);
+  field.map.create(height, width, CV_32FC2);
+  std::vector<int> covered(std::size_t(height), 0);
+  ParallelBlocks(height, ThreadCount(0), [&](int y0, int y1) {
+    for (int y = y0; y < y1; ++y) {
+      float* depth = field.depth.ptr<float>(y);
+      float* source_depth = field.source_depth.ptr<float>(y);
+      cv::Vec2f* map = field.map.ptr<cv::Vec2f>(y);
+      const std::size_t row = std::size_t(y) * width;
+      int n = 0;
+      for (int x = 0; x < width; ++x) {
+        const Texel* best = &targets[0][row + x];
+        for (std::size_t k = 1; k < targets.size(); ++k) {
+          const Texel& other = targets[k][row + x];
+          if (other.inv_z > best->inv_z) best = &other;
+        }
+        const bool hit = best->inv_z > 0.0f;
+        depth[x] = hit ? 1.0f / best->inv_z : 0.0f;  // 0, not 1/0
+        source_depth[x] = hit ? best->source_depth : 0.0f;
+        map[x] = hit ? cv::Vec2f(best->u, best->v) : cv::Vec2f(-1.0f, -1.0f);
+        n += hit;
+      }
+      covered[std::size_t(y)] = n;
+    }
+  });
+  field.covered = 0;
+  for (int n : covered) field.covered += n;
+}
+
+}  // namespace
 
 DepthMeshWarper::DepthMeshWarper(const WarpOptions& options)
     : options_(options), scratch_(std::make_unique<Scratch>()) {}
@@ -284,20 +369,17 @@ void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_
 
   // Threads take blocks of source rows, each with its own buffers, merged by depth afterwards.
   const int n_threads = std::max(1, std::min(src.height - 1, ThreadCount(o.threads)));
-  std::vector<Target>& targets = scratch_->targets;
+  std::vector<std::vector<Texel>>& targets = scratch_->targets;
   targets.resize(std::size_t(n_threads));
-  for (Target& t : targets) t.Reset(dst.height, dst.width);
   const float max_ratio = float(1.0 + o.max_relative_depth_jump);
   const int w = src.width;
   ParallelBlocks(n_threads, n_threads, [&](int t0, int t1) {
     for (int ti = t0; ti < t1; ++ti) {
-      Target& t = targets[std::size_t(ti)];
-      float* iz_buf = t.inv_z.ptr<float>();
-      float* zs_buf = t.source_depth.ptr<float>();
-      cv::Vec2f* uv_buf = t.uv.ptr<cv::Vec2f>();
+      std::vector<Texel>& target = targets[std::size_t(ti)];
+      target.assign(std::size_t(dst.width) * dst.height, Texel{0.0f, 0.0f, 0.0f, 0.0f});
+      const TargetView view{target.data(), dst.width, dst.height};
       const int r_begin = (src.height - 1) * ti / n_threads;
       const int r_end = (src.height - 1) * (ti + 1) / n_threads;
-      const TargetView view{iz_buf, zs_buf, uv_buf, dst.width, dst.height};
       for (int r = r_begin; r < r_end; ++r) {
         if (o.vectorised) {
           RasteriseRowVectorised(v, w, r, max_ratio, view);
@@ -307,20 +389,7 @@ void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_
       }
     }
   });
-  for (std::size_t i = 1; i < targets.size(); ++i) targets[0].Merge(targets[i]);
-
-  Target& t = targets[0];
-  cv::Mat& covered = scratch_->covered;
-  cv::compare(t.inv_z, 0.0f, covered, cv::CMP_GT);
-  cv::divide(1.0, t.inv_z, field.depth);
-  // The target's buffers become the field's (and the field's old ones the next scratch).
-  std::swap(field.source_depth, t.source_depth);
-  std::swap(field.map, t.uv);
-  const cv::Mat uncovered = ~covered;
-  field.depth.setTo(0.0f, uncovered);  // 0, not 1/0
-  field.source_depth.setTo(0.0f, uncovered);
-  field.map.setTo(cv::Scalar(-1, -1), uncovered);
-  field.covered = cv::countNonZero(covered);
+  Finalise(targets, dst.width, dst.height, field);
   if (o.compute_view_angles) field.cos_angle = ViewAngles(field.depth, dst, T_vs.translation());
 }
 

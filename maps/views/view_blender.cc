@@ -11,10 +11,12 @@ namespace novelty::views {
 
 namespace {
 
-// Bilinear sample of an n-channel plane at (u, v), coordinates clamped to the image (the
-// border replicated), added with weight w to acc.
-template <typename T>
+// Adds w × the bilinear sample of an n-channel plane at (u, v) to acc; coordinates clamped to the
+// image (the border replicated). C > 0 fixes the channel count at compile time (the common 1, 3
+// and 7 unroll); C = 0 takes `channels`.
+template <typename T, int C>
 inline void AddSample(const cv::Mat& plane, float u, float v, float w, int channels, float* acc) {
+  const int n = C > 0 ? C : channels;
   const int max_x = plane.cols - 1, max_y = plane.rows - 1;
   u = std::clamp(u, 0.0f, float(max_x));
   v = std::clamp(v, 0.0f, float(max_y));
@@ -25,28 +27,93 @@ inline void AddSample(const cv::Mat& plane, float u, float v, float w, int chann
               w11 = w * fx * fy;
   const T* r0 = plane.ptr<T>(y0);
   const T* r1 = plane.ptr<T>(y1);
-  for (int c = 0; c < channels; ++c) {
-    acc[c] += w00 * float(r0[x0 * channels + c]) + w10 * float(r0[x1 * channels + c]) +
-              w01 * float(r1[x0 * channels + c]) + w11 * float(r1[x1 * channels + c]);
+  const T *a = r0 + x0 * n, *b = r0 + x1 * n, *c = r1 + x0 * n, *d = r1 + x1 * n;
+  for (int k = 0; k < n; ++k) {
+    acc[k] += w00 * float(a[k]) + w10 * float(b[k]) + w01 * float(c[k]) + w11 * float(d[k]);
   }
 }
 
-using Sampler = void (*)(const cv::Mat&, float, float, float, int, float*);
+// Per pixel, the nearest warped depth over all views × (1 + tolerance); +inf where none.
+cv::Mat NearestDepth(const std::vector<WarpField>& warps, double tolerance) {
+  cv::Mat nearest(warps[0].depth.size(), CV_32FC1,
+                  cv::Scalar(std::numeric_limits<float>::infinity()));
+  for (const WarpField& w : warps) {
+    // Uncovered pixels have depth 0: only positive depths count.
+    cv::Mat positive = w.depth > 0.0f;
+    cv::Mat d = cv::min(nearest, w.depth);
+    d.copyTo(nearest, positive);
+  }
+  nearest *= 1.0 + tolerance;
+  return nearest;
+}
 
-Sampler SamplerFor(int depth) {
+// The per-frame images the per-pixel weights need, computed once for all views.
+struct PixelLimits {
+  cv::Mat nearest;  // depth limit (depth_tolerance), empty if unused
+};
+
+// Adds one view's weighted samples to the accumulators (acc: n channels, weight_sum: 1).
+template <typename T, int C>
+void AccumulateView(const WarpField& w, const cv::Mat& plane, float view_weight,
+                    const PixelLimits& limits, const BlendOptions& o, int channels, cv::Mat& acc,
+                    cv::Mat& weight_sum) {
+  const cv::Mat& nearest = limits.nearest;
+  const float resolution_power = float(o.resolution_power), angle_power = float(o.angle_power);
+  cv::parallel_for_(cv::Range(0, acc.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const float* depth = w.depth.ptr<float>(y);
+      const cv::Vec2f* map = w.map.ptr<cv::Vec2f>(y);
+      const float* limit = nearest.empty() ? nullptr : nearest.ptr<float>(y);
+      float* sum = acc.ptr<float>(y);
+      float* wsum = weight_sum.ptr<float>(y);
+      for (int x = 0; x < acc.cols; ++x) {
+        const float d = depth[x];
+        if (!(d > 0.0f) || (limit && d > limit[x])) continue;
+        float weight = view_weight;
+        if (resolution_power > 0.0f) {
+          weight *= std::pow(d / w.source_depth.ptr<float>(y)[x], resolution_power);
+        }
+        if (angle_power > 0.0f) {
+          weight *= std::pow(std::max(w.cos_angle.ptr<float>(y)[x], 1e-6f), angle_power);
+        }
+        AddSample<T, C>(plane, map[x][0], map[x][1], weight, channels,
+                        sum + std::size_t(x) * (C > 0 ? C : channels));
+        wsum[x] += weight;
+      }
+    }
+  });
+}
+
+using Accumulator = void (*)(const WarpField&, const cv::Mat&, float, const PixelLimits&,
+                             const BlendOptions&, int, cv::Mat&, cv::Mat&);
+
+template <typename T>
+Accumulator AccumulatorForChannels(int channels) {
+  switch (channels) {
+    case 1:
+      return &AccumulateView<T, 1>;
+    case 3:
+      return &AccumulateView<T, 3>;
+    case 7:
+      return &AccumulateView<T, 7>;
+  }
+  return &AccumulateView<T, 0>;
+}
+
+Accumulator AccumulatorFor(int depth, int channels) {
   switch (depth) {
     case CV_8U:
-      return &AddSample<uint8_t>;
+      return AccumulatorForChannels<uint8_t>(channels);
     case CV_16U:
-      return &AddSample<uint16_t>;
+      return AccumulatorForChannels<uint16_t>(channels);
     case CV_16S:
-      return &AddSample<int16_t>;
+      return AccumulatorForChannels<int16_t>(channels);
     case CV_16F:
-      return &AddSample<cv::float16_t>;
+      return AccumulatorForChannels<cv::float16_t>(channels);
     case CV_32F:
-      return &AddSample<float>;
+      return AccumulatorForChannels<float>(channels);
     case CV_64F:
-      return &AddSample<double>;
+      return AccumulatorForChannels<double>(channels);
   }
   throw std::invalid_argument("BlendPlanes: unsupported plane depth " + std::to_string(depth));
 }
@@ -66,7 +133,7 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
   }
   const int channels = planes[0].channels();
   const cv::Size size = warps[0].depth.size();
-  std::vector<Sampler> samplers;
+  std::vector<Accumulator> accumulators;
   for (std::size_t k = 0; k < warps.size(); ++k) {
     if (planes[k].channels() != channels || warps[k].depth.size() != size ||
         warps[k].map.size() != size) {
@@ -78,80 +145,39 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
           "BlendPlanes: angle_power needs warps computed with "
           "compute_view_angles");
     }
-    samplers.push_back(SamplerFor(planes[k].depth()));
+    accumulators.push_back(AccumulatorFor(planes[k].depth(), channels));
+  }
+  // View by view into accumulators (streaming through each warp field once), then one pass
+  // dividing by the weight sum.
+  PixelLimits limits;
+  if (o.depth_tolerance > 0.0) limits.nearest = NearestDepth(warps, o.depth_tolerance);
+  cv::Mat acc(size, CV_32FC(channels), cv::Scalar::all(0));
+  acc = acc.reshape(channels);  // Scalar::all covers ≤ 4 channels; zero the rest below
+  acc.reshape(1).setTo(0.0f);
+  cv::Mat weight_sum(size, CV_32FC1, cv::Scalar(0));
+  for (std::size_t k = 0; k < warps.size(); ++k) {
+    const float view_weight = o.weights.empty() ? 1.0f : float(o.weights[k]);
+    accumulators[k](warps[k], planes[k], view_weight, limits, o, channels, acc, weight_sum);
   }
   BlendResult result;
-  result.value.create(size, CV_32FC(channels));
+  result.value = acc;  // divided in place
   result.valid.create(size, CV_8UC1);
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  const float tolerance = float(1.0 + o.depth_tolerance);
-  // One pass over the virtual image: per pixel, the nearest depth (if a tolerance is set), then
-  // the weighted sum of the valid views' bilinear samples. `sample(k, u, v, w, acc)` is inlined
-  // when every plane has the same depth (the usual case), else called through a pointer.
-  auto blend = [&](auto sample) {
-    cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
-      std::vector<float> acc(static_cast<std::size_t>(channels), 0.0f);
-      for (int y = rows.start; y < rows.end; ++y) {
-        float* out = result.value.ptr<float>(y);
-        uint8_t* valid = result.valid.ptr<uint8_t>(y);
-        for (int x = 0; x < size.width; ++x) {
-          float nearest = std::numeric_limits<float>::infinity();
-          if (o.depth_tolerance > 0.0) {
-            for (const WarpField& w : warps) {
-              const float d = w.depth.ptr<float>(y)[x];
-              if (d > 0.0f) nearest = std::min(nearest, d);
-            }
-            nearest *= tolerance;
-          }
-          std::fill(acc.begin(), acc.end(), 0.0f);
-          float weight_sum = 0.0f;
-          for (std::size_t k = 0; k < warps.size(); ++k) {
-            const WarpField& w = warps[k];
-            const float d = w.depth.ptr<float>(y)[x];
-            if (!(d > 0.0f) || d > nearest) continue;
-            float weight = o.weights.empty() ? 1.0f : float(o.weights[k]);
-            if (o.resolution_power > 0.0) {
-              weight *= float(std::pow(d / w.source_depth.ptr<float>(y)[x], o.resolution_power));
-            }
-            if (o.angle_power > 0.0) {
-              weight *=
-                  float(std::pow(std::max(w.cos_angle.ptr<float>(y)[x], 1e-6f), o.angle_power));
-            }
-            const cv::Vec2f uv = w.map.ptr<cv::Vec2f>(y)[x];
-            sample(k, uv[0], uv[1], weight, acc.data());
-            weight_sum += weight;
-          }
-          valid[x] = weight_sum > 0.0f ? 255 : 0;
-          for (int c = 0; c < channels; ++c) {
-            out[x * channels + c] = weight_sum > 0.0f ? acc[std::size_t(c)] / weight_sum : nan;
-          }
+  cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      float* out = result.value.ptr<float>(y);
+      const float* wsum = weight_sum.ptr<float>(y);
+      uint8_t* valid = result.valid.ptr<uint8_t>(y);
+      for (int x = 0; x < size.width; ++x) {
+        // Divide, not multiply by 1/sum: a sum of tiny (denormal) weights has no finite inverse.
+        const bool hit = wsum[x] > 0.0f;
+        valid[x] = hit ? 255 : 0;
+        for (int c = 0; c < channels; ++c) {
+          out[x * channels + c] = hit ? out[x * channels + c] / wsum[x] : nan;
         }
       }
-    });
-  };
-  auto typed = [&](auto tag) {
-    using T = decltype(tag);
-    blend([&](std::size_t k, float u, float v, float w, float* acc) {
-      AddSample<T>(planes[k], u, v, w, channels, acc);
-    });
-  };
-  bool uniform = true;
-  for (const cv::Mat& p : planes) uniform &= p.depth() == planes[0].depth();
-  switch (uniform ? planes[0].depth() : -1) {
-    case CV_8U:
-      typed(uint8_t{});
-      break;
-    case CV_16F:
-      typed(cv::float16_t{});
-      break;
-    case CV_32F:
-      typed(float{});
-      break;
-    default:
-      blend([&](std::size_t k, float u, float v, float w, float* acc) {
-        samplers[k](planes[k], u, v, w, channels, acc);
-      });
-  }
+    }
+  });
   result.covered = cv::countNonZero(result.valid);
   return result;
 }
