@@ -11,11 +11,23 @@
 #include <utility>
 #include <vector>
 
+#include "maps/views/lanes.h"
 #include "maps/views/reference_view_store.h"
 
 namespace novelty::views {
 
 namespace {
+
+using lanes::AsFloat;
+using lanes::Ceil;
+using lanes::F16;
+using lanes::Floor;
+using lanes::I16;
+using lanes::kLanes;
+using lanes::Load;
+using lanes::Max;
+using lanes::Min;
+using lanes::Store;
 
 // A source vertex in the virtual camera: screen position, 1/z, and the source depth (for the
 // discontinuity test). inv_z = 0 marks an unusable vertex.
@@ -26,12 +38,15 @@ struct Vertex {
 // All source vertices, structure of arrays (contiguous loads for the vectorised rasteriser).
 struct Vertices {
   std::vector<float> x, y, inv_z, source_depth;
+  // n vertices, and padding that SIMD loads past the last one may read (never drawn: 1/z = 0).
   void Resize(std::size_t n) {
-    x.resize(n);
-    y.resize(n);
-    inv_z.resize(n);
-    source_depth.resize(n);
+    x.resize(n + kPadding);
+    y.resize(n + kPadding);
+    inv_z.resize(n + kPadding);
+    source_depth.resize(n + kPadding);
+    std::fill(inv_z.begin() + std::ptrdiff_t(n), inv_z.end(), 0.0f);
   }
+  static constexpr std::size_t kPadding = 64;
   Vertex operator[](std::size_t i) const { return {x[i], y[i], inv_z[i], source_depth[i]}; }
 };
 
@@ -44,32 +59,6 @@ void ParallelBlocks(int n, int blocks, const std::function<void(int, int)>& fn) 
 
 int ThreadCount(int requested) {
   return requested > 0 ? requested : std::max(1, cv::getNumThreads());
-}
-
-// Sixteen lanes of floats / ints with GCC's vector extensions: the compiler maps them to one
-// AVX-512 register or two AVX2 ones; comparisons give lane masks (-1 / 0), `m ? a : b` selects.
-// (Eigen's boolean arrays and select are evaluated lane by lane, which made this kernel scalar.)
-constexpr int kLanes = 16;
-typedef float F16 __attribute__((vector_size(4 * kLanes)));
-typedef int32_t I16 __attribute__((vector_size(4 * kLanes)));
-
-inline F16 Load(const float* p) {
-  F16 v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-inline void Store(float* p, F16 v) { std::memcpy(p, &v, sizeof v); }
-inline F16 Min(F16 a, F16 b) { return a < b ? a : b; }
-inline F16 Max(F16 a, F16 b) { return a > b ? a : b; }
-inline F16 AsFloat(I16 m) { return __builtin_convertvector(m, F16); }
-// floor and ceil through int conversion; x must lie within ±2^24 (callers clamp).
-inline F16 Floor(F16 x) {
-  const F16 t = AsFloat(__builtin_convertvector(x, I16));
-  return t + AsFloat(t > x);  // true = -1
-}
-inline F16 Ceil(F16 x) {
-  const F16 t = AsFloat(__builtin_convertvector(x, I16));
-  return t - AsFloat(t < x);
 }
 
 // One source pixel (T = float) or sixteen (T = F16) projected into the virtual camera:
@@ -215,89 +204,165 @@ void RasteriseQuad(const Vertices& v, int w, int u, int r, float max_ratio, cons
   }
 }
 
-// Sixteen quads of one row at a time. Between views of similar resolution nearly every quad's
-// pixel-centre bounding box holds at most 2×2 pixel centres; for those lanes the four candidate
-// pixels are decided with SIMD arithmetic — the same formulas as Rasterise — and only the z-test
-// and write are scalar. Lanes whose box holds more pixels go through RasteriseQuad.
-void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, const TargetView& t) {
-  const std::size_t base = std::size_t(r) * w;
-  const F16 zero = F16{} + 0.0f, one = zero + 1.0f, eps = zero - 1e-5f;
-  const F16 x_max = zero + float(t.width - 1), y_max = zero + float(t.height - 1);
-  const F16 lo = zero - 1e6f, hi = zero + 1e6f;
-  int u = 0;
-  for (; u + kLanes < w; u += kLanes) {
-    const std::size_t i = base + u;
-    const F16 x00 = Load(&v.x[i]), x10 = Load(&v.x[i + 1]), x01 = Load(&v.x[i + w]),
-              x11 = Load(&v.x[i + w + 1]);
-    const F16 y00 = Load(&v.y[i]), y10 = Load(&v.y[i + 1]), y01 = Load(&v.y[i + w]),
-              y11 = Load(&v.y[i + w + 1]);
-    const F16 i00 = Load(&v.inv_z[i]), i10 = Load(&v.inv_z[i + 1]), i01 = Load(&v.inv_z[i + w]),
-              i11 = Load(&v.inv_z[i + w + 1]);
-    const I16 v00 = i00 != zero, v10 = i10 != zero, v01 = i01 != zero, v11 = i11 != zero;
-    // The box; an unusable vertex takes p00's place (its triangles are not drawn).
-    const F16 bx10 = v10 ? x10 : x00, by10 = v10 ? y10 : y00;
-    const F16 bx01 = v01 ? x01 : x00, by01 = v01 ? y01 : y00;
-    const F16 bx11 = v11 ? x11 : x00, by11 = v11 ? y11 : y00;
-    const F16 qx0 = Max(Ceil(Max(Min(Min(x00, bx10), Min(bx01, bx11)), lo)), zero);
-    const F16 qx1 = Min(Floor(Min(Max(Max(x00, bx10), Max(bx01, bx11)), hi)), x_max);
-    const F16 qy0 = Max(Ceil(Max(Min(Min(y00, by10), Min(by01, by11)), lo)), zero);
-    const F16 qy1 = Min(Floor(Min(Max(Max(y00, by10), Max(by01, by11)), hi)), y_max);
-    const F16 nx = qx1 - qx0 + one, ny = qy1 - qy0 + one;
-    const I16 any = v00 & v11 & (v10 | v01) & (nx >= one) & (ny >= one);
-    const I16 small = any & (nx <= one + one) & (ny <= one + one);
-    const I16 big = any & ~small;
-    bool any_lane = false;
-    for (int k = 0; k < kLanes; ++k) any_lane |= any[k] != 0;
-    if (!any_lane) continue;
+// A quad's geometry per lane (sixteen quads, or one quad broadcast): p00, the edge vectors to
+// p10, p11 and p01, the inverse areas of triangles A = (p00, p10, p11) and B = (p00, p11, p01),
+// 1/z and source depth at the corners, and whether each triangle may be drawn.
+struct QuadLanes {
+  F16 x00, y00, ax, ay, dx, dy, bx, by, inv_a, inv_b;
+  F16 i00, i10, i01, i11, z00, z10, z01, z11;
+  I16 ok_a, ok_b;
+};
 
-    const F16 z00 = Load(&v.source_depth[i]), z10 = Load(&v.source_depth[i + 1]),
-              z01 = Load(&v.source_depth[i + w]), z11 = Load(&v.source_depth[i + w + 1]);
-    const F16 ax = x10 - x00, ay = y10 - y00;  // p10 − p00
-    const F16 dx = x11 - x00, dy = y11 - y00;  // p11 − p00
-    const F16 bx = x01 - x00, by = y01 - y00;  // p01 − p00
-    const F16 area_a = ax * dy - ay * dx, area_b = dx * by - dy * bx;
-    const F16 inv_a = one / area_a, inv_b = one / area_b;
-    const F16 ratio = zero + max_ratio, tiny = zero + 1e-12f;
-    const I16 ok_a = small & v10 & ((area_a >= tiny) | (area_a <= -tiny)) &
-                     (Max(z00, Max(z10, z11)) <= Min(z00, Min(z10, z11)) * ratio);
-    const I16 ok_b = small & v01 & ((area_b >= tiny) | (area_b <= -tiny)) &
-                     (Max(z00, Max(z11, z01)) <= Min(z00, Min(z11, z01)) * ratio);
-    F16 c_iz[4], c_zs[4], c_su[4], c_sv[4];
-    for (int c = 0; c < 4; ++c) {
-      const float ox = float(c & 1), oy = float(c >> 1);
-      const I16 in_box = (zero + ox < nx) & (zero + oy < ny);
-      const F16 qx = qx0 + ox - x00, qy = qy0 + oy - y00;
-      // Triangle A = (p00, p10, p11), B = (p00, p11, p01): weights of its 2nd and 3rd vertex.
-      const F16 wb_a = (qx * dy - qy * dx) * inv_a, wc_a = (ax * qy - ay * qx) * inv_a;
-      const F16 wb_b = (qx * by - qy * bx) * inv_b, wc_b = (dx * qy - dy * qx) * inv_b;
-      const F16 wa_a = one - wb_a - wc_a, wa_b = one - wb_b - wc_b;
-      const I16 in_a = in_box & ok_a & (wa_a >= eps) & (wb_a >= eps) & (wc_a >= eps);
-      const I16 in_b = in_box & ok_b & (wa_b >= eps) & (wb_b >= eps) & (wc_b >= eps);
-      const F16 wa = in_a ? wa_a : wa_b, wb = in_a ? wb_a : wb_b, wc = in_a ? wc_a : wc_b;
-      const F16 ib = in_a ? i10 : i11, ic = in_a ? i11 : i01;
-      const F16 zb = in_a ? z10 : z11, zc = in_a ? z11 : z01;
-      c_iz[c] = (in_a | in_b) ? wa * i00 + wb * ib + wc * ic : zero;
-      c_zs[c] = wa * z00 + wb * zb + wc * zc;
-      c_su[c] = in_a ? wb + wc : wb;  // A: (1,0),(1,1); B: (1,1),(0,1)
-      c_sv[c] = in_a ? wc : wb + wc;
-    }
-    for (int k = 0; k < kLanes; ++k) {
-      if (big[k]) {
-        RasteriseQuad(v, w, u + k, r, max_ratio, t);
-        continue;
-      }
-      if (!small[k]) continue;
-      const std::size_t j0 = std::size_t(qy0[k]) * t.width + std::size_t(qx0[k]);
-      for (int c = 0; c < 4; ++c) {
-        const float iz = c_iz[c][k];
-        if (iz == 0.0f) continue;
-        Texel& out = t.texels[j0 + std::size_t(c >> 1) * t.width + std::size_t(c & 1)];
-        if (iz <= out.inv_z) continue;  // z-test on inverse depth
-        out = {iz, c_zs[c][k], float(u + k) + c_su[c][k], float(r) + c_sv[c][k]};
+// The corners' screen positions and data (p00, p10, p01, p11) → QuadLanes; `draw` masks lanes.
+inline QuadLanes MakeQuadLanes(const F16 (&x)[4], const F16 (&y)[4], const F16 (&iz)[4],
+                        const F16 (&z)[4], I16 draw, float max_ratio) {
+  QuadLanes q;
+  const F16 zero = F16{}, tiny = zero + 1e-12f, ratio = zero + max_ratio;
+  q.x00 = x[0];
+  q.y00 = y[0];
+  q.ax = x[1] - x[0], q.ay = y[1] - y[0];  // p10 − p00
+  q.dx = x[3] - x[0], q.dy = y[3] - y[0];  // p11 − p00
+  q.bx = x[2] - x[0], q.by = y[2] - y[0];  // p01 − p00
+  const F16 area_a = q.ax * q.dy - q.ay * q.dx, area_b = q.dx * q.by - q.dy * q.bx;
+  q.inv_a = (zero + 1.0f) / area_a;
+  q.inv_b = (zero + 1.0f) / area_b;
+  q.i00 = iz[0], q.i10 = iz[1], q.i01 = iz[2], q.i11 = iz[3];
+  q.z00 = z[0], q.z10 = z[1], q.z01 = z[2], q.z11 = z[3];
+  // As Usable: every vertex usable, no depth discontinuity; and a non-degenerate triangle.
+  const I16 corners = (q.i00 != zero) & (q.i11 != zero);
+  q.ok_a = draw & corners & (q.i10 != zero) & ((area_a >= tiny) | (area_a <= -tiny)) &
+           (Max(q.z00, Max(q.z10, q.z11)) <= Min(q.z00, Min(q.z10, q.z11)) * ratio);
+  q.ok_b = draw & corners & (q.i01 != zero) & ((area_b >= tiny) | (area_b <= -tiny)) &
+           (Max(q.z00, Max(q.z11, q.z01)) <= Min(q.z00, Min(q.z11, q.z01)) * ratio);
+  return q;
+}
+
+// The surface at pixel centres (px, py), one per lane, as Rasterise computes it: hit (inside A or
+// B, and in_box), 1/z, source depth, and the source offsets from the quad's corner p00.
+struct LaneHits {
+  I16 hit;
+  F16 iz, zs, su, sv;
+};
+
+inline LaneHits Evaluate(const QuadLanes& q, F16 px, F16 py, I16 in_box) {
+  const F16 eps = F16{} - 1e-5f, one = F16{} + 1.0f;
+  const F16 qx = px - q.x00, qy = py - q.y00;
+  // Weights of each triangle's 2nd and 3rd vertex (edge functions), the 1st gets the rest.
+  const F16 wb_a = (qx * q.dy - qy * q.dx) * q.inv_a, wc_a = (q.ax * qy - q.ay * qx) * q.inv_a;
+  const F16 wb_b = (qx * q.by - qy * q.bx) * q.inv_b, wc_b = (q.dx * qy - q.dy * qx) * q.inv_b;
+  const F16 wa_a = one - wb_a - wc_a, wa_b = one - wb_b - wc_b;
+  const I16 in_a = in_box & q.ok_a & (wa_a >= eps) & (wb_a >= eps) & (wc_a >= eps);
+  const I16 in_b = in_box & q.ok_b & (wa_b >= eps) & (wb_b >= eps) & (wc_b >= eps);
+  const F16 wa = in_a ? wa_a : wa_b, wb = in_a ? wb_a : wb_b, wc = in_a ? wc_a : wc_b;
+  LaneHits h;
+  h.hit = in_a | in_b;
+  h.iz = wa * q.i00 + wb * (in_a ? q.i10 : q.i11) + wc * (in_a ? q.i11 : q.i01);
+  h.zs = wa * q.z00 + wb * (in_a ? q.z10 : q.z11) + wc * (in_a ? q.z11 : q.z01);
+  h.su = in_a ? wb + wc : wb;  // A: (1,0),(1,1); B: (1,1),(0,1)
+  h.sv = in_a ? wc : wb + wc;
+  return h;
+}
+
+// z-test and write of one lane's hit at texel j; (su, sv) offsets from source pixel (u, r).
+inline void Write(const LaneHits& h, int k, std::size_t j, float u, float r, const TargetView& t) {
+  Texel& out = t.texels[j];
+  if (h.iz[k] <= out.inv_z) return;  // z-test on inverse depth
+  out = {h.iz[k], h.zs[k], u + h.su[k], r + h.sv[k]};
+}
+
+// One quad whose box holds more than 2×2 pixel centres (magnified, or stretched): the box in
+// tiles of 4×4 pixels, each tile one 16-lane evaluation.
+void RasteriseQuadTiled(const Vertices& v, int w, int u, int r, float max_ratio,
+                        const TargetView& t, int x0, int x1, int y0, int y1) {
+  const std::size_t i = std::size_t(r) * w + u;
+  const std::size_t c[4] = {i, i + 1, i + w, i + w + 1};  // p00, p10, p01, p11
+  F16 x[4], y[4], iz[4], z[4];
+  for (int n = 0; n < 4; ++n) {
+    x[n] = F16{} + v.x[c[n]];
+    y[n] = F16{} + v.y[c[n]];
+    iz[n] = F16{} + v.inv_z[c[n]];
+    z[n] = F16{} + v.source_depth[c[n]];
+  }
+  const QuadLanes q = MakeQuadLanes(x, y, iz, z, I16{} - 1, max_ratio);
+  if (!q.ok_a[0] && !q.ok_b[0]) return;
+  F16 ox, oy;
+  for (int k = 0; k < kLanes; ++k) ox[k] = float(k & 3), oy[k] = float(k >> 2);
+  for (int ty = y0; ty <= y1; ty += 4) {
+    for (int tx = x0; tx <= x1; tx += 4) {
+      const F16 px = ox + float(tx), py = oy + float(ty);
+      const LaneHits h = Evaluate(q, px, py, (px <= float(x1)) & (py <= float(y1)));
+      for (int k = 0; k < kLanes; ++k) {
+        if (!h.hit[k]) continue;
+        Write(h, k, std::size_t(ty + (k >> 2)) * t.width + std::size_t(tx + (k & 3)), float(u),
+              float(r), t);
       }
     }
   }
-  for (; u + 1 < w; ++u) RasteriseQuad(v, w, u, r, max_ratio, t);
+}
+
+// Sixteen quads of one row at a time. Between views of similar resolution nearly every quad's
+// pixel-centre bounding box holds at most 2×2 pixel centres; for those lanes the four candidate
+// pixels are decided with SIMD arithmetic — the same formulas as Rasterise — and only the z-test
+// and write are scalar. Lanes whose box holds more pixels go through RasteriseQuadTiled.
+void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, const TargetView& t) {
+  const std::size_t base = std::size_t(r) * w;
+  const F16 zero = F16{}, one = zero + 1.0f;
+  const F16 x_max = zero + float(t.width - 1), y_max = zero + float(t.height - 1);
+  const F16 lo = zero - 1e6f, hi = zero + 1e6f;
+  F16 lane;
+  for (int k = 0; k < kLanes; ++k) lane[k] = float(k);
+  // Quads u … w−2; the last group's lanes past w−2 are masked (the vertex arrays are padded).
+  for (int u = 0; u + 1 < w; u += kLanes) {
+    const std::size_t i = base + u;
+    const std::size_t c[4] = {i, i + 1, i + w, i + w + 1};  // p00, p10, p01, p11
+    F16 x[4], y[4], iz[4];
+    I16 ok[4];
+    for (int n = 0; n < 4; ++n) {
+      x[n] = Load(&v.x[c[n]]);
+      y[n] = Load(&v.y[c[n]]);
+      iz[n] = Load(&v.inv_z[c[n]]);
+      ok[n] = iz[n] != zero;
+    }
+    ok[0] &= lane + float(u) < float(w - 1);
+    // The box; an unusable vertex takes p00's place (its triangles are not drawn).
+    F16 bx[4] = {x[0]}, by[4] = {y[0]};
+    for (int n = 1; n < 4; ++n) {
+      bx[n] = ok[n] ? x[n] : x[0];
+      by[n] = ok[n] ? y[n] : y[0];
+    }
+    const F16 qx0 = Max(Ceil(Max(Min(Min(bx[0], bx[1]), Min(bx[2], bx[3])), lo)), zero);
+    const F16 qx1 = Min(Floor(Min(Max(Max(bx[0], bx[1]), Max(bx[2], bx[3])), hi)), x_max);
+    const F16 qy0 = Max(Ceil(Max(Min(Min(by[0], by[1]), Min(by[2], by[3])), lo)), zero);
+    const F16 qy1 = Min(Floor(Min(Max(Max(by[0], by[1]), Max(by[2], by[3])), hi)), y_max);
+    const F16 nx = qx1 - qx0 + one, ny = qy1 - qy0 + one;
+    const I16 any = ok[0] & ok[3] & (ok[1] | ok[2]) & (nx >= one) & (ny >= one);
+    const I16 small = any & (nx <= one + one) & (ny <= one + one);
+    bool any_lane = false;
+    for (int k = 0; k < kLanes; ++k) any_lane |= any[k] != 0;
+    if (!any_lane) continue;
+    F16 z[4];
+    for (int n = 0; n < 4; ++n) z[n] = Load(&v.source_depth[c[n]]);
+    const QuadLanes q = MakeQuadLanes(x, y, iz, z, small, max_ratio);
+    LaneHits hits[4];
+    for (int n = 0; n < 4; ++n) {
+      const float ox = float(n & 1), oy = float(n >> 1);
+      hits[n] = Evaluate(q, qx0 + ox, qy0 + oy, (zero + ox < nx) & (zero + oy < ny));
+    }
+    for (int k = 0; k < kLanes; ++k) {
+      if (!any[k]) continue;
+      if (!small[k]) {
+        RasteriseQuadTiled(v, w, u + k, r, max_ratio, t, int(qx0[k]), int(qx1[k]), int(qy0[k]),
+                           int(qy1[k]));
+        continue;
+      }
+      const std::size_t j0 = std::size_t(qy0[k]) * t.width + std::size_t(qx0[k]);
+      for (int n = 0; n < 4; ++n) {
+        if (!hits[n].hit[k]) continue;
+        Write(hits[n], k, j0 + std::size_t(n >> 1) * t.width + std::size_t(n & 1), float(u + k),
+              float(r), t);
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -7,30 +7,129 @@
 #include <stdexcept>
 #include <string>
 
+#include "maps/views/lanes.h"
+
 namespace novelty::views {
 
 namespace {
 
-// Adds w × the bilinear sample of an n-channel plane at (u, v) to acc; coordinates clamped to the
-// image (the border replicated). C > 0 fixes the channel count at compile time (the common 1, 3
-// and 7 unroll); C = 0 takes `channels`.
-template <typename T, int C>
-inline void AddSample(const cv::Mat& plane, float u, float v, float w, int channels, float* acc) {
-  const int n = C > 0 ? C : channels;
-  const int max_x = plane.cols - 1, max_y = plane.rows - 1;
-  u = std::clamp(u, 0.0f, float(max_x));
-  v = std::clamp(v, 0.0f, float(max_y));
-  const int x0 = std::min(int(u), max_x), y0 = std::min(int(v), max_y);
-  const int x1 = std::min(x0 + 1, max_x), y1 = std::min(y0 + 1, max_y);
-  const float fx = u - float(x0), fy = v - float(y0);
-  const float w00 = w * (1 - fx) * (1 - fy), w10 = w * fx * (1 - fy), w01 = w * (1 - fx) * fy,
-              w11 = w * fx * fy;
-  const T* r0 = plane.ptr<T>(y0);
-  const T* r1 = plane.ptr<T>(y1);
-  const T *a = r0 + x0 * n, *b = r0 + x1 * n, *c = r1 + x0 * n, *d = r1 + x1 * n;
-  for (int k = 0; k < n; ++k) {
-    acc[k] += w00 * float(a[k]) + w10 * float(b[k]) + w01 * float(c[k]) + w11 * float(d[k]);
+using lanes::F16;
+using lanes::I16;
+using lanes::kLanes;
+
+// Scalar (one pixel) and vector (sixteen) forms of the few operations the sampling kernel needs,
+// so that one kernel serves the row's body and its tail.
+inline float LoadLane(const float* p, float) { return *p; }
+inline F16 LoadLane(const float* p, F16) { return lanes::Load(p); }
+inline void StoreLane(float* p, float v) { *p = v; }
+inline void StoreLane(float* p, F16 v) { lanes::Store(p, v); }
+inline int ToInt(float x) { return int(x); }
+inline I16 ToInt(F16 x) { return lanes::AsInt(x); }
+inline float ToFloat(int x) { return float(x); }
+inline F16 ToFloat(I16 x) { return lanes::AsFloat(x); }
+inline float Gather(const float* p, int i) { return p[i]; }
+inline F16 Gather(const float* p, I16 i) { return lanes::Gather(p, i); }
+inline float Pow(float x, float p) { return std::pow(x, p); }
+inline F16 Pow(F16 x, float p) {
+  for (int k = 0; k < kLanes; ++k) x[k] = std::pow(x[k], p);
+  return x;
+}
+template <typename T>
+inline T Clamp(T x, float lo, float hi) {
+  x = x < lo ? T{} + lo : x;
+  return x > hi ? T{} + hi : x;
+}
+// The (u, v) pairs of the warp map at pixel x: interleaved in memory.
+inline void LoadMap(const cv::Vec2f* map, float& u, float& v) {
+  u = (*map)[0];
+  v = (*map)[1];
+}
+inline void LoadMap(const cv::Vec2f* map, F16& u, F16& v) {
+  const F16 a = lanes::Load(&(*map)[0]), b = lanes::Load(&(*map)[0] + kLanes);
+  u = __builtin_shuffle(a, b, I16{0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30});
+  v = __builtin_shuffle(a, b, I16{1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31});
+}
+
+// Channels whose accumulator rows the final pass keeps in registers (more are read per pixel).
+constexpr int kMaxPlanarChannels = 8;
+
+// One view's plane as float, continuous: the kernel gathers from it by index.
+struct FloatPlane {
+  const float* data;
+  int cols, rows, channels;
+};
+
+FloatPlane AsFloatPlane(const cv::Mat& plane, cv::Mat& scratch) {
+  const cv::Mat* m = &plane;
+  if (plane.depth() != CV_32F || !plane.isContinuous()) {
+    plane.convertTo(scratch, CV_32F);
+    m = &scratch;
   }
+  return {m->ptr<float>(), m->cols, m->rows, m->channels()};
+}
+
+// What the kernel reads for one view (all per-pixel inputs are rows of the virtual image).
+struct ViewInputs {
+  const WarpField* warp;
+  FloatPlane plane;
+  float weight;
+};
+
+// Adds the view's weighted bilinear samples at pixels [x, x + lanes) of row y to the planar
+// accumulators (one CV_32FC1 per channel) and the weight sum. Coordinates are clamped to the
+// source image (the border replicated). T = float for one pixel, F16 for sixteen.
+template <typename T>
+inline void AccumulatePixels(const ViewInputs& in, const BlendOptions& o, const cv::Mat& nearest,
+                             int y, int x, std::vector<cv::Mat>& acc, cv::Mat& weight_sum) {
+  const WarpField& w = *in.warp;
+  const FloatPlane& p = in.plane;
+  const T d = LoadLane(w.depth.ptr<float>(y) + x, T{});
+  auto valid = d > 0.0f;
+  if (!nearest.empty()) valid = valid & (d <= LoadLane(nearest.ptr<float>(y) + x, T{}));
+  T weight = T{} + in.weight;
+  if (o.resolution_power > 0.0) {
+    weight *= Pow(d / LoadLane(w.source_depth.ptr<float>(y) + x, T{}), float(o.resolution_power));
+  }
+  if (o.angle_power > 0.0) {
+    const T cos_angle = LoadLane(w.cos_angle.ptr<float>(y) + x, T{});
+    weight *= Pow(cos_angle > 1e-6f ? cos_angle : T{} + 1e-6f, float(o.angle_power));
+  }
+  weight = valid ? weight : T{};
+  T u, v;
+  LoadMap(w.map.ptr<cv::Vec2f>(y) + x, u, v);
+  u = Clamp(u, 0.0f, float(p.cols - 1));
+  v = Clamp(v, 0.0f, float(p.rows - 1));
+  const auto x0 = ToInt(u), y0 = ToInt(v);  // non-negative: truncation is floor
+  const auto x1 = x0 + (x0 < p.cols - 1 ? 1 : 0), y1 = y0 + (y0 < p.rows - 1 ? 1 : 0);
+  const T fx = u - ToFloat(x0), fy = v - ToFloat(y0);
+  const T w00 = weight * (1.0f - fx) * (1.0f - fy), w10 = weight * fx * (1.0f - fy),
+          w01 = weight * (1.0f - fx) * fy, w11 = weight * fx * fy;
+  const int n = p.channels;
+  const auto i00 = (y0 * p.cols + x0) * n, i10 = (y0 * p.cols + x1) * n;
+  const auto i01 = (y1 * p.cols + x0) * n, i11 = (y1 * p.cols + x1) * n;
+  for (int c = 0; c < n; ++c) {
+    const T sample = w00 * Gather(p.data, i00 + c) + w10 * Gather(p.data, i10 + c) +
+                     w01 * Gather(p.data, i01 + c) + w11 * Gather(p.data, i11 + c);
+    float* a = acc[std::size_t(c)].ptr<float>(y) + x;
+    StoreLane(a, LoadLane(a, T{}) + (valid ? sample : T{}));  // select: a NaN sample stays out
+  }
+  float* ws = weight_sum.ptr<float>(y) + x;
+  StoreLane(ws, LoadLane(ws, T{}) + weight);
+}
+
+// Adds one view to the accumulators, sixteen pixels at a time.
+void AccumulateView(const ViewInputs& in, const BlendOptions& o, const cv::Mat& nearest,
+                    std::vector<cv::Mat>& acc, cv::Mat& weight_sum) {
+  const int width = weight_sum.cols;
+  cv::parallel_for_(cv::Range(0, weight_sum.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      int x = 0;
+      for (; x + kLanes <= width; x += kLanes) {
+        AccumulatePixels<F16>(in, o, nearest, y, x, acc, weight_sum);
+      }
+      for (; x < width; ++x) AccumulatePixels<float>(in, o, nearest, y, x, acc, weight_sum);
+    }
+  });
 }
 
 // Per pixel, the nearest warped depth over all views × (1 + tolerance); +inf where none.
@@ -45,77 +144,6 @@ cv::Mat NearestDepth(const std::vector<WarpField>& warps, double tolerance) {
   }
   nearest *= 1.0 + tolerance;
   return nearest;
-}
-
-// The per-frame images the per-pixel weights need, computed once for all views.
-struct PixelLimits {
-  cv::Mat nearest;  // depth limit (depth_tolerance), empty if unused
-};
-
-// Adds one view's weighted samples to the accumulators (acc: n channels, weight_sum: 1).
-template <typename T, int C>
-void AccumulateView(const WarpField& w, const cv::Mat& plane, float view_weight,
-                    const PixelLimits& limits, const BlendOptions& o, int channels, cv::Mat& acc,
-                    cv::Mat& weight_sum) {
-  const cv::Mat& nearest = limits.nearest;
-  const float resolution_power = float(o.resolution_power), angle_power = float(o.angle_power);
-  cv::parallel_for_(cv::Range(0, acc.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      const float* depth = w.depth.ptr<float>(y);
-      const cv::Vec2f* map = w.map.ptr<cv::Vec2f>(y);
-      const float* limit = nearest.empty() ? nullptr : nearest.ptr<float>(y);
-      float* sum = acc.ptr<float>(y);
-      float* wsum = weight_sum.ptr<float>(y);
-      for (int x = 0; x < acc.cols; ++x) {
-        const float d = depth[x];
-        if (!(d > 0.0f) || (limit && d > limit[x])) continue;
-        float weight = view_weight;
-        if (resolution_power > 0.0f) {
-          weight *= std::pow(d / w.source_depth.ptr<float>(y)[x], resolution_power);
-        }
-        if (angle_power > 0.0f) {
-          weight *= std::pow(std::max(w.cos_angle.ptr<float>(y)[x], 1e-6f), angle_power);
-        }
-        AddSample<T, C>(plane, map[x][0], map[x][1], weight, channels,
-                        sum + std::size_t(x) * (C > 0 ? C : channels));
-        wsum[x] += weight;
-      }
-    }
-  });
-}
-
-using Accumulator = void (*)(const WarpField&, const cv::Mat&, float, const PixelLimits&,
-                             const BlendOptions&, int, cv::Mat&, cv::Mat&);
-
-template <typename T>
-Accumulator AccumulatorForChannels(int channels) {
-  switch (channels) {
-    case 1:
-      return &AccumulateView<T, 1>;
-    case 3:
-      return &AccumulateView<T, 3>;
-    case 7:
-      return &AccumulateView<T, 7>;
-  }
-  return &AccumulateView<T, 0>;
-}
-
-Accumulator AccumulatorFor(int depth, int channels) {
-  switch (depth) {
-    case CV_8U:
-      return AccumulatorForChannels<uint8_t>(channels);
-    case CV_16U:
-      return AccumulatorForChannels<uint16_t>(channels);
-    case CV_16S:
-      return AccumulatorForChannels<int16_t>(channels);
-    case CV_16F:
-      return AccumulatorForChannels<cv::float16_t>(channels);
-    case CV_32F:
-      return AccumulatorForChannels<float>(channels);
-    case CV_64F:
-      return AccumulatorForChannels<double>(channels);
-  }
-  throw std::invalid_argument("BlendPlanes: unsupported plane depth " + std::to_string(depth));
 }
 
 }  // namespace
@@ -133,7 +161,6 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
   }
   const int channels = planes[0].channels();
   const cv::Size size = warps[0].depth.size();
-  std::vector<Accumulator> accumulators;
   for (std::size_t k = 0; k < warps.size(); ++k) {
     if (planes[k].channels() != channels || warps[k].depth.size() != size ||
         warps[k].map.size() != size) {
@@ -145,22 +172,27 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
           "BlendPlanes: angle_power needs warps computed with "
           "compute_view_angles");
     }
-    accumulators.push_back(AccumulatorFor(planes[k].depth(), channels));
+    const int depth = planes[k].depth();
+    if (depth != CV_8U && depth != CV_16U && depth != CV_16S && depth != CV_16F &&
+        depth != CV_32F && depth != CV_64F) {
+      throw std::invalid_argument("BlendPlanes: unsupported plane depth " + std::to_string(depth));
+    }
   }
-  // View by view into accumulators (streaming through each warp field once), then one pass
-  // dividing by the weight sum.
-  PixelLimits limits;
-  if (o.depth_tolerance > 0.0) limits.nearest = NearestDepth(warps, o.depth_tolerance);
-  cv::Mat acc(size, CV_32FC(channels), cv::Scalar::all(0));
-  acc = acc.reshape(channels);  // Scalar::all covers ≤ 4 channels; zero the rest below
-  acc.reshape(1).setTo(0.0f);
-  cv::Mat weight_sum(size, CV_32FC1, cv::Scalar(0));
+  // View by view into planar accumulators (streaming through each warp field once), then one
+  // pass dividing by the weight sum and interleaving the channels.
+  const cv::Mat nearest = o.depth_tolerance > 0.0 ? NearestDepth(warps, o.depth_tolerance)
+                                                  : cv::Mat();
+  std::vector<cv::Mat> acc(static_cast<std::size_t>(channels));
+  for (cv::Mat& a : acc) a = cv::Mat::zeros(size, CV_32FC1);
+  cv::Mat weight_sum = cv::Mat::zeros(size, CV_32FC1);
+  cv::Mat scratch;
   for (std::size_t k = 0; k < warps.size(); ++k) {
-    const float view_weight = o.weights.empty() ? 1.0f : float(o.weights[k]);
-    accumulators[k](warps[k], planes[k], view_weight, limits, o, channels, acc, weight_sum);
+    const ViewInputs in{&warps[k], AsFloatPlane(planes[k], scratch),
+                        o.weights.empty() ? 1.0f : float(o.weights[k])};
+    AccumulateView(in, o, nearest, acc, weight_sum);
   }
   BlendResult result;
-  result.value = acc;  // divided in place
+  result.value.create(size, CV_32FC(channels));
   result.valid.create(size, CV_8UC1);
   const float nan = std::numeric_limits<float>::quiet_NaN();
   cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
@@ -168,12 +200,17 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
       float* out = result.value.ptr<float>(y);
       const float* wsum = weight_sum.ptr<float>(y);
       uint8_t* valid = result.valid.ptr<uint8_t>(y);
+      const float* a[kMaxPlanarChannels];
+      const int n = std::min(channels, kMaxPlanarChannels);
+      for (int c = 0; c < n; ++c) a[c] = acc[std::size_t(c)].ptr<float>(y);
       for (int x = 0; x < size.width; ++x) {
-        // Divide, not multiply by 1/sum: a sum of tiny (denormal) weights has no finite inverse.
         const bool hit = wsum[x] > 0.0f;
         valid[x] = hit ? 255 : 0;
-        for (int c = 0; c < channels; ++c) {
-          out[x * channels + c] = hit ? out[x * channels + c] / wsum[x] : nan;
+        float* o_px = out + std::size_t(x) * channels;
+        // Divide, not multiply by 1/sum: a sum of tiny (denormal) weights has no finite inverse.
+        for (int c = 0; c < n; ++c) o_px[c] = hit ? a[c][x] / wsum[x] : nan;
+        for (int c = n; c < channels; ++c) {
+          o_px[c] = hit ? acc[std::size_t(c)].ptr<float>(y)[x] / wsum[x] : nan;
         }
       }
     }

@@ -1,0 +1,56 @@
+// Sixteen lanes of floats / ints with GCC's vector extensions, for the per-pixel kernels of
+// warping and blending: the compiler maps them to one AVX-512 register or two AVX2 ones;
+// comparisons give lane masks (-1 / 0) and `mask ? a : b` selects per lane. (Eigen's boolean
+// arrays and select are evaluated lane by lane, which kept those kernels scalar.) Arithmetic with
+// a float broadcasts it: `F16{} + 1.0f` is sixteen ones.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#if defined(__AVX512F__)
+#include <immintrin.h>
+#endif
+
+namespace novelty::views::lanes {
+
+constexpr int kLanes = 16;
+typedef float F16 __attribute__((vector_size(4 * kLanes)));
+typedef int32_t I16 __attribute__((vector_size(4 * kLanes)));
+
+inline F16 Load(const float* p) {
+  F16 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void Store(float* p, F16 v) { std::memcpy(p, &v, sizeof v); }
+inline F16 Min(F16 a, F16 b) { return a < b ? a : b; }
+inline F16 Max(F16 a, F16 b) { return a > b ? a : b; }
+inline F16 AsFloat(I16 m) { return __builtin_convertvector(m, F16); }
+inline I16 AsInt(F16 x) { return __builtin_convertvector(x, I16); }  // truncates
+/// 0, 1, …, 15.
+inline F16 Iota() {
+  F16 v;
+  for (int k = 0; k < kLanes; ++k) v[k] = float(k);
+  return v;
+}
+/// floor and ceil through int conversion; x must lie within ±2^24 (callers clamp).
+inline F16 Floor(F16 x) {
+  const F16 t = AsFloat(AsInt(x));
+  return t + AsFloat(t > x);  // true = -1
+}
+inline F16 Ceil(F16 x) {
+  const F16 t = AsFloat(AsInt(x));
+  return t - AsFloat(t < x);
+}
+/// p[index[k]] per lane: one gather instruction with AVX-512 (GCC does not emit it for the loop).
+inline F16 Gather(const float* p, I16 index) {
+#if defined(__AVX512F__)
+  return (F16)_mm512_i32gather_ps((__m512i)index, p, 4);
+#else
+  F16 v;
+  for (int k = 0; k < kLanes; ++k) v[k] = p[index[k]];
+  return v;
+#endif
+}
+
+}  // namespace novelty::views::lanes
