@@ -62,15 +62,16 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   std::vector<cv::Mat> p1(kChannels);
   for (cv::Mat& m : p1) m.create(camera.height, camera.width, CV_32FC1);
   cv::Mat surprise(camera.height, camera.width, CV_32FC1, cv::Scalar(0));
+  stats::ChannelPlanes channels;
   for (int k = 0; k < 3; ++k) {
-    const stats::ConstNormalGammaPlanes prior_k{p0[kAlpha].ptr<float>(), p0[kBeta + k].ptr<float>(),
-                                                p0[kTau + k].ptr<float>(),
-                                                p0[kSigma + k].ptr<float>()};
-    const stats::NormalGammaPlanes post_k{p1[kAlpha].ptr<float>(), p1[kBeta + k].ptr<float>(),
-                                          p1[kTau + k].ptr<float>(), p1[kSigma + k].ptr<float>()};
-    stats::UpdateAndAccumulateSurprise(x[k].ptr<float>(), prior_k, post_k, surprise.ptr<float>(),
-                                       std::size_t(n), options_.surprise);
+    channels.x.push_back(x[k].ptr<float>());
+    channels.prior.push_back({p0[kAlpha].ptr<float>(), p0[kBeta + k].ptr<float>(),
+                              p0[kTau + k].ptr<float>(), p0[kSigma + k].ptr<float>()});
+    channels.posterior.push_back({p1[kAlpha].ptr<float>(), p1[kBeta + k].ptr<float>(),
+                                  p1[kTau + k].ptr<float>(), p1[kSigma + k].ptr<float>()});
   }
+  stats::UpdateAndAccumulateSurprise(channels, surprise.ptr<float>(), std::size_t(n),
+                                     options_.surprise);
 
   AppearanceProducts out;
   out.valid = prior.valid;

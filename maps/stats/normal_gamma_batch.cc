@@ -1,6 +1,10 @@
 #include "maps/stats/normal_gamma_batch.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <opencv2/core/utility.hpp>
 #include <limits>
 
 namespace novelty::stats {
@@ -8,63 +12,127 @@ namespace novelty::stats {
 namespace {
 
 constexpr int kLanes = 16;
+// Packets per parallel block: enough work per task to hide the thread pool's overhead.
+constexpr std::size_t kPacketsPerBlock = 256;
 using Packet = Eigen::Array<float, kLanes, 1>;
 using PacketMap = Eigen::Map<Packet, Eigen::Unaligned>;
 using ConstPacketMap = Eigen::Map<const Packet, Eigen::Unaligned>;
 
+// One pixel in precision T (the scalar reference).
 template <class T>
-void ProcessOne(std::size_t i, const float* x, ConstNormalGammaPlanes prior,
-                NormalGammaPlanes posterior, float* surprise, const SurpriseBatchOptions& o) {
-  const NormalGammaT<T> p0{T(prior.alpha[i]), T(prior.beta[i]), T(prior.tau[i]), T(prior.sigma[i])};
-  if (std::isnan(x[i])) {
-    posterior.alpha[i] = prior.alpha[i];
-    posterior.beta[i] = prior.beta[i];
-    posterior.tau[i] = prior.tau[i];
-    posterior.sigma[i] = prior.sigma[i];
-    surprise[i] = std::numeric_limits<float>::quiet_NaN();
-    return;
+void ProcessOne(std::size_t i, const ChannelPlanes& c, float* surprise,
+                const SurpriseBatchOptions& o) {
+  const int channels = int(c.x.size());
+  bool valid = true;
+  for (int k = 0; k < channels; ++k) valid &= !std::isnan(c.x[k][i]);
+  NormalGammaT<T> p0[kMaxChannels], p[kMaxChannels];
+  T shift[kMaxChannels];
+  for (int k = 0; k < channels; ++k) {
+    const ConstNormalGammaPlanes& q = c.prior[std::size_t(k)];
+    p0[k] = {T(q.alpha[i]), T(q.beta[i]), T(q.tau[i]), T(q.sigma[i])};
+    p[k] = valid ? UpdateWithForgetting(p0[k], T(c.x[k][i]), o.update, &shift[k]) : p0[k];
   }
-  T shift;
-  const NormalGammaT<T> p = UpdateWithForgetting(p0, T(x[i]), o.update, &shift);
-  const T kl = NormalGammaKLWithShift(p, p0, shift, o.kl);
-  posterior.alpha[i] = static_cast<float>(p.alpha);
-  posterior.beta[i] = static_cast<float>(p.beta);
-  posterior.tau[i] = static_cast<float>(p.tau);
-  posterior.sigma[i] = static_cast<float>(p.sigma);
-  surprise[i] += static_cast<float>(kl);
+  T kl = valid ? NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl) : T(0);
+  for (int k = 0; valid && k < channels; ++k) kl += NormalGammaKLOtherTerms(p[k], p0[k], shift[k]);
+  for (int k = 0; k < channels; ++k) {
+    const NormalGammaPlanes& q = c.posterior[std::size_t(k)];
+    q.alpha[i] = static_cast<float>(p[k].alpha);
+    q.beta[i] = static_cast<float>(p[k].beta);
+    q.tau[i] = static_cast<float>(p[k].tau);
+    q.sigma[i] = static_cast<float>(p[k].sigma);
+  }
+  surprise[i] = valid ? surprise[i] + static_cast<float>(kl)
+                      : std::numeric_limits<float>::quiet_NaN();
 }
 
-void ProcessPacket(std::size_t i, const float* x, ConstNormalGammaPlanes prior,
-                   NormalGammaPlanes posterior, float* surprise, const SurpriseBatchOptions& o) {
-  const NormalGammaT<Packet> p0{ConstPacketMap(prior.alpha + i), ConstPacketMap(prior.beta + i),
-                                ConstPacketMap(prior.tau + i), ConstPacketMap(prior.sigma + i)};
-  const Packet xi = ConstPacketMap(x + i);
-  const auto valid = (xi == xi);  // false for NaN
-  // Invalid lanes are computed on the prior's own τ (harmless numbers) and masked afterwards.
-  const Packet x_safe = valid.select(xi, p0.tau);
-  Packet shift;
-  const NormalGammaT<Packet> p = UpdateWithForgetting(p0, x_safe, o.update, &shift);
-  const Packet kl = NormalGammaKLWithShift(p, p0, shift, o.kl);
-  PacketMap(posterior.alpha + i) = valid.select(p.alpha, p0.alpha);
-  PacketMap(posterior.beta + i) = valid.select(p.beta, p0.beta);
-  PacketMap(posterior.tau + i) = valid.select(p.tau, p0.tau);
-  PacketMap(posterior.sigma + i) = valid.select(p.sigma, p0.sigma);
+// Sixteen pixels in float. Every prior is read before any posterior is written (in-place use).
+void ProcessPacket(std::size_t i, const ChannelPlanes& c, float* surprise,
+                   const SurpriseBatchOptions& o) {
+  const int channels = int(c.x.size());
+  Packet x[kMaxChannels];
+  Eigen::Array<bool, kLanes, 1> valid = Eigen::Array<bool, kLanes, 1>::Constant(true);
+  for (int k = 0; k < channels; ++k) {
+    x[k] = ConstPacketMap(c.x[k] + i);
+    valid = valid && (x[k] == x[k]);  // false for NaN
+  }
+  // Eigen evaluates select lane by lane: the usual packet without NaN skips it.
+  const bool all_valid = valid.all();
+  NormalGammaT<Packet> p0[kMaxChannels], p[kMaxChannels];
+  Packet kl = Packet::Zero();
+  for (int k = 0; k < channels; ++k) {
+    const ConstNormalGammaPlanes& q = c.prior[std::size_t(k)];
+    p0[k] = {ConstPacketMap(q.alpha + i), ConstPacketMap(q.beta + i), ConstPacketMap(q.tau + i),
+             ConstPacketMap(q.sigma + i)};
+    // Invalid lanes are computed on the prior's own τ (harmless numbers) and masked afterwards.
+    if (!all_valid) x[k] = valid.select(x[k], p0[k].tau).eval();
+    Packet shift;
+    p[k] = UpdateWithForgetting(p0[k], x[k], o.update, &shift);
+    kl += NormalGammaKLOtherTerms(p[k], p0[k], shift);
+  }
+  kl += NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl);
   PacketMap s(surprise + i);
-  s = valid.select(s + kl, Packet::Constant(std::numeric_limits<float>::quiet_NaN()));
+  for (int k = 0; k < channels; ++k) {
+    const NormalGammaPlanes& q = c.posterior[std::size_t(k)];
+    if (all_valid) {
+      PacketMap(q.alpha + i) = p[k].alpha;
+      PacketMap(q.beta + i) = p[k].beta;
+      PacketMap(q.tau + i) = p[k].tau;
+      PacketMap(q.sigma + i) = p[k].sigma;
+    } else {
+      PacketMap(q.alpha + i) = valid.select(p[k].alpha, p0[k].alpha);
+      PacketMap(q.beta + i) = valid.select(p[k].beta, p0[k].beta);
+      PacketMap(q.tau + i) = valid.select(p[k].tau, p0[k].tau);
+      PacketMap(q.sigma + i) = valid.select(p[k].sigma, p0[k].sigma);
+    }
+  }
+  if (all_valid) {
+    s += kl;
+  } else {
+    s = valid.select(s + kl, Packet::Constant(std::numeric_limits<float>::quiet_NaN()));
+  }
+}
+
+void CheckChannels(const ChannelPlanes& c) {
+  const std::size_t n = c.x.size();
+  if (n == 0 || n > std::size_t(kMaxChannels) || c.prior.size() != n || c.posterior.size() != n) {
+    throw std::invalid_argument("UpdateAndAccumulateSurprise: need 1 to " +
+                                std::to_string(kMaxChannels) +
+                                " channels with one prior and posterior each, got " +
+                                std::to_string(n) + "/" + std::to_string(c.prior.size()) + "/" +
+                                std::to_string(c.posterior.size()));
+  }
+  for (std::size_t k = 1; k < n; ++k) {
+    if (c.prior[k].alpha != c.prior[0].alpha || c.posterior[k].alpha != c.posterior[0].alpha) {
+      throw std::invalid_argument("UpdateAndAccumulateSurprise: channel " + std::to_string(k) +
+                                  " does not share channel 0's alpha plane");
+    }
+  }
 }
 
 }  // namespace
 
+void UpdateAndAccumulateSurprise(const ChannelPlanes& planes, float* surprise, std::size_t n,
+                                 const SurpriseBatchOptions& options) {
+  CheckChannels(planes);
+  // Pixels are independent: blocks of whole packets go to OpenCV's thread pool.
+  const std::size_t block = kPacketsPerBlock * kLanes;
+  const int blocks = int((n + block - 1) / block);
+  cv::parallel_for_(cv::Range(0, blocks), [&](const cv::Range& r) {
+    const std::size_t end = std::min(n, std::size_t(r.end) * block);
+    std::size_t i = std::size_t(r.start) * block;
+    if (options.kernel == BatchKernel::kVectorised) {
+      for (; i + kLanes <= end; i += kLanes) ProcessPacket(i, planes, surprise, options);
+      for (; i < end; ++i) ProcessOne<float>(i, planes, surprise, options);
+      return;
+    }
+    for (; i < end; ++i) ProcessOne<double>(i, planes, surprise, options);
+  });
+}
+
 void UpdateAndAccumulateSurprise(const float* x, ConstNormalGammaPlanes prior,
                                  NormalGammaPlanes posterior, float* surprise, std::size_t n,
                                  const SurpriseBatchOptions& options) {
-  std::size_t i = 0;
-  if (options.kernel == BatchKernel::kVectorised) {
-    for (; i + kLanes <= n; i += kLanes) ProcessPacket(i, x, prior, posterior, surprise, options);
-    for (; i < n; ++i) ProcessOne<float>(i, x, prior, posterior, surprise, options);
-    return;
-  }
-  for (; i < n; ++i) ProcessOne<double>(i, x, prior, posterior, surprise, options);
+  UpdateAndAccumulateSurprise(ChannelPlanes{{x}, {prior}, {posterior}}, surprise, n, options);
 }
 
 }  // namespace novelty::stats

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "maps/stats/normal_gamma.h"
 #include "maps/stats/normal_gamma_kl.h"
@@ -38,10 +39,25 @@ struct SurpriseBatchOptions {
   BatchKernel kernel = BatchKernel::kVectorised;
 };
 
-/// For each of n pixels i of one channel: posterior[i] = UpdateWithForgetting(prior[i], x[i]) and
-/// surprise[i] += KL(posterior[i] ‖ prior[i]) — accumulation gives eq. 4.21 over channels.
-/// A pixel whose observation x[i] is NaN (no data) keeps its prior as posterior and gets NaN
-/// surprise, so it stays recognisably invalid. `posterior` may alias `prior`.
+/// Channels observed together at the same pixels (Y, Cb, Cr): their α planes are one plane
+/// (eq. 4.10 does not depend on the data), so prior[k].alpha must be the same pointer for every
+/// k, and posterior[k].alpha too. At most kMaxChannels channels.
+struct ChannelPlanes {
+  std::vector<const float*> x;                // observation per channel
+  std::vector<ConstNormalGammaPlanes> prior;  // per channel, α shared
+  std::vector<NormalGammaPlanes> posterior;   // per channel, α shared; may alias prior
+};
+inline constexpr int kMaxChannels = 4;
+
+/// For each of n pixels i and each channel k: posterior = UpdateWithForgetting(prior, x) and
+/// surprise[i] += Σ_k KL(posterior ‖ prior) (eq. 4.21 over channels). The KL's α terms are the
+/// same for all channels and computed once. A pixel with NaN in any channel (no data) keeps its
+/// prior as posterior and gets NaN surprise, so it stays recognisably invalid. Throws
+/// std::invalid_argument when the channels' counts or α planes disagree.
+void UpdateAndAccumulateSurprise(const ChannelPlanes& planes, float* surprise, std::size_t n,
+                                 const SurpriseBatchOptions& options);
+
+/// One channel (see above).
 void UpdateAndAccumulateSurprise(const float* x, ConstNormalGammaPlanes prior,
                                  NormalGammaPlanes posterior, float* surprise, std::size_t n,
                                  const SurpriseBatchOptions& options);

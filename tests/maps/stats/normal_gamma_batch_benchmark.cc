@@ -29,14 +29,15 @@ void BM_UpdateAndSurprise(benchmark::State& state) {
   o.kernel = kernel;
   for (auto _ : state) {
     std::fill(surprise.begin(), surprise.end(), 0.0f);
-    for (int c = 0; c < kChannels; ++c) {
-      const std::size_t off = c * n;
-      UpdateAndAccumulateSurprise(
-          x.data() + off,
-          {alpha.data() + off, beta.data() + off, tau.data() + off, sigma.data() + off},
-          {pa.data() + off, pb.data() + off, pt.data() + off, ps.data() + off}, surprise.data(), n,
-          o);
+    // Y, Cb, Cr at once, sharing channel 0's α plane, as the appearance map calls it.
+    ChannelPlanes c;
+    for (int k = 0; k < kChannels; ++k) {
+      const std::size_t off = k * n;
+      c.x.push_back(x.data() + off);
+      c.prior.push_back({alpha.data(), beta.data() + off, tau.data() + off, sigma.data() + off});
+      c.posterior.push_back({pa.data(), pb.data() + off, pt.data() + off, ps.data() + off});
     }
+    UpdateAndAccumulateSurprise(c, surprise.data(), n, o);
     benchmark::DoNotOptimize(surprise.data());
     benchmark::ClobberMemory();
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace novelty::stats {
@@ -109,6 +110,65 @@ TEST(NormalGammaBatch, InPlaceUpdateEqualsOutOfPlace) {
   EXPECT_EQ(in_place.tau, out.tau);
   EXPECT_EQ(in_place.beta, out.beta);
   EXPECT_EQ(s1, s2);
+}
+
+TEST(NormalGammaBatch, ChannelsSharingAlphaEqualSeparateChannels) {
+  // Three channels with one α plane against three single-channel calls on copies of α: the same
+  // posteriors, and the summed surprise (α's KL terms once per pixel either way: the separate
+  // calls count them three times, so they are subtracted twice from that sum).
+  const std::size_t n = 517;  // not a multiple of 16: the tail runs the scalar code
+  for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
+    SurpriseBatchOptions o;
+    o.kernel = kernel;
+    std::vector<Planes> prior, separate;
+    for (unsigned k = 0; k < 3; ++k) prior.emplace_back(n, 20 + k);
+    for (unsigned k = 1; k < 3; ++k) prior[k].alpha = prior[0].alpha;
+    prior[1].x[7] = std::numeric_limits<float>::quiet_NaN();  // one channel without data
+    separate = prior;
+    std::vector<float> shared_surprise(n, 0.0f), separate_surprise(n, 0.0f);
+    std::vector<Planes> shared = prior;
+    ChannelPlanes c;
+    for (int k = 0; k < 3; ++k) {
+      c.x.push_back(prior[k].x.data());
+      c.prior.push_back(prior[k].View());
+      c.prior.back().alpha = prior[0].alpha.data();
+      c.posterior.push_back(shared[k].Mutable());
+      c.posterior.back().alpha = shared[0].alpha.data();
+    }
+    UpdateAndAccumulateSurprise(c, shared_surprise.data(), n, o);
+    for (int k = 0; k < 3; ++k) {
+      UpdateAndAccumulateSurprise(prior[k].x.data(), prior[k].View(), separate[k].Mutable(),
+                                  separate_surprise.data(), n, o);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i == 7) {
+        EXPECT_TRUE(std::isnan(shared_surprise[i]));
+        EXPECT_EQ(shared[0].alpha[i], prior[0].alpha[i]);  // the prior kept in every channel
+        EXPECT_EQ(shared[2].tau[i], prior[2].tau[i]);
+        continue;
+      }
+      const double alpha_terms =
+          NormalGammaKLAlphaTerms(double(separate[0].alpha[i]), double(prior[0].alpha[i]));
+      ASSERT_NEAR(shared_surprise[i], separate_surprise[i] - 2.0 * alpha_terms,
+                  1e-4 * (1.0 + separate_surprise[i]))
+          << i;
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_EQ(shared[0].alpha[i], separate[k].alpha[i]) << i;
+        ASSERT_FLOAT_EQ(shared[k].beta[i], separate[k].beta[i]) << i;
+        ASSERT_FLOAT_EQ(shared[k].tau[i], separate[k].tau[i]) << i;
+        ASSERT_FLOAT_EQ(shared[k].sigma[i], separate[k].sigma[i]) << i;
+      }
+    }
+  }
+}
+
+TEST(NormalGammaBatch, ChannelsMustShareAlpha) {
+  Planes a(16, 1), b(16, 2);
+  std::vector<float> surprise(16, 0.0f);
+  ChannelPlanes c{{a.x.data(), b.x.data()}, {a.View(), b.View()}, {a.Mutable(), b.Mutable()}};
+  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, {}), std::invalid_argument);
+  c.posterior.pop_back();
+  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, {}), std::invalid_argument);
 }
 
 }  // namespace
