@@ -11,23 +11,23 @@
 #include <utility>
 #include <vector>
 
-#include "maps/views/lanes.h"
+#include "maps/stats/lanes.h"
 #include "maps/views/reference_view_store.h"
 
 namespace novelty::views {
 
 namespace {
 
-using lanes::AsFloat;
-using lanes::Ceil;
-using lanes::F16;
-using lanes::Floor;
-using lanes::I16;
-using lanes::kLanes;
-using lanes::Load;
-using lanes::Max;
-using lanes::Min;
-using lanes::Store;
+using stats::lanes::AsFloat;
+using stats::lanes::Ceil;
+using stats::lanes::F16;
+using stats::lanes::Floor;
+using stats::lanes::I16;
+using stats::lanes::kLanes;
+using stats::lanes::Load;
+using stats::lanes::Max;
+using stats::lanes::Min;
+using stats::lanes::Store;
 
 // A source vertex in the virtual camera: screen position, 1/z, and the source depth (for the
 // discontinuity test). inv_z = 0 marks an unusable vertex.
@@ -95,8 +95,7 @@ void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, co
   const Projection project{a.x(),          a.y(),          a.z(),          t.x(),
                            t.y(),          t.z(),          float(dst.fx),  float(dst.fy),
                            float(dst.cx),  float(dst.cy),  float(near_plane)};
-  F16 lane_u;
-  for (int k = 0; k < kLanes; ++k) lane_u[k] = float(k);
+  const F16 lane_u = stats::lanes::Iota();
   ParallelBlocks(src.height, ThreadCount(threads), [&](int r0, int r1) {
     for (int r = r0; r < r1; ++r) {
       const float* d = depth.ptr<float>(r);
@@ -309,8 +308,7 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
   const F16 zero = F16{}, one = zero + 1.0f;
   const F16 x_max = zero + float(t.width - 1), y_max = zero + float(t.height - 1);
   const F16 lo = zero - 1e6f, hi = zero + 1e6f;
-  F16 lane;
-  for (int k = 0; k < kLanes; ++k) lane[k] = float(k);
+  const F16 lane = stats::lanes::Iota();
   // Quads u … w−2; the last group's lanes past w−2 are masked (the vertex arrays are padded).
   for (int u = 0; u + 1 < w; u += kLanes) {
     const std::size_t i = base + u;

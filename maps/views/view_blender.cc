@@ -7,28 +7,28 @@
 #include <stdexcept>
 #include <string>
 
-#include "maps/views/lanes.h"
+#include "maps/stats/lanes.h"
 
 namespace novelty::views {
 
 namespace {
 
-using lanes::F16;
-using lanes::I16;
-using lanes::kLanes;
+using stats::lanes::F16;
+using stats::lanes::I16;
+using stats::lanes::kLanes;
 
 // Scalar (one pixel) and vector (sixteen) forms of the few operations the sampling kernel needs,
 // so that one kernel serves the row's body and its tail.
 inline float LoadLane(const float* p, float) { return *p; }
-inline F16 LoadLane(const float* p, F16) { return lanes::Load(p); }
+inline F16 LoadLane(const float* p, F16) { return stats::lanes::Load(p); }
 inline void StoreLane(float* p, float v) { *p = v; }
-inline void StoreLane(float* p, F16 v) { lanes::Store(p, v); }
+inline void StoreLane(float* p, F16 v) { stats::lanes::Store(p, v); }
 inline int ToInt(float x) { return int(x); }
-inline I16 ToInt(F16 x) { return lanes::AsInt(x); }
+inline I16 ToInt(F16 x) { return stats::lanes::AsInt(x); }
 inline float ToFloat(int x) { return float(x); }
-inline F16 ToFloat(I16 x) { return lanes::AsFloat(x); }
+inline F16 ToFloat(I16 x) { return stats::lanes::AsFloat(x); }
 inline float Gather(const float* p, int i) { return p[i]; }
-inline F16 Gather(const float* p, I16 i) { return lanes::Gather(p, i); }
+inline F16 Gather(const float* p, I16 i) { return stats::lanes::Gather(p, i); }
 inline float Pow(float x, float p) { return std::pow(x, p); }
 inline F16 Pow(F16 x, float p) {
   for (int k = 0; k < kLanes; ++k) x[k] = std::pow(x[k], p);
@@ -45,7 +45,7 @@ inline void LoadMap(const cv::Vec2f* map, float& u, float& v) {
   v = (*map)[1];
 }
 inline void LoadMap(const cv::Vec2f* map, F16& u, F16& v) {
-  const F16 a = lanes::Load(&(*map)[0]), b = lanes::Load(&(*map)[0] + kLanes);
+  const F16 a = stats::lanes::Load(&(*map)[0]), b = stats::lanes::Load(&(*map)[0] + kLanes);
   u = __builtin_shuffle(a, b, I16{0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30});
   v = __builtin_shuffle(a, b, I16{1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31});
 }

@@ -100,11 +100,11 @@ CostVolume PlaneSweep(const cv::Mat& reference, const views::PinholeCamera& came
           out[x] = best;
         }
       }
-      if (o.window > 1) cv::blur(slice, slice, cv::Size(o.window, o.window));
-      for (int y = 0; y < h; ++y) {
-        const float* in = slice.ptr<float>(y);
-        float* out = volume.at(0, y) + l;
-        for (int x = 0; x < w; ++x, out += labels) *out = in[x];
+      cv::Mat out(h, w, CV_32F, volume.slice(l));
+      if (o.window > 1) {
+        cv::blur(slice, out, cv::Size(o.window, o.window));
+      } else {
+        slice.copyTo(out);
       }
     }
   });

@@ -16,7 +16,7 @@ CostVolume NoisyTwoRegions(double noise, std::uint64_t seed) {
   for (int y = 0; y < v.height; ++y)
     for (int x = 0; x < v.width; ++x)
       for (int l = 0; l < v.labels; ++l)
-        v.at(x, y)[l] = 2.0f * std::abs(l - (x < 32 ? 10 : 30)) + u(rng);
+        v(x, y, l) = 2.0f * std::abs(l - (x < 32 ? 10 : 30)) + u(rng);
   return v;
 }
 
@@ -36,8 +36,9 @@ TEST(BeliefPropagation, RecoversPiecewiseConstantLabelsThroughNoise) {
   cv::Mat wta(v.height, v.width, CV_32F);
   for (int y = 0; y < v.height; ++y)
     for (int x = 0; x < v.width; ++x) {
-      const float* c = v.at(x, y);
-      wta.at<float>(y, x) = float(std::min_element(c, c + v.labels) - c);
+      int best = 0;
+      for (int l = 1; l < v.labels; ++l) best = v(x, y, l) < v(x, y, best) ? l : best;
+      wta.at<float>(y, x) = float(best);
     }
   const Labeling bp = RunBeliefPropagation(v, o);
   BeliefPropagationOptions single = o;
@@ -61,7 +62,7 @@ TEST(BeliefPropagation, SubLabelRefinementFindsTheVertex) {
   CostVolume v(16, 16, 30);
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x)
-      for (int l = 0; l < 30; ++l) v.at(x, y)[l] = float((l - 12.3) * (l - 12.3));
+      for (int l = 0; l < 30; ++l) v(x, y, l) = float((l - 12.3) * (l - 12.3));
   BeliefPropagationOptions o;
   o.data_truncation = 1e9f;
   o.smoothness = 0.0f;  // no coupling: beliefs are the (scaled) data

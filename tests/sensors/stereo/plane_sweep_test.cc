@@ -45,8 +45,8 @@ TEST(PlaneSweep, CostIsLowestAtTheTruePlane) {
   double sum = 0;
   for (int y = 5; y < v.height - 5; ++y)
     for (int x = 5 + int(shift); x < v.width - 5; ++x, ++scored) {  // match at u − shift
-      const float* c = v.at(x, y);
-      const int best = int(std::min_element(c, c + v.labels) - c);
+      int best = 0;
+      for (int l = 1; l < v.labels; ++l) best = v(x, y, l) < v(x, y, best) ? l : best;
       near += std::abs(best - 20) <= 1;
       sum += best;
     }
@@ -54,7 +54,7 @@ TEST(PlaneSweep, CostIsLowestAtTheTruePlane) {
   EXPECT_GT(scored, 10000);
   EXPECT_NEAR(sum / scored, 20.0, 0.1);
   // Pixels whose match lies outside the side image cost the truncation.
-  EXPECT_FLOAT_EQ(v.at(2, 60)[20], o.truncation);
+  EXPECT_FLOAT_EQ(v(2, 60, 20), o.truncation);
 }
 
 TEST(PlaneSweep, RefusesRigsWithImagesOfDifferentSizes) {

@@ -11,7 +11,7 @@
 #include <immintrin.h>
 #endif
 
-namespace novelty::views::lanes {
+namespace novelty::stats::lanes {
 
 constexpr int kLanes = 16;
 typedef float F16 __attribute__((vector_size(4 * kLanes)));
@@ -53,4 +53,4 @@ inline F16 Gather(const float* p, I16 index) {
 #endif
 }
 
-}  // namespace novelty::views::lanes
+}  // namespace novelty::stats::lanes

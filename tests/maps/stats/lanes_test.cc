@@ -1,0 +1,41 @@
+#include "maps/stats/lanes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace novelty::stats::lanes {
+namespace {
+
+TEST(Lanes, FloorAndCeilMatchTheStandardFunctions) {
+  // Integers, halves, negatives, values just off an integer: the int-conversion trick must agree
+  // with std::floor / std::ceil for all of them.
+  const float values[] = {-3.0f, -2.5f, -1e-4f, 0.0f, 1e-4f, 0.5f, 1.0f,     2.999f,
+                          3.0f,  7.25f, -7.25f, 1e6f, -1e6f, 15.5f, -0.999f, 123.0001f};
+  F16 x = Load(values);
+  const F16 f = Floor(x), c = Ceil(x);
+  for (int k = 0; k < kLanes; ++k) {
+    EXPECT_EQ(f[k], std::floor(values[k])) << values[k];
+    EXPECT_EQ(c[k], std::ceil(values[k])) << values[k];
+  }
+}
+
+TEST(Lanes, GatherIotaMinMaxAndStore) {
+  std::vector<float> table(100);
+  for (int i = 0; i < 100; ++i) table[i] = float(i * i);
+  const I16 index = AsInt(Iota() * 6.0f + 1.0f);  // 1, 7, 13, …, 91
+  const F16 g = Gather(table.data(), index);
+  for (int k = 0; k < kLanes; ++k) EXPECT_EQ(g[k], float((6 * k + 1) * (6 * k + 1)));
+  const F16 a = Iota(), b = F16{} + 7.5f;
+  float out[kLanes];
+  Store(out, Min(a, b));
+  EXPECT_EQ(out[3], 3.0f);
+  EXPECT_EQ(out[12], 7.5f);
+  EXPECT_EQ(Max(a, b)[12], 12.0f);
+  EXPECT_EQ(AsFloat(a > b)[12], -1.0f);  // a true lane mask is −1
+  EXPECT_EQ(AsFloat(a > b)[3], 0.0f);
+}
+
+}  // namespace
+}  // namespace novelty::stats::lanes
