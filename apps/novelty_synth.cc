@@ -61,12 +61,13 @@ std::pair<cv::Mat, cv::Mat> Synthesise(views::DepthMeshWarper& warper,
                                        const Eigen::Isometry3d& pose,
                                        const views::BlendOptions& blend,
                                        std::vector<views::WarpField>& warps) {
-  warps.resize(refs.size());
+  std::vector<views::SourceView> sources;
   std::vector<cv::Mat> planes;
-  for (std::size_t k = 0; k < refs.size(); ++k) {
-    warper.Warp(refs[k]->camera, refs[k]->T_world_cam, refs[k]->depth, cam, pose, warps[k]);
-    planes.push_back(refs[k]->planes.at("rgb"));
+  for (const views::ReferenceView* r : refs) {
+    sources.push_back({&r->camera, &r->T_world_cam, &r->depth});
+    planes.push_back(r->planes.at("rgb"));
   }
+  warper.WarpMany(sources, cam, pose, warps);
   const views::BlendResult b = views::BlendPlanes(warps, planes, blend);
   cv::Mat value = b.value.clone();
   value.setTo(cv::Scalar::all(0), ~b.valid);

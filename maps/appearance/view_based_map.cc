@@ -52,11 +52,12 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
     p.valid = cv::Mat(camera.height, camera.width, CV_8UC1, cv::Scalar(255));
     return p;
   }
-  warps_.resize(p.selected.size());
-  for (std::size_t k = 0; k < p.selected.size(); ++k) {
-    const views::ReferenceView& v = store_.view(p.selected[k]);
-    warper_.Warp(v.camera, v.T_world_cam, v.depth, camera, T_world_cam, warps_[k]);
+  std::vector<views::SourceView> sources;
+  for (int j : p.selected) {
+    const views::ReferenceView& v = store_.view(j);
+    sources.push_back({&v.camera, &v.T_world_cam, &v.depth});
   }
+  warper_.WarpMany(sources, camera, T_world_cam, warps_);
   for (const auto& [name, channels] : names) {
     std::vector<cv::Mat> planes;
     for (int j : p.selected) planes.push_back(store_.view(j).planes.at(name));

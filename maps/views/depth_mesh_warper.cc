@@ -8,6 +8,7 @@
 #include <memory>
 #include <opencv2/core/utility.hpp>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -373,13 +374,13 @@ struct DepthMeshWarper::Scratch {
 namespace {
 
 // The field from the threads' targets: per virtual pixel the nearest surface any thread drew.
-void Finalise(const std::vector<std::vector<Texel>>& targets, int width, int height,
+void Finalise(const std::vector<std::vector<Texel>>& targets, int width, int height, int threads,
               WarpField& field) {
   field.depth.create(height, width, CV_32FC1);
   field.source_depth.create(height, width, CV_32FC1);
   field.map.create(height, width, CV_32FC2);
   std::vector<int> covered(std::size_t(height), 0);
-  ParallelBlocks(height, ThreadCount(0), [&](int y0, int y1) {
+  ParallelBlocks(height, threads, [&](int y0, int y1) {
     for (int y = y0; y < y1; ++y) {
       float* depth = field.depth.ptr<float>(y);
       float* source_depth = field.source_depth.ptr<float>(y);
@@ -414,6 +415,49 @@ DepthMeshWarper::~DepthMeshWarper() = default;
 void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_world_src,
                            const cv::Mat& depth, const PinholeCamera& dst,
                            const Eigen::Isometry3d& T_world_dst, WarpField& field) {
+  WarpWith(*scratch_, ThreadCount(options_.threads), src, T_world_src, depth, dst, T_world_dst,
+           field);
+}
+
+void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const PinholeCamera& dst,
+                               const Eigen::Isometry3d& T_world_dst,
+                               std::vector<WarpField>& fields) {
+  fields.resize(sources.size());
+  const int threads = ThreadCount(options_.threads);
+  if (threads < 2 || sources.size() < 2) {
+    for (std::size_t k = 0; k < sources.size(); ++k) {
+      Warp(*sources[k].camera, *sources[k].T_world_cam, *sources[k].depth, dst, T_world_dst,
+           fields[k]);
+    }
+    return;
+  }
+  // Whole views per thread: no thread waits for another or merges its z-buffer.
+  const int workers = std::min(threads, int(sources.size()));
+  while (int(worker_scratch_.size()) < workers) {
+    worker_scratch_.push_back(std::make_unique<Scratch>());
+  }
+  std::vector<std::string> errors(static_cast<std::size_t>(workers));
+  ParallelBlocks(workers, workers, [&](int w0, int w1) {
+    for (int w = w0; w < w1; ++w) {
+      try {
+        for (std::size_t k = std::size_t(w); k < sources.size(); k += std::size_t(workers)) {
+          WarpWith(*worker_scratch_[std::size_t(w)], 1, *sources[k].camera,
+                   *sources[k].T_world_cam, *sources[k].depth, dst, T_world_dst, fields[k]);
+        }
+      } catch (const std::exception& e) {
+        errors[std::size_t(w)] = e.what();  // rethrown below, not across the thread pool
+      }
+    }
+  });
+  for (const std::string& e : errors) {
+    if (!e.empty()) throw std::invalid_argument(e);
+  }
+}
+
+void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamera& src,
+                               const Eigen::Isometry3d& T_world_src, const cv::Mat& depth,
+                               const PinholeCamera& dst, const Eigen::Isometry3d& T_world_dst,
+                               WarpField& field) const {
   const WarpOptions& o = options_;
   src.Check();
   dst.Check();
@@ -427,12 +471,12 @@ void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_
         std::to_string(src.width) + "x" + std::to_string(src.height));
   }
   const Eigen::Isometry3d T_vs = T_world_dst.inverse() * T_world_src;
-  Vertices& v = scratch_->vertices;
-  ProjectVertices(src, T_vs, depth, dst, o.near_plane, o.threads, v);
+  Vertices& v = scratch.vertices;
+  ProjectVertices(src, T_vs, depth, dst, o.near_plane, threads, v);
 
   // Threads take blocks of source rows, each with its own buffers, merged by depth afterwards.
-  const int n_threads = std::max(1, std::min(src.height - 1, ThreadCount(o.threads)));
-  std::vector<std::vector<Texel>>& targets = scratch_->targets;
+  const int n_threads = std::max(1, std::min(src.height - 1, threads));
+  std::vector<std::vector<Texel>>& targets = scratch.targets;
   targets.resize(std::size_t(n_threads));
   const float max_ratio = float(1.0 + o.max_relative_depth_jump);
   const int w = src.width;
@@ -452,7 +496,7 @@ void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_
       }
     }
   });
-  Finalise(targets, dst.width, dst.height, field);
+  Finalise(targets, dst.width, dst.height, threads, field);
   if (o.compute_view_angles) field.cos_angle = ViewAngles(field.depth, dst, T_vs.translation());
 }
 

@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 #include <memory>
+#include <vector>
 #include <opencv2/core.hpp>
 
 #include "maps/views/pinhole_camera.h"
@@ -43,6 +44,13 @@ struct WarpField {
   int covered = 0;       ///< number of covered virtual pixels
 };
 
+/// One source view for DepthMeshWarper::WarpMany (pointers: the data stay where they are).
+struct SourceView {
+  const PinholeCamera* camera;
+  const Eigen::Isometry3d* T_world_cam;
+  const cv::Mat* depth;  ///< CV_32FC1, the camera's size
+};
+
 /// Warps views one after another, reusing its buffers (and the output field's) from call to
 /// call: a robot warps seven views per frame, and fresh megabyte buffers each time cost more in
 /// page faults than the rasterisation itself.
@@ -60,10 +68,21 @@ class DepthMeshWarper {
             const cv::Mat& source_depth, const PinholeCamera& virtual_camera,
             const Eigen::Isometry3d& T_world_virtual, WarpField& out);
 
+  /// Warps several source views into the same virtual camera, `fields[k]` from `sources[k]`
+  /// (resized to match). With more than one thread each thread warps whole views, which scales
+  /// better than splitting every view. Errors as Warp.
+  void WarpMany(const std::vector<SourceView>& sources, const PinholeCamera& virtual_camera,
+                const Eigen::Isometry3d& T_world_virtual, std::vector<WarpField>& fields);
+
  private:
   struct Scratch;
+  void WarpWith(Scratch& scratch, int threads, const PinholeCamera& source_camera,
+                const Eigen::Isometry3d& T_world_source, const cv::Mat& source_depth,
+                const PinholeCamera& virtual_camera, const Eigen::Isometry3d& T_world_virtual,
+                WarpField& out) const;
   WarpOptions options_;
   std::unique_ptr<Scratch> scratch_;
+  std::vector<std::unique_ptr<Scratch>> worker_scratch_;  // one per WarpMany worker
 };
 
 /// One warp with a temporary DepthMeshWarper (see there).
