@@ -55,8 +55,12 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   const float initial[kChannels] = {
       float(init.alpha), float(init.beta), float(init.beta),  float(init.beta),  float(init.tau),
       float(init.tau),   float(init.tau),  float(init.sigma), float(init.sigma), float(init.sigma)};
-  const cv::Mat uncovered = ~prior.valid;
-  for (int c = 0; c < kChannels; ++c) p0[c].setTo(initial[c], uncovered);
+  // Masked writes only where the map has gaps (a static camera has none: 13 passes saved).
+  const bool gaps = cv::countNonZero(prior.valid) < n;
+  const cv::Mat uncovered = gaps ? cv::Mat(~prior.valid) : cv::Mat();
+  if (gaps) {
+    for (int c = 0; c < kChannels; ++c) p0[c].setTo(initial[c], uncovered);
+  }
 
   // Update and surprise per channel (eq. 4.8-4.21); α is shared by the three channels.
   std::vector<cv::Mat> p1(kChannels);
@@ -77,13 +81,13 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   out.valid = prior.valid;
   out.selected = prior.selected;
   out.surprise = surprise;
-  out.surprise.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
+  if (gaps) out.surprise.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
   cv::Mat tau;
   cv::merge(std::vector<cv::Mat>{p0[kTau], p0[kTau + 1], p0[kTau + 2]}, tau);
   color::YCbCrToRgb(tau).convertTo(out.expected_rgb, CV_8UC3);
-  out.expected_rgb.setTo(cv::Scalar::all(0), uncovered);
+  if (gaps) out.expected_rgb.setTo(cv::Scalar::all(0), uncovered);
   out.uncertainty = p0[kBeta] + p0[kBeta + 1] + p0[kBeta + 2];
-  out.uncertainty.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
+  if (gaps) out.uncertainty.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
 
   // The posterior at this viewpoint goes into the map (4.3's update policy).
   cv::Mat ab_sigma1, ab_sigma_stored, tau1;
