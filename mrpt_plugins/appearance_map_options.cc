@@ -10,10 +10,10 @@
 
 namespace novelty::mrpt_plugins {
 
-appearance::AppearanceMapOptions LoadAppearanceMapOptions(
-    const mrpt::config::CConfigFileBase& config, const std::string& section,
-    const std::string& source) {
-  appearance::AppearanceMapOptions o;
+MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::string& section,
+                        const std::string& source) {
+  MapConfig result;
+  appearance::AppearanceMapOptions& o = result.map;
   auto& u = o.surprise.update;
   auto& init = o.initial_prior;
   auto& v = o.views;
@@ -54,6 +54,20 @@ appearance::AppearanceMapOptions LoadAppearanceMapOptions(
   keys["new_view_angle_deg"] = number(&angle_deg);
   keys["max_relative_depth_jump"] = number(&v.warp.max_relative_depth_jump);
   keys["depth_tolerance"] = number(&v.blend.depth_tolerance);
+  DepthSourceOptions& d = result.depth;
+  keys["depth_source"] = [&d](const std::string& text) {
+    if (text == "rgbd")
+      d.kind = DepthSourceOptions::Kind::kRgbd;
+    else if (text == "stereo")
+      d.kind = DepthSourceOptions::Kind::kStereo;
+    else
+      throw std::invalid_argument("not rgbd or stereo");
+  };
+  double hypotheses = d.stereo.sweep.hypotheses, window = d.stereo.sweep.window;
+  keys["stereo_near"] = number(&d.stereo.sweep.near);
+  keys["stereo_far"] = number(&d.stereo.sweep.far);
+  keys["stereo_hypotheses"] = number(&hypotheses);
+  keys["stereo_window"] = number(&window);
 
   std::vector<std::string> present;
   config.getAllKeys(section, present);
@@ -72,20 +86,40 @@ appearance::AppearanceMapOptions LoadAppearanceMapOptions(
     }
   }
   v.new_view_angle = angle_deg * M_PI / 180.0;
+  d.stereo.sweep.hypotheses = int(hypotheses);
+  d.stereo.sweep.window = int(window);
   try {
     u.Check();
     stats::CheckNormalGamma(init, "initial prior");
+    const auto& sweep = d.stereo.sweep;
+    if (!(sweep.near > 0 && sweep.far > sweep.near) || sweep.hypotheses < 2 ||
+        double(sweep.hypotheses) != hypotheses || sweep.window < 1 ||
+        double(sweep.window) != window) {
+      throw std::invalid_argument(
+          "stereo: need 0 < stereo_near < stereo_far, whole stereo_hypotheses ≥ 2 and "
+          "stereo_window ≥ 1");
+    }
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(source + ": [" + section + "] " + e.what());
   }
-  return o;
+  return result;
+}
+
+appearance::AppearanceMapOptions LoadAppearanceMapOptions(
+    const mrpt::config::CConfigFileBase& config, const std::string& section,
+    const std::string& source) {
+  return LoadMapConfig(config, section, source).map;
+}
+
+MapConfig LoadMapConfig(const std::string& path, const std::string& section) {
+  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such config file");
+  const mrpt::config::CConfigFile config(path);
+  return LoadMapConfig(config, section, path);
 }
 
 appearance::AppearanceMapOptions LoadAppearanceMapOptions(const std::string& path,
                                                           const std::string& section) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such config file");
-  const mrpt::config::CConfigFile config(path);
-  return LoadAppearanceMapOptions(config, section, path);
+  return LoadMapConfig(path, section).map;
 }
 
 }  // namespace novelty::mrpt_plugins

@@ -8,15 +8,29 @@
 #include <string>
 
 #include "maps/appearance/appearance_map.h"
+#include "mrpt_plugins/depth_source.h"
 
 namespace novelty::mrpt_plugins {
 
+/// Everything a map section configures: the map's options and where camera observations get
+/// their depth (depth_source.h).
+struct MapConfig {
+  appearance::AppearanceMapOptions map;
+  DepthSourceOptions depth;
+};
+
 /// Reads `section` of `config` on top of the defaults. `source` names the file in errors.
+MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::string& section,
+                        const std::string& source);
+/// The same from a file path; throws std::runtime_error if it cannot be read.
+MapConfig LoadMapConfig(const std::string& ini_path, const std::string& section = "AppearanceMap");
+
+/// The map's options alone (see LoadMapConfig).
 appearance::AppearanceMapOptions LoadAppearanceMapOptions(
     const mrpt::config::CConfigFileBase& config, const std::string& section,
     const std::string& source);
 
-/// The same from a file path; throws std::runtime_error if it cannot be read.
+/// The map's options alone, from a file path.
 appearance::AppearanceMapOptions LoadAppearanceMapOptions(
     const std::string& ini_path, const std::string& section = "AppearanceMap");
 

@@ -99,7 +99,9 @@ CAppearanceMap::TMapDefinition::TMapDefinition() = default;
 
 void CAppearanceMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
-  options = LoadAppearanceMapOptions(source, prefix + "_options", "map definition");
+  const MapConfig config = LoadMapConfig(source, prefix + "_options", "map definition");
+  options = config.map;
+  depth_source = config.depth;
 }
 
 void CAppearanceMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {
@@ -111,7 +113,9 @@ void CAppearanceMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream&
 mrpt::maps::CMetricMap* CAppearanceMap::internal_CreateFromMapDefinition(
     const mrpt::maps::TMetricMapInitializer& def) {
   const auto& d = dynamic_cast<const CAppearanceMap::TMapDefinition&>(def);
-  return new CAppearanceMap(d.options);
+  auto* map = new CAppearanceMap(d.options);
+  map->setDepthSource(d.depth_source);
+  return map;
 }
 
 }  // namespace novelty::mrpt_plugins

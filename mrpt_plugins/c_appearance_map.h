@@ -1,7 +1,9 @@
 // CAppearanceMap: the probabilistic appearance map (maps/appearance) as an MRPT metric map.
 //
 // - insertObservation(CObservation3DRangeScan with intensity image, robotPose) updates the map
-//   and computes the frame's products (lastProducts()); other observations are not used.
+//   and computes the frame's products (lastProducts()); with `depth_source = stereo` also
+//   CObservationStereoImages (depth by plane sweep + belief propagation); other observations are
+//   not used.
 //   The camera pose is robotPose ⊕ sensorPose (robot at the origin if no pose is given).
 // - Declared in a CMultiMetricMap .ini as "CAppearanceMap" (call RegisterMaps() first); its
 //   options are read from the section "<prefix>_options" with the keys of share/appearance.ini
@@ -30,6 +32,7 @@ class CAppearanceMap
 
   MAP_DEFINITION_START(CAppearanceMap)
   appearance::AppearanceMapOptions options;
+  DepthSourceOptions depth_source;
   MAP_DEFINITION_END(CAppearanceMap)
 };
 

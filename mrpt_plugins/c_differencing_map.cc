@@ -55,7 +55,9 @@ CDifferencingMap::TMapDefinition::TMapDefinition() = default;
 
 void CDifferencingMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
-  options = LoadAppearanceMapOptions(source, prefix + "_options", "map definition").views;
+  const MapConfig config = LoadMapConfig(source, prefix + "_options", "map definition");
+  options = config.map.views;
+  depth_source = config.depth;
 }
 
 void CDifferencingMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {
@@ -64,7 +66,10 @@ void CDifferencingMap::TMapDefinition::dumpToTextStream_map_specific(std::ostrea
 
 mrpt::maps::CMetricMap* CDifferencingMap::internal_CreateFromMapDefinition(
     const mrpt::maps::TMetricMapInitializer& def) {
-  return new CDifferencingMap(dynamic_cast<const CDifferencingMap::TMapDefinition&>(def).options);
+  const auto& d = dynamic_cast<const CDifferencingMap::TMapDefinition&>(def);
+  auto* map = new CDifferencingMap(d.options);
+  map->setDepthSource(d.depth_source);
+  return map;
 }
 
 }  // namespace novelty::mrpt_plugins

@@ -23,6 +23,7 @@ class CDifferencingMap
 
   MAP_DEFINITION_START(CDifferencingMap)
   appearance::ViewBasedMapOptions options;
+  DepthSourceOptions depth_source;
   MAP_DEFINITION_END(CDifferencingMap)
 };
 

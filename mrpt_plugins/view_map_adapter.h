@@ -1,7 +1,8 @@
 // What CAppearanceMap and CDifferencingMap share as MRPT metric maps: a view-based map from
-// maps/appearance inside an mrpt::maps::CMetricMap — RGB-D observations in, products of the last
-// frame out, atomic saves, loads that keep the map when the file is bad, a .3Dscene of the
-// frusta. Each class adds its serialization, map definition and visualization.
+// maps/appearance inside an mrpt::maps::CMetricMap — RGB-D observations (or stereo pairs, with a
+// stereo depth source) in, products of the last frame out, atomic saves, loads that keep the map
+// when the file is bad, a .3Dscene of the frusta. Each class adds its serialization, map
+// definition and visualization.
 #pragma once
 
 #include <mrpt/maps/CMetricMap.h>
@@ -13,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mrpt_plugins/depth_source.h"
 #include "mrpt_plugins/map_files.h"
 #include "mrpt_plugins/register_maps.h"
 
@@ -31,6 +33,9 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
     last_ = map_->Insert(rgb, depth, camera, T_world_cam);
     return last_;
   }
+  /// Where camera observations without depth get it (default: they are not used).
+  void setDepthSource(const DepthSourceOptions& options) { depth_source_ = options; }
+  const DepthSourceOptions& depthSource() const { return depth_source_; }
   /// Products of the last inserted frame (empty before the first).
   const Products& lastProducts() const { return last_; }
   const Map& map() const { return *map_; }
@@ -72,6 +77,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
 
   std::unique_ptr<Map> map_;
   Products last_;
+  DepthSourceOptions depth_source_;
 
  private:
   void internal_clear() override { ReplaceMap(std::make_unique<Map>(map_->options())); }
@@ -80,7 +86,9 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
       const std::optional<const mrpt::poses::CPose3D>& robot_pose = std::nullopt) override {
     ObservedFrame f;
     try {
-      if (!DecodeObservation(obs, robot_pose, f)) return false;
+      if (!DecodeObservation(obs, robot_pose, f) &&
+          !DecodeWithDepthSource(obs, robot_pose, depth_source_, f))
+        return false;
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(std::string(name_) + ": " + e.what());
     }

@@ -55,7 +55,7 @@ RigFrameReader::RigFrameReader(const std::string& path) : impl_(std::make_unique
 
 RigFrameReader::~RigFrameReader() = default;
 
-static RigFrame FromStereo(mrpt::obs::CObservationStereoImages& obs) {
+RigFrame RigFrameFromStereo(mrpt::obs::CObservationStereoImages& obs) {
   obs.load();
   if (!obs.hasImageRight) throw std::runtime_error("stereo observation without a right image");
   RigFrame f;
@@ -104,7 +104,7 @@ bool RigFrameReader::Next(RigFrame& frame,
     try {
       if (auto stereo = std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(obj)) {
         ++s.frames;
-        ready = FromStereo(*stereo);
+        ready = RigFrameFromStereo(*stereo);
       } else if (auto image = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(obj);
                  image && TrinocularSlot(image->sensorLabel) >= 0) {
         const int slot = TrinocularSlot(image->sensorLabel);

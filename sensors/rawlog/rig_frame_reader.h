@@ -6,6 +6,8 @@
 // rig, or an image that cannot be loaded skips the frame and counts it with its reason.
 #pragma once
 
+#include <mrpt/obs/CObservationStereoImages.h>
+
 #include <mrpt/serialization/CSerializable.h>
 
 #include <Eigen/Geometry>
@@ -29,6 +31,10 @@ struct RigFrame {
   /// T_robot_ref: where the reference camera sits on the robot (+Z forward).
   Eigen::Isometry3d robot_from_reference = Eigen::Isometry3d::Identity();
 };
+
+/// One CObservationStereoImages as a rig frame (left camera the reference); loads its external
+/// images and unloads them again. Throws std::runtime_error without a right image.
+RigFrame RigFrameFromStereo(mrpt::obs::CObservationStereoImages& obs);
 
 class RigFrameReader {
  public:

@@ -44,5 +44,25 @@ TEST(AppearanceMapOptions, ReadsValuesAndNamesBadOnes) {
   EXPECT_THROW(LoadAppearanceMapOptions("/nonexistent.ini"), std::runtime_error);
 }
 
+TEST(AppearanceMapOptions, ReadsTheDepthSource) {
+  const mrpt::config::CConfigFileMemory stereo(
+      "[AppearanceMap]\ndepth_source = stereo\nstereo_hypotheses = 32\nstereo_far = 4 ; m\n");
+  const MapConfig c = LoadMapConfig(stereo, "AppearanceMap", "test.ini");
+  EXPECT_EQ(c.depth.kind, DepthSourceOptions::Kind::kStereo);
+  EXPECT_EQ(c.depth.stereo.sweep.hypotheses, 32);
+  EXPECT_EQ(c.depth.stereo.sweep.far, 4.0);
+  EXPECT_EQ(c.depth.stereo.sweep.near, 0.5);  // default kept
+  const MapConfig shipped =
+      LoadMapConfig(std::string(NOVELTY_SOURCE_DIR) + "/share/appearance.ini");
+  EXPECT_EQ(shipped.depth.kind, DepthSourceOptions::Kind::kRgbd);
+  EXPECT_EQ(shipped.depth.stereo.sweep.hypotheses, 64);
+  EXPECT_EQ(ErrorOf("[AppearanceMap]\ndepth_source = lidar\n"),
+            "test.ini: [AppearanceMap] depth_source = 'lidar': not rgbd or stereo");
+  EXPECT_NE(ErrorOf("[AppearanceMap]\nstereo_hypotheses = 2.5\n").find("stereo_hypotheses"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("[AppearanceMap]\nstereo_near = 6\n").find("stereo_near"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace novelty::mrpt_plugins
