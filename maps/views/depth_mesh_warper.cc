@@ -19,16 +19,7 @@ namespace novelty::views {
 
 namespace {
 
-using stats::lanes::AsFloat;
-using stats::lanes::Ceil;
-using stats::lanes::F16;
-using stats::lanes::Floor;
-using stats::lanes::I16;
-using stats::lanes::kLanes;
-using stats::lanes::Load;
-using stats::lanes::Max;
-using stats::lanes::Min;
-using stats::lanes::Store;
+using namespace stats::lanes;  // F16, I16, Load, Min… (maps/stats/lanes.h)
 
 // A source vertex in the virtual camera: screen position, 1/z, and the source depth (for the
 // discontinuity test). inv_z = 0 marks an unusable vertex.

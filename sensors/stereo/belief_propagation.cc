@@ -13,12 +13,7 @@
 namespace novelty::sensors {
 namespace {
 
-using stats::lanes::F16;
-using stats::lanes::I16;
-using stats::lanes::kLanes;
-using stats::lanes::Load;
-using stats::lanes::Min;
-using stats::lanes::Store;
+using namespace stats::lanes;  // F16, I16, Load, Min… (maps/stats/lanes.h)
 
 enum Direction { kFromLeft = 0, kFromRight = 1, kFromUp = 2, kFromDown = 3 };
 

@@ -42,6 +42,13 @@ Views MakeViews() {
   return v;
 }
 
+// All seven views as WarpMany's sources.
+std::vector<views::SourceView> Sources(const Views& v) {
+  std::vector<views::SourceView> sources;
+  for (int j = 0; j < 7; ++j) sources.push_back({&v.camera, &v.poses[j], &v.depths[j]});
+  return sources;
+}
+
 void BM_SynthesiseVirtualView(benchmark::State& state) {
   static const Views v = MakeViews();
   views::WarpOptions wo;
@@ -68,8 +75,7 @@ void BM_SynthesiseFromSevenViews(benchmark::State& state) {
   views::WarpOptions wo;
   wo.threads = static_cast<int>(state.range(0));
   views::DepthMeshWarper warper(wo);
-  std::vector<views::SourceView> sources;
-  for (int j = 0; j < 7; ++j) sources.push_back({&v.camera, &v.poses[j], &v.depths[j]});
+  const std::vector<views::SourceView> sources = Sources(v);
   std::vector<views::WarpField> warps;
   for (auto _ : state) {
     warper.WarpMany(sources, v.camera, v.virtual_pose, warps);
@@ -89,8 +95,7 @@ void BM_WarpSevenViews(benchmark::State& state) {
   views::WarpOptions wo;
   wo.threads = static_cast<int>(state.range(0));
   views::DepthMeshWarper warper(wo);
-  std::vector<views::SourceView> sources;
-  for (int j = 0; j < 7; ++j) sources.push_back({&v.camera, &v.poses[j], &v.depths[j]});
+  const std::vector<views::SourceView> sources = Sources(v);
   std::vector<views::WarpField> warps;
   for (auto _ : state) {
     warper.WarpMany(sources, v.camera, v.virtual_pose, warps);
