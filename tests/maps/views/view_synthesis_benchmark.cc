@@ -69,40 +69,31 @@ void BM_SynthesiseVirtualView(benchmark::State& state) {
 }
 BENCHMARK(BM_SynthesiseVirtualView)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The budget's case: all seven reference views warped and blended.
-void BM_SynthesiseFromSevenViews(benchmark::State& state) {
+// The budget's case: seven reference views warped (whole views per thread) and, with the second
+// argument 1, blended; with 0 the warps alone.
+void BM_SevenViews(benchmark::State& state) {
   static const Views v = MakeViews();
   views::WarpOptions wo;
   wo.threads = static_cast<int>(state.range(0));
+  const bool blend = state.range(1) != 0;
   views::DepthMeshWarper warper(wo);
   const std::vector<views::SourceView> sources = Sources(v);
   std::vector<views::WarpField> warps;
   for (auto _ : state) {
     warper.WarpMany(sources, v.camera, v.virtual_pose, warps);
-    const views::BlendResult r = views::BlendPlanes(warps, v.images);
-    benchmark::DoNotOptimize(r.value.data);
-  }
-}
-BENCHMARK(BM_SynthesiseFromSevenViews)
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-
-// Warping alone: the seven views, whole views per thread.
-void BM_WarpSevenViews(benchmark::State& state) {
-  static const Views v = MakeViews();
-  views::WarpOptions wo;
-  wo.threads = static_cast<int>(state.range(0));
-  views::DepthMeshWarper warper(wo);
-  const std::vector<views::SourceView> sources = Sources(v);
-  std::vector<views::WarpField> warps;
-  for (auto _ : state) {
-    warper.WarpMany(sources, v.camera, v.virtual_pose, warps);
+    if (blend) {
+      const views::BlendResult r = views::BlendPlanes(warps, v.images);
+      benchmark::DoNotOptimize(r.value.data);
+    }
     benchmark::DoNotOptimize(warps[0].map.data);
   }
+  state.SetLabel(blend ? "warp + blend" : "warp");
 }
-BENCHMARK(BM_WarpSevenViews)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SevenViews)
+    ->ArgsProduct({{1, 2}, {1, 0}})
+    ->ArgNames({"threads", "blend"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // Blending alone: seven precomputed warps, one RGB plane each.
 void BM_BlendSevenViews(benchmark::State& state) {
