@@ -53,4 +53,15 @@ inline F16 Gather(const float* p, I16 index) {
 #endif
 }
 
+/// p[index[k]] per lane for 32-bit integers (AVX-512 gather where available).
+inline I16 GatherInt(const int32_t* p, I16 index) {
+#if defined(__AVX512F__)
+  return (I16)_mm512_i32gather_epi32((__m512i)index, p, 4);
+#else
+  I16 v;
+  for (int k = 0; k < kLanes; ++k) v[k] = p[index[k]];
+  return v;
+#endif
+}
+
 }  // namespace novelty::stats::lanes

@@ -27,6 +27,10 @@ TEST(Lanes, GatherIotaMinMaxAndStore) {
   const I16 index = AsInt(Iota() * 6.0f + 1.0f);  // 1, 7, 13, …, 91
   const F16 g = Gather(table.data(), index);
   for (int k = 0; k < kLanes; ++k) EXPECT_EQ(g[k], float((6 * k + 1) * (6 * k + 1)));
+  std::vector<int32_t> words(100);
+  for (int i = 0; i < 100; ++i) words[i] = -7 * i;
+  const I16 w = GatherInt(words.data(), index);
+  for (int k = 0; k < kLanes; ++k) EXPECT_EQ(w[k], -7 * (6 * k + 1));
   const F16 a = Iota(), b = F16{} + 7.5f;
   float out[kLanes];
   Store(out, Min(a, b));

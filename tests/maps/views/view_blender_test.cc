@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace novelty::views {
@@ -56,6 +57,33 @@ TEST(ViewBlender, MultiChannelPlanesKeepTheirChannels) {
   const BlendResult r = BlendPlanes(warps, planes);
   ASSERT_EQ(r.value.type(), CV_32FC3);
   EXPECT_EQ(r.value.at<cv::Vec3f>(1, 2), cv::Vec3f(1, 2, 3));
+}
+
+TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
+  // 40 columns: two sixteen-pixel groups and a tail of eight, so both kernel forms run. The map
+  // samples between pixels; a plane linear in x and y is reproduced exactly by bilinear
+  // interpolation, clamped at the border (u ≤ 39). 8-bit planes take the packed-word path.
+  const int w = 40, h = 20;
+  WarpField f = Field(w, h, w, 2.0f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) f.map.at<cv::Vec2f>(y, x) = cv::Vec2f(x + 0.25f, y * 0.5f + 0.5f);
+  cv::Mat linear(h, w, CV_32FC3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) linear.at<cv::Vec3f>(y, x)[c] = 2.0f * x + 3.0f * y + 40.0f * c;
+  for (int depth : {CV_8U, CV_16F, CV_32F}) {
+    cv::Mat plane;
+    linear.convertTo(plane, depth);
+    const BlendResult r = BlendPlanes({f}, {plane});
+    ASSERT_EQ(r.covered, w * h);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const float u = std::min(x + 0.25f, float(w - 1)), v = y * 0.5f + 0.5f;
+          ASSERT_NEAR(r.value.at<cv::Vec3f>(y, x)[c], 2.0f * u + 3.0f * v + 40.0f * c, 1e-3)
+              << "depth " << depth << " at " << x << "," << y << " channel " << c;
+        }
+  }
 }
 
 TEST(ViewBlender, MismatchedInputIsRejected) {
