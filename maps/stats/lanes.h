@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 #if defined(__AVX512F__)
 #include <immintrin.h>
 #endif
@@ -42,26 +43,24 @@ inline F16 Ceil(F16 x) {
   const F16 t = AsFloat(AsInt(x));
   return t - AsFloat(t < x);
 }
-/// p[index[k]] per lane: one gather instruction with AVX-512 (GCC does not emit it for the loop).
-inline F16 Gather(const float* p, I16 index) {
+/// p[index[k]] per lane for 32-bit floats (V = F16) or ints (V = I16): one gather instruction
+/// with AVX-512 (GCC does not emit one for the loop), the loop elsewhere.
+template <class V, class S>
+inline V GatherLanes(const S* p, I16 index) {
+  static_assert(sizeof(S) == 4, "32-bit elements");
 #if defined(__AVX512F__)
-  return (F16)_mm512_i32gather_ps((__m512i)index, p, 4);
+  if constexpr (std::is_same_v<S, float>) {
+    return (V)_mm512_i32gather_ps((__m512i)index, p, 4);
+  } else {
+    return (V)_mm512_i32gather_epi32((__m512i)index, p, 4);
+  }
 #else
-  F16 v;
+  V v;
   for (int k = 0; k < kLanes; ++k) v[k] = p[index[k]];
   return v;
 #endif
 }
-
-/// p[index[k]] per lane for 32-bit integers (AVX-512 gather where available).
-inline I16 GatherInt(const int32_t* p, I16 index) {
-#if defined(__AVX512F__)
-  return (I16)_mm512_i32gather_epi32((__m512i)index, p, 4);
-#else
-  I16 v;
-  for (int k = 0; k < kLanes; ++k) v[k] = p[index[k]];
-  return v;
-#endif
-}
+inline F16 Gather(const float* p, I16 index) { return GatherLanes<F16>(p, index); }
+inline I16 GatherInt(const int32_t* p, I16 index) { return GatherLanes<I16>(p, index); }
 
 }  // namespace novelty::stats::lanes
