@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <opencv2/core/utility.hpp>
 #include <stdexcept>
 #include <string>
-#include <opencv2/core/utility.hpp>
-#include <limits>
 
 namespace novelty::stats {
 

@@ -1,10 +1,12 @@
 // Per-pixel update + surprise over whole parameter planes: the inner loop of the appearance map.
 //
 // Planes are structure-of-arrays float buffers (one per hyperparameter), as the map stores them.
-// Two kernels evaluate the same templates (UpdateWithForgetting, NormalGammaKL):
+// Two kernels evaluate the same templates (UpdateWithForgetting, the KL's α terms and other
+// terms of normal_gamma_kl.h):
 //   kScalar      one pixel at a time in double — the reference;
 //   kVectorised  16 pixels at a time in float with Eigen fixed-size arrays (SIMD log/exp).
-// Their results agree to float precision (normal_gamma_batch_test.cc).
+// Their results agree to float precision (normal_gamma_batch_test.cc). Pixel blocks run on
+// OpenCV's thread pool.
 #pragma once
 
 #include <cstddef>

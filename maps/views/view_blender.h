@@ -1,7 +1,7 @@
 // Blending warped reference data into the virtual view (3.3.2, second pass): each plane is
-// sampled through each view's warp field (bilinear, OpenCV remap) and the valid contributions
-// are averaged per pixel — the thesis's rule. Pixels that no view covers are invalid: NaN in the
-// result and 0 in the mask, never zeros that look like data.
+// sampled through each view's warp field (bilinear, border replicated) and the valid
+// contributions are averaged per pixel — the thesis's rule. Pixels that no view covers are
+// invalid: NaN in the result and 0 in the mask, never zeros that look like data.
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -129,7 +129,8 @@ void SendVector(Level& lv, int y, int half, int j, const BeliefPropagationOption
   // Receivers: to the left neighbour the message arrives "from the right", and so on. Left and
   // right neighbours are in the other half: x − 1 is its pixel j − 1 for half 0 and j for half 1;
   // x + 1 is j for half 0 and j + 1 for half 1.
-  const I16 keep = stats::lanes::Iota() + float(j) >= float(lv.Count(half));  // senders past the row's end
+  // Senders past the row's end.
+  const I16 keep = stats::lanes::Iota() + float(j) >= float(lv.Count(half));
   const std::size_t block = lv.BlockSize();
   const int other = 1 - half;
   const float cap = opt.smoothness_truncation;

@@ -69,8 +69,9 @@ const std::vector<Frame>& GlassClip() {
     // a second lamp — the view-dependent changes that differencing takes for novelty.
     const std::string lamp = "lamp l1 -1.0 0.8 2.6 2.2 2.1 1.9";
     text.replace(text.find(lamp), lamp.size(),
-                 lamp + "\nlamp l2 1.2 -0.6 2.6 1.6 1.6 1.7\nmaterial tin metal 0.75 0.75 0.78 0.9 80 "
-                        "0.6\nobject plate plate 0.11 tin at -0.05 -0.25 on cloth mass 0.3");
+                 lamp + "\nlamp l2 1.2 -0.6 2.6 1.6 1.6 1.7" +
+                     "\nmaterial tin metal 0.75 0.75 0.78 0.9 80 0.6" +
+                     "\nobject plate plate 0.11 tin at -0.05 -0.25 on cloth mass 0.3");
     return Simulate(text);
   }();
   return frames;
@@ -168,9 +169,9 @@ std::pair<double, double> CupSelectivity(double reduction) {
   return {s.as_surprise, s.as_difference};
 }
 
-// Thesis fig. 4.13 (R2, R4): with fewer reference views the prior is interpolated from farther views;
-// surprise, which weighs differences by the map's uncertainty, loses less selectivity than
-// differencing, which sees every interpolation error at edges as change.
+// Thesis fig. 4.13 (R2, R4): with fewer reference views the prior is interpolated from farther
+// views; surprise, which weighs differences by the map's uncertainty, loses less selectivity
+// than differencing, which sees every interpolation error at edges as change.
 TEST(AppearanceMap, FewerReferenceViewsHurtSurpriseLessThanDifferencing) {
   const auto [s1, d1] = CupSelectivity(1.0);
   const auto [s2, d2] = CupSelectivity(2.0);
