@@ -61,6 +61,16 @@ inline V GatherLanes(const S* p, I16 index) {
 #endif
 }
 inline F16 Gather(const float* p, I16 index) { return GatherLanes<F16>(p, index); }
+/// The 32-bit word at byte offset offset[k] of `base` per lane (unaligned reads).
+inline I16 GatherBytes(const char* base, I16 offset) {
+#if defined(__AVX512F__)
+  return (I16)_mm512_i32gather_epi32((__m512i)offset, base, 1);
+#else
+  I16 v;
+  for (int k = 0; k < kLanes; ++k) std::memcpy(&v[k], base + offset[k], 4);
+  return v;
+#endif
+}
 inline I16 GatherInt(const int32_t* p, I16 index) { return GatherLanes<I16>(p, index); }
 
 }  // namespace novelty::stats::lanes

@@ -1,7 +1,9 @@
 #include "maps/views/view_blender.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <opencv2/core/utility.hpp>
@@ -32,6 +34,27 @@ inline float Gather(const float* p, int i) { return p[i]; }
 inline F16 Gather(const float* p, I16 i) { return stats::lanes::Gather(p, i); }
 inline int GatherWord(const int32_t* p, int i) { return p[i]; }
 inline I16 GatherWord(const int32_t* p, I16 i) { return stats::lanes::GatherInt(p, i); }
+inline int GatherBytes(const char* base, int offset) {
+  int v;
+  std::memcpy(&v, base + offset, 4);
+  return v;
+}
+inline I16 GatherBytes(const char* base, I16 offset) {
+  return stats::lanes::GatherBytes(base, offset);
+}
+// IEEE half floats (in the low 16 bits) to float.
+inline float HalfToFloat(int bits) {
+  return float(cv::float16_t::fromBits(static_cast<ushort>(bits & 0xFFFF)));
+}
+inline F16 HalfToFloat(I16 bits) {
+#if defined(__AVX512F__)
+  return (F16)_mm512_cvtph_ps(_mm512_cvtepi32_epi16((__m512i)bits));
+#else
+  F16 v;
+  for (int k = 0; k < kLanes; ++k) v[k] = HalfToFloat(bits[k]);
+  return v;
+#endif
+}
 inline float Pow(float x, float p) { return std::pow(x, p); }
 inline F16 Pow(F16 x, float p) {
   for (int k = 0; k < kLanes; ++k) x[k] = std::pow(x[k], p);
@@ -56,10 +79,11 @@ inline void LoadMap(const cv::Vec2f* map, F16& u, F16& v) {
 // Channels whose accumulator rows the final pass keeps in registers (more are read per pixel).
 constexpr int kMaxPlanarChannels = 8;
 
-// A view's plane as the kernel reads it, in one of two forms:
+// A view's plane as the kernel reads it, in one of three forms:
 //   float:  continuous floats, one gather per channel and bilinear corner;
 //   packed: 8-bit planes of up to four channels as one 32-bit word per pixel (RGB → RGBA), so
-//           one gather per corner fetches every channel — for RGB three times fewer gathers.
+//           one gather per corner fetches every channel — for RGB three times fewer gathers;
+//   half:   half-float planes in place, one gather per two channels (HalfPlane below).
 // Corner(pixel) is what a corner's samples are read from; Value(corner, c) is channel c there.
 struct FloatPlane {
   const float* data;
@@ -86,6 +110,36 @@ struct PackedPlane {
     return ToFloat((word >> (8 * c)) & 0xFF);
   }
 };
+
+// Half-float planes of 2…8 channels, read in place (no float copy of the view): the 32-bit word
+// at channel 2w holds channels 2w and 2w+1; with an odd count the last word starts one channel
+// earlier, so every read stays inside the pixel. One gather per two channels and corner.
+struct HalfPlane {
+  static constexpr int kMaxChannels = 8;
+  const char* data;  // pixel p starts at byte 2·channels·p
+  int cols, rows, channels;
+  int First(int word) const { return std::min(2 * word, channels - 2); }
+  template <class I>
+  std::array<I, kMaxChannels / 2> Corner(I pixel) const {
+    std::array<I, kMaxChannels / 2> words{};
+    const I byte = pixel * (2 * channels);
+    for (int w = 0; w < (channels + 1) / 2; ++w) words[w] = GatherBytes(data, byte + 2 * First(w));
+    return words;
+  }
+  template <class T, class W>
+  T Value(const W& words, int c) const {
+    const auto word = words[std::size_t(c / 2)];
+    return HalfToFloat(c == First(c / 2) ? word : word >> 16);
+  }
+};
+
+std::optional<HalfPlane> AsHalfPlane(const cv::Mat& plane) {
+  if (plane.depth() != CV_16F || plane.channels() < 2 ||
+      plane.channels() > HalfPlane::kMaxChannels || !plane.isContinuous())
+    return std::nullopt;
+  return HalfPlane{reinterpret_cast<const char*>(plane.ptr()), plane.cols, plane.rows,
+                   plane.channels()};
+}
 
 // Converts to the float form where the plane is not continuous float already.
 FloatPlane AsFloatPlane(const cv::Mat& plane, cv::Mat& scratch) {
@@ -232,6 +286,9 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
     const float weight = o.weights.empty() ? 1.0f : float(o.weights[k]);
     if (const auto packed = AsPackedPlane(planes[k], scratch)) {
       AccumulateView(ViewInputs<PackedPlane>{&warps[k], *packed, weight}, o, nearest, acc,
+                     weight_sum);
+    } else if (const auto half = AsHalfPlane(planes[k])) {
+      AccumulateView(ViewInputs<HalfPlane>{&warps[k], *half, weight}, o, nearest, acc,
                      weight_sum);
     } else {
       AccumulateView(ViewInputs<FloatPlane>{&warps[k], AsFloatPlane(planes[k], scratch), weight},

@@ -31,6 +31,14 @@ TEST(Lanes, GatherIotaMinMaxAndStore) {
   for (int i = 0; i < 100; ++i) words[i] = -7 * i;
   const I16 w = GatherInt(words.data(), index);
   for (int k = 0; k < kLanes; ++k) EXPECT_EQ(w[k], -7 * (6 * k + 1));
+  // Unaligned 32-bit words at byte offsets 3k + 1 of the bytes 0, 1, 2, …
+  std::vector<char> bytes(80);
+  for (int i = 0; i < 80; ++i) bytes[i] = char(i);
+  const I16 unaligned = GatherBytes(bytes.data(), AsInt(Iota() * 3.0f + 1.0f));
+  for (int k = 0; k < kLanes; ++k) {
+    const int b = 3 * k + 1;  // little endian: the first byte is the lowest
+    EXPECT_EQ(unaligned[k], b | (b + 1) << 8 | (b + 2) << 16 | (b + 3) << 24) << k;
+  }
   const F16 a = Iota(), b = F16{} + 7.5f;
   float out[kLanes];
   Store(out, Min(a, b));

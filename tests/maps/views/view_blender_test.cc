@@ -62,26 +62,32 @@ TEST(ViewBlender, MultiChannelPlanesKeepTheirChannels) {
 TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
   // 40 columns: two sixteen-pixel groups and a tail of eight, so both kernel forms run. The map
   // samples between pixels; a plane linear in x and y is reproduced exactly by bilinear
-  // interpolation, clamped at the border (u ≤ 39). 8-bit planes take the packed-word path.
+  // interpolation, clamped at the border (u ≤ 39). 8-bit planes take the packed-word path,
+  // half-float planes the in-place path (2 and 7 channels: whole words, and an odd last one).
   const int w = 40, h = 20;
   WarpField f = Field(w, h, w, 2.0f);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) f.map.at<cv::Vec2f>(y, x) = cv::Vec2f(x + 0.25f, y * 0.5f + 0.5f);
-  cv::Mat linear(h, w, CV_32FC3);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int c = 0; c < 3; ++c) linear.at<cv::Vec3f>(y, x)[c] = 2.0f * x + 3.0f * y + 40.0f * c;
-  for (int depth : {CV_8U, CV_16F, CV_32F}) {
+  const std::pair<int, int> cases[] = {{CV_8U, 3},  {CV_16F, 2}, {CV_16F, 3},
+                                       {CV_16F, 7}, {CV_32F, 3}, {CV_32F, 7}};
+  for (const auto& [depth, channels] : cases) {
+    cv::Mat linear(h, w, CV_32FC(channels));
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int c = 0; c < channels; ++c)
+          linear.ptr<float>(y)[x * channels + c] = 2.0f * x + 3.0f * y + 25.0f * c;
     cv::Mat plane;
     linear.convertTo(plane, depth);
     const BlendResult r = BlendPlanes({f}, {plane});
     ASSERT_EQ(r.covered, w * h);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
-        for (int c = 0; c < 3; ++c) {
+        for (int c = 0; c < channels; ++c) {
           const float u = std::min(x + 0.25f, float(w - 1)), v = y * 0.5f + 0.5f;
-          ASSERT_NEAR(r.value.at<cv::Vec3f>(y, x)[c], 2.0f * u + 3.0f * v + 40.0f * c, 1e-3)
-              << "depth " << depth << " at " << x << "," << y << " channel " << c;
+          ASSERT_NEAR(r.value.ptr<float>(y)[x * channels + c], 2.0f * u + 3.0f * v + 25.0f * c,
+                      1e-3)
+              << "depth " << depth << ", " << channels << " channels, at " << x << "," << y
+              << " channel " << c;
         }
   }
 }
