@@ -1,8 +1,8 @@
 // Sixteen lanes of floats / ints with GCC's vector extensions, for the per-pixel kernels of
-// warping and blending: the compiler maps them to one AVX-512 register or two AVX2 ones;
-// comparisons give lane masks (-1 / 0) and `mask ? a : b` selects per lane. (Eigen's boolean
-// arrays and select are evaluated lane by lane, which kept those kernels scalar.) Arithmetic with
-// a float broadcasts it: `F16{} + 1.0f` is sixteen ones.
+// warping, blending and belief propagation: the compiler maps them to one AVX-512 register or
+// two AVX2 ones; comparisons give lane masks (-1 / 0) and `mask ? a : b` selects per lane.
+// (Eigen's boolean arrays and select are evaluated lane by lane, which kept those kernels
+// scalar.) Arithmetic with a float broadcasts it: `F16{} + 1.0f` is sixteen ones.
 #pragma once
 
 #include <cstdint>
