@@ -154,10 +154,11 @@ FloatPlane AsFloatPlane(const cv::Mat& plane, cv::Mat& scratch) {
 // 8-bit planes of 1–4 channels, padded to four bytes per pixel.
 std::optional<PackedPlane> AsPackedPlane(const cv::Mat& plane, cv::Mat& scratch) {
   if (plane.depth() != CV_8U || plane.channels() > 4) return std::nullopt;
-  std::vector<cv::Mat> channels;
-  cv::split(plane, channels);
-  while (channels.size() < 4) channels.push_back(cv::Mat::zeros(plane.size(), CV_8UC1));
-  cv::merge(channels, scratch);
+  // One pass: the plane's channels into bytes 0…n−1 of each word, zeros after (from index −1).
+  scratch.create(plane.size(), CV_8UC4);
+  std::vector<int> from_to;
+  for (int c = 0; c < 4; ++c) from_to.insert(from_to.end(), {c < plane.channels() ? c : -1, c});
+  cv::mixChannels(&plane, 1, &scratch, 1, from_to.data(), 4);
   return PackedPlane{reinterpret_cast<const int32_t*>(scratch.ptr()), plane.cols, plane.rows,
                      plane.channels()};
 }

@@ -6,19 +6,12 @@
 
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rawlog_output.h"
+#include "tests/sensors/some_camera_pose.h"
 
 namespace novelty::sensors {
 namespace {
 
 namespace fs = std::filesystem;
-
-Eigen::Isometry3d SomeCameraPose() {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() = Eigen::AngleAxisd(2.0, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
-               Eigen::AngleAxisd(-1.85, Eigen::Vector3d::UnitX()).toRotationMatrix();
-  t.translation() = Eigen::Vector3d(0.5, -1.5, 1.1);
-  return t;
-}
 
 // A pose observation before an RGB-D frame with its timestamp gives that frame its camera pose
 // through the frame's own mounting; a frame without one gets none.

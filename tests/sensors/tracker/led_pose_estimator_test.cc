@@ -8,17 +8,10 @@
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/scenario_world.h"
 #include "sim/world/led_tracker.h"
+#include "tests/sensors/some_camera_pose.h"
 
 namespace novelty::sensors {
 namespace {
-
-Eigen::Isometry3d SomeCameraPose() {
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() = Eigen::AngleAxisd(2.0, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
-               Eigen::AngleAxisd(-1.85, Eigen::Vector3d::UnitX()).toRotationMatrix();
-  t.translation() = Eigen::Vector3d(0.5, -1.5, 1.1);
-  return t;
-}
 
 LedSample Exact(const LedPlate& plate, const Eigen::Isometry3d& world_from_camera) {
   LedSample s;
