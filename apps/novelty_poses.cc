@@ -1,7 +1,7 @@
 // novelty-poses: camera poses for a rawlog's camera observations (thesis 3.1).
 //
-//   novelty-poses IN.rawlog --source tracker --out OUT.rawlog [--smoothing 0.4]
-//                 [--groundtruth DIR/groundtruth]
+//   novelty-poses IN.rawlog --source tracker|visual --out OUT.rawlog [--smoothing 0.4]
+//                 [--visual-method direct|features] [--groundtruth DIR/groundtruth]
 //
 // --source tracker: the LED plate is calibrated from the longest static interval of the LED
 // tracker samples (LEDs averaged, plate frame with LED 4 as origin; sensors/tracker/led_plate.h),
@@ -10,9 +10,11 @@
 // the timestamps of the camera observations. OUT is IN with a CObservationRobotPose
 // "POSE_TRACKER" before every camera observation that got a pose
 // (sensors/rawlog/camera_pose_observation.h); novelty-run --poses rawlog uses them.
-// --source visual: visual localization on the rig's stereo or trinocular images (KLT features,
-// stereo triangulation, PnP + RANSAC, re-localization against keyframes; sensors/localization):
-// the first frame is the origin (as the thesis's VGPS) unless --groundtruth gives its true pose.
+// --source visual: visual localization on the rig's stereo or trinocular images
+// (sensors/localization): --visual-method direct (default) aligns every frame photometrically to
+// keyframes with stereo depth; features is the thesis's KLT features, stereo triangulation and
+// PnP + RANSAC. Both re-localize against keyframes after tracking is lost. The first frame is the
+// origin (as the thesis's VGPS) unless --groundtruth gives its true pose.
 // Poses go to the observations of the rig frames (same timestamps). Run it before
 // novelty-depth, which copies the pose observations through to its RGB-D scans.
 // With --groundtruth the pose error against novelty-sim's poses.csv is printed.
@@ -25,10 +27,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 
+#include "sensors/localization/direct_odometry.h"
 #include "sensors/localization/visual_odometry.h"
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/led_observation.h"
@@ -83,22 +88,38 @@ sensors::PoseTrajectory TrackerTrajectory(const std::string& rawlog, int* reject
   return sensors::PoseTrajectory(std::move(poses));
 }
 
+// One visual odometry behind one call: the pose of a stereo pair, or nullopt with the reason.
+using VisualTracker =
+    std::function<std::optional<Eigen::Isometry3d>(const sensors::StereoPair&, std::string*)>;
+
+template <typename Odometry, typename Options>
+VisualTracker MakeTracker(const Eigen::Isometry3d& first) {
+  auto vo = std::make_shared<Odometry>(Options{}, first);
+  return [vo](const sensors::StereoPair& pair, std::string* why) {
+    const auto r = vo->Track(pair, why);
+    return r ? std::optional<Eigen::Isometry3d>(r->world_from_camera) : std::nullopt;
+  };
+}
+
 // Camera poses of the rig frames by visual localization, keyed by timestamp.
 std::map<double, Eigen::Isometry3d> VisualPoses(const std::string& rawlog,
+                                                const std::string& method,
                                                 const std::optional<Eigen::Isometry3d>& first,
                                                 int* lost) {
   sensors::RigFrameReader reader(rawlog);
-  std::optional<sensors::VisualOdometry> vo;
+  const Eigen::Isometry3d origin = first.value_or(Eigen::Isometry3d::Identity());
+  const VisualTracker track =
+      method == "direct"
+          ? MakeTracker<sensors::DirectOdometry, sensors::DirectOdometryOptions>(origin)
+          : MakeTracker<sensors::VisualOdometry, sensors::VisualOdometryOptions>(origin);
   std::map<double, Eigen::Isometry3d> poses;
   int frames = 0;
   for (sensors::RigFrame f; reader.Next(f, nullptr);) {
-    if (!vo)
-      vo.emplace(sensors::VisualOdometryOptions{}, first.value_or(Eigen::Isometry3d::Identity()));
     sensors::StereoPair pair{f.time,       f.images[0],  f.images[1],
                              f.cameras[0], f.cameras[1], f.ref_from_camera[1]};
     std::string why;
-    if (const auto r = vo->Track(pair, &why))
-      poses[f.time] = r->world_from_camera;
+    if (const auto pose = track(pair, &why))
+      poses[f.time] = *pose;
     else
       ++*lost, std::fprintf(stderr, "\n[novelty-poses] frame %d: %s\n", f.index, why.c_str());
     if (++frames % 10 == 0) std::fprintf(stderr, "\r[novelty-poses] frame %d   ", frames);
@@ -118,6 +139,12 @@ int main(int argc, char** argv) {
     TCLAP::ValuesConstraint<std::string> allowed(sources);
     TCLAP::ValueArg<std::string> source("", "source", "Where poses come from", true, "", &allowed,
                                         cmd);
+    std::vector<std::string> methods = {"direct", "features"};
+    TCLAP::ValuesConstraint<std::string> allowed_methods(methods);
+    TCLAP::ValueArg<std::string> method("", "visual-method",
+                                        "Visual localization: direct (photometric, default) or "
+                                        "features (KLT + PnP, as the thesis)",
+                                        false, "direct", &allowed_methods, cmd);
     TCLAP::ValueArg<double> smoothing(
         "", "smoothing", "Half-width (s) of the local linear pose fit; 0 = plain SLERP", false,
         sensors::PoseInterpolationOptions().smoothing_half_window, "S", cmd);
@@ -137,7 +164,7 @@ int main(int argc, char** argv) {
         const auto gt = sensors::LoadGroundTruthPoses(truth.getValue() + "/poses.csv");
         if (!gt.empty()) first = gt.begin()->second;
       }
-      visual_poses = VisualPoses(in.getValue(), first, &rejected);
+      visual_poses = VisualPoses(in.getValue(), method.getValue(), first, &rejected);
     } else {
       trajectory = TrackerTrajectory(in.getValue(), &rejected);
     }

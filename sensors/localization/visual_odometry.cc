@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <map>
 
-#include <opencv2/calib3d.hpp>
-#include <opencv2/core/eigen.hpp>
-#include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
+#include "sensors/localization/opencv_pose.h"
 #include "sensors/tracker/rigid_fit.h"
 
 namespace novelty::sensors {
@@ -22,11 +20,6 @@ struct Feature {
   int observations = 1;   // triangulations averaged into `world`; 1 = not yet confirmed
 };
 
-struct Keyframe {
-  std::vector<Eigen::Vector3d> world;
-  cv::Mat descriptors;  // ORB, one row per world point
-};
-
 cv::Mat Grey(const cv::Mat& image) {
   if (image.channels() == 1) return image;
   cv::Mat grey;
@@ -34,34 +27,8 @@ cv::Mat Grey(const cv::Mat& image) {
   return grey;
 }
 
-cv::Mat CameraMatrix(const views::PinholeCamera& c) {
-  return (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
-}
-
 cv::Point3f ToCv(const Eigen::Vector3d& p) {
   return {float(p.x()), float(p.y()), float(p.z())};
-}
-
-// OpenCV's PnP pose (rvec, tvec: T_cam_world) ⇄ T_world_cam.
-void ToRvecTvec(const Eigen::Isometry3d& world_from_camera, cv::Mat& rvec, cv::Mat& tvec) {
-  const Eigen::Isometry3d cam_from_world = world_from_camera.inverse();
-  cv::Mat r;
-  cv::eigen2cv(Eigen::Matrix3d(cam_from_world.linear()), r);
-  cv::Rodrigues(r, rvec);
-  cv::eigen2cv(Eigen::Vector3d(cam_from_world.translation()), tvec);
-}
-
-Eigen::Isometry3d WorldFromCamera(const cv::Mat& rvec, const cv::Mat& tvec) {
-  cv::Mat r;
-  cv::Rodrigues(rvec, r);
-  Eigen::Matrix3d re;
-  Eigen::Vector3d te;
-  cv::cv2eigen(r, re);
-  cv::cv2eigen(tvec, te);
-  Eigen::Isometry3d cam_from_world = Eigen::Isometry3d::Identity();
-  cam_from_world.linear() = re;
-  cam_from_world.translation() = te;
-  return cam_from_world.inverse();
 }
 
 double Tukey(double r, double c) {
@@ -75,7 +42,7 @@ double Tukey(double r, double c) {
 class VisualOdometry::Impl {
  public:
   Impl(const VisualOdometryOptions& o, const Eigen::Isometry3d& initial)
-      : options(o), pose(initial), orb(cv::ORB::create(500)) {}
+      : options(o), pose(initial), relocalizer(o.relocalizer) {}
 
   VisualOdometryOptions options;
   Eigen::Isometry3d pose;
@@ -84,8 +51,7 @@ class VisualOdometry::Impl {
   cv::Mat previous_grey;
   std::vector<Feature> features;
   std::map<int, cv::Mat> anchors;  // grey images features were detected in, while in use
-  std::vector<Keyframe> keyframes;
-  cv::Ptr<cv::ORB> orb;
+  KeyframeRelocalizer relocalizer;
 
   // Focal length × baseline: converts a depth error at depth Z into disparity pixels (·/Z²).
   static double FocalBaseline(const StereoPair& p) {
@@ -176,7 +142,7 @@ class VisualOdometry::Impl {
       for (int i : inliers) o2.push_back(object[i]), i2.push_back(image[i]);
       cv::solvePnPRefineLM(o2, i2, k, cv::noArray(), rvec, tvec);
     }
-    return WorldFromCamera(rvec, tvec);
+    return WorldFromRvecTvec(rvec, tvec);
   }
 
   // eq. 3.1–3.4, iterated from `start`: Tukey weights from the residuals of the previous fit,
@@ -240,57 +206,6 @@ class VisualOdometry::Impl {
     if (any) anchors[frame] = grey;
   }
 
-  // A keyframe: ORB features of the reference image with their world points (triangulated now).
-  void AddKeyframe(const StereoPair& pair, const cv::Mat& grey, const cv::Mat& other_grey) {
-    std::vector<cv::KeyPoint> keypoints;
-    cv::Mat descriptors;
-    orb->detectAndCompute(grey, cv::noArray(), keypoints, descriptors);
-    std::vector<cv::Point2f> px;
-    for (const cv::KeyPoint& k : keypoints) px.push_back(k.pt);
-    const auto points = TriangulateFeatures(pair, grey, other_grey, px, options.stereo);
-    Keyframe k;
-    for (size_t i = 0; i < points.size(); ++i) {
-      if (!points[i]) continue;
-      k.world.push_back(pose * *points[i]);
-      k.descriptors.push_back(descriptors.row(int(i)));
-    }
-    if (int(k.world.size()) < options.min_inliers) return;
-    keyframes.push_back(std::move(k));
-    if (keyframes.size() > options.max_keyframes) keyframes.erase(keyframes.begin());
-  }
-
-  // ORB matches against every keyframe, PnP + RANSAC on the best: the pose after tracking loss.
-  std::optional<Eigen::Isometry3d> Relocalize(const StereoPair& pair, const cv::Mat& grey) {
-    std::vector<cv::KeyPoint> keypoints;
-    cv::Mat descriptors;
-    orb->detectAndCompute(grey, cv::noArray(), keypoints, descriptors);
-    if (keypoints.size() < 8) return std::nullopt;
-    cv::BFMatcher matcher(cv::NORM_HAMMING);
-    std::optional<Eigen::Isometry3d> best;
-    int best_inliers = options.min_inliers - 1;
-    const cv::Mat k = CameraMatrix(pair.reference_camera);
-    for (const Keyframe& kf : keyframes) {
-      std::vector<std::vector<cv::DMatch>> knn;
-      matcher.knnMatch(descriptors, kf.descriptors, knn, 2);
-      std::vector<cv::Point3f> object;
-      std::vector<cv::Point2f> image;
-      for (const auto& m : knn) {
-        if (m.size() < 2 || m[0].distance > 0.8f * m[1].distance) continue;
-        object.push_back(ToCv(kf.world[m[0].trainIdx]));
-        image.push_back(keypoints[m[0].queryIdx].pt);
-      }
-      if (int(object.size()) < options.min_inliers) continue;
-      cv::Mat rvec, tvec;
-      std::vector<int> inliers;
-      if (!cv::solvePnPRansac(object, image, k, cv::noArray(), rvec, tvec, false, 200, 2.0, 0.99,
-                              inliers))
-        continue;
-      if (int(inliers.size()) <= best_inliers) continue;
-      best_inliers = int(inliers.size());
-      best = WorldFromCamera(rvec, tvec);
-    }
-    return best;
-  }
 };
 
 VisualOdometry::VisualOdometry(const VisualOdometryOptions& options,
@@ -345,7 +260,7 @@ std::optional<VisualOdometryResult> VisualOdometry::Track(const StereoPair& pair
     const int inliers =
         int(std::count_if(weights.begin(), weights.end(), [](double w) { return w > 0; }));
     if (!pose || inliers < s.options.min_inliers) {
-      const auto relocalized = s.Relocalize(pair, grey);
+      const auto relocalized = s.relocalizer.Relocalize(pair, grey);
       if (!relocalized) {
         s.previous_grey = grey;
         s.features.clear();
@@ -385,7 +300,7 @@ std::optional<VisualOdometryResult> VisualOdometry::Track(const StereoPair& pair
     if (int(s.features.size()) < s.options.min_features) s.DetectNew(pair, grey, other_grey);
   }
   if (s.options.keyframe_every > 0 && (s.frame - 1) % s.options.keyframe_every == 0)
-    s.AddKeyframe(pair, grey, other_grey);
+    s.relocalizer.Add(pair, grey, other_grey, s.pose);
   s.previous_grey = grey;
   result.world_from_camera = s.pose;
   if (result.inliers == 0) result.inliers = int(s.features.size());

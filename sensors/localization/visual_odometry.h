@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "sensors/localization/keyframe_relocalizer.h"
 #include "sensors/localization/stereo_pair.h"
 #include "sensors/localization/stereo_triangulation.h"
 
@@ -45,7 +46,7 @@ struct VisualOdometryOptions {
   bool pose_from_reprojection = true;
   /// Keyframes for re-localization: one every this many frames (0 = none).
   int keyframe_every = 10;
-  size_t max_keyframes = 200;
+  KeyframeRelocalizerOptions relocalizer;
 };
 
 struct VisualOdometryResult {

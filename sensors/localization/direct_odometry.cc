@@ -1,0 +1,143 @@
+#include "sensors/localization/direct_odometry.h"
+
+#include <algorithm>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace novelty::sensors {
+namespace {
+
+cv::Mat Grey(const cv::Mat& image) {
+  if (image.channels() == 1) return image;
+  cv::Mat grey;
+  cv::cvtColor(image, grey, cv::COLOR_RGB2GRAY);
+  return grey;
+}
+
+cv::Mat Float(const cv::Mat& grey) {
+  cv::Mat f;
+  grey.convertTo(f, CV_32F);
+  return f;
+}
+
+struct Keyframe {
+  Eigen::Isometry3d world_from_camera;
+  GradientPyramid pyramid;
+  std::vector<Eigen::Vector3d> points;  // keyframe camera frame
+  std::vector<cv::Point2f> px;          // where each was selected
+  double median_depth = 1.0;
+};
+
+// One frame's images in the forms the steps need.
+struct FrameImages {
+  cv::Mat grey, other_grey;  // 8-bit, for ORB and KLT
+  cv::Mat grey_f;            // float, for the stereo depth of keyframes
+  GradientPyramid pyramid;   // locally normalized, for the photometric alignment
+};
+
+}  // namespace
+
+class DirectOdometry::Impl {
+ public:
+  Impl(const DirectOdometryOptions& o, const Eigen::Isometry3d& p)
+      : options(o), pose(p), relocalizer(o.relocalizer) {}
+  DirectOdometryOptions options;
+  Eigen::Isometry3d pose;
+  bool started = false;
+  std::optional<Keyframe> keyframe;  // empty before the first frame and after tracking loss
+  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  // last frame-to-frame motion
+  KeyframeRelocalizer relocalizer;
+
+  // A keyframe at the current pose; also kept for re-localization.
+  bool TakeKeyframe(const StereoPair& pair, const FrameImages& f, std::string* why) {
+    const auto measured = EpipolarDepths(pair, f.grey_f, Float(f.other_grey), options.depth);
+    if (int(measured.size()) < options.min_points) {
+      if (why) *why = "only " + std::to_string(measured.size()) + " pixels with stereo depth";
+      return false;
+    }
+    Keyframe k;
+    k.world_from_camera = pose;
+    k.pyramid = f.pyramid;
+    std::vector<float> depths;
+    for (const EpipolarPoint& e : measured) {
+      k.points.push_back(pair.reference_camera.Unproject(e.px.x, e.px.y, e.depth));
+      k.px.push_back(e.px);
+      depths.push_back(e.depth);
+    }
+    std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
+    k.median_depth = depths[depths.size() / 2];
+    keyframe = std::move(k);
+    relocalizer.Add(pair, f.grey, f.other_grey, pose);
+    return true;
+  }
+
+  bool NeedsKeyframe(const AlignmentResult& a) const {
+    const Eigen::Isometry3d& t = a.current_from_keyframe;
+    const double angle = Eigen::AngleAxisd(t.linear()).angle() * 180 / M_PI;
+    return t.translation().norm() > options.keyframe_distance * keyframe->median_depth ||
+           angle > options.keyframe_angle_deg ||
+           a.visible < options.min_visible_fraction * double(keyframe->points.size());
+  }
+};
+
+DirectOdometry::DirectOdometry(const DirectOdometryOptions& options,
+                               const Eigen::Isometry3d& initial_pose)
+    : impl_(std::make_unique<Impl>(options, initial_pose)) {}
+DirectOdometry::~DirectOdometry() = default;
+
+std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair,
+                                                          std::string* why) {
+  Impl& s = *impl_;
+  auto fail = [&](const std::string& reason) -> std::optional<DirectOdometryResult> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
+  if (pair.reference.empty() || pair.reference.size() != pair.other.size())
+    return fail("stereo images missing or of different sizes");
+  FrameImages f;
+  f.grey = Grey(pair.reference);
+  f.other_grey = Grey(pair.other);
+  f.grey_f = Float(f.grey);
+  f.pyramid = GradientPyramid::Build(LocallyNormalized(f.grey_f, s.options.normalization),
+                                     s.options.alignment.levels);
+  DirectOdometryResult result;
+  std::string lost;
+  if (s.keyframe) {
+    // Constant-velocity prediction of T_cur_kf.
+    const Eigen::Isometry3d kf_from_previous = s.keyframe->world_from_camera.inverse() * s.pose;
+    const Eigen::Isometry3d predicted = (kf_from_previous * s.motion).inverse();
+    const AlignmentResult a =
+        AlignPhotometric(s.keyframe->points, s.keyframe->px, s.keyframe->pyramid, f.pyramid,
+                         pair.reference_camera, predicted, s.options.alignment);
+    if (a.visible >= s.options.min_points && a.rms <= s.options.max_rms) {
+      const Eigen::Isometry3d world_from_camera =
+          s.keyframe->world_from_camera * a.current_from_keyframe.inverse();
+      s.motion = s.pose.inverse() * world_from_camera;
+      s.pose = world_from_camera;
+      result.world_from_camera = s.pose;
+      result.points = a.visible;
+      result.rms = a.rms;
+      if (s.NeedsKeyframe(a)) result.new_keyframe = s.TakeKeyframe(pair, f, nullptr);
+      return result;
+    }
+    lost = " (" + std::to_string(a.visible) + " points, photometric RMS " +
+           std::to_string(int(a.rms)) + ")";
+    s.keyframe.reset();
+  }
+  // The first frame starts at the given pose; after tracking loss the pose is re-localized.
+  if (s.started) {
+    const auto relocalized = s.relocalizer.Relocalize(pair, f.grey);
+    if (!relocalized) return fail("tracking lost" + lost + " and no keyframe matches");
+    s.pose = *relocalized;
+    result.relocalized = true;
+  }
+  if (!s.TakeKeyframe(pair, f, why)) return std::nullopt;
+  s.started = true;
+  s.motion = Eigen::Isometry3d::Identity();
+  result.world_from_camera = s.pose;
+  result.points = int(s.keyframe->points.size());
+  result.new_keyframe = true;
+  return result;
+}
+
+}  // namespace novelty::sensors
