@@ -23,9 +23,9 @@ StereoPair PlanePair(const cv::Mat& texture, double z, double baseline = 0.12) {
   return pair;
 }
 
-cv::Mat Texture() {
+cv::Mat Texture(int seed = 7) {
   cv::Mat noise(240, 320, CV_32F);
-  cv::RNG rng(7);
+  cv::RNG rng(seed);
   rng.fill(noise, cv::RNG::UNIFORM, 0, 255);
   cv::GaussianBlur(noise, noise, cv::Size(0, 0), 1.5);
   cv::normalize(noise, noise, 20, 235, cv::NORM_MINMAX);
@@ -67,6 +67,38 @@ TEST(EpipolarDepths, RejectAPlaneOutsideTheDepthRange) {
   EXPECT_EQ(in_range_wrong, 0);
   // Of 4600 blocks 221 find a chance match on this texture (5 %); the thresholds reject the rest.
   EXPECT_LT(points.size(), 460u);
+}
+
+// A textured box 1 m away in front of a textured wall 3 m away: near the box's edges the
+// reference sees wall the other camera does not (occlusion). Returns the share of measured
+// pixels whose depth is more than 5 % off.
+double ShareOffAtOcclusions(const EpipolarDepthOptions& options) {
+  StereoPair pair = PlanePair(Texture(1), 3.0);  // the wall in both images
+  const double f = pair.reference_camera.fx, near = 1.0;
+  const cv::Rect box(100, 60, 120, 120);  // in the reference image
+  const cv::Mat front = Texture(2);
+  front(box).copyTo(pair.reference(box));
+  const int shift = int(std::lround(f * 0.12 / near));  // whole pixels: exact copy
+  front(box).copyTo(pair.other(box - cv::Point(shift, 0)));
+  const auto points = EpipolarDepths(pair, pair.reference, pair.other, options);
+  int off = 0;
+  for (const EpipolarPoint& p : points) {
+    const double truth = box.contains(cv::Point(int(p.px.x + 0.5f), int(p.px.y + 0.5f)))
+                             ? f * 0.12 / shift
+                             : 3.0;
+    off += std::abs(p.depth / truth - 1) > 0.05;
+  }
+  return double(off) / points.size();
+}
+
+TEST(EpipolarDepths, LeftRightCheckRejectsMatchesOfOccludedPixels) {
+  EpipolarDepthOptions without;
+  without.max_left_right_px = 0;
+  const double before = ShareOffAtOcclusions(without), after = ShareOffAtOcclusions({});
+  std::printf("more than 5 %% off: %.1f %% of pixels without the check, %.1f %% with\n",
+              100 * before, 100 * after);
+  EXPECT_LT(after, 0.5 * before);
+  EXPECT_LT(after, 0.01);
 }
 
 }  // namespace
