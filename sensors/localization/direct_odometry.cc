@@ -45,6 +45,7 @@ class DirectOdometry::Impl {
   Eigen::Isometry3d pose;
   bool started = false;
   std::optional<Keyframe> keyframe;  // empty before the first frame and after tracking loss
+  std::vector<Keyframe> kept;        // every keyframe taken, for localization against them
   Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  // last frame-to-frame motion
   KeyframeRelocalizer relocalizer;
 
@@ -66,9 +67,52 @@ class DirectOdometry::Impl {
     }
     std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
     k.median_depth = depths[depths.size() / 2];
-    keyframe = std::move(k);
+    keyframe = k;
+    kept.push_back(std::move(k));
+    if (kept.size() > options.relocalizer.max_keyframes) kept.erase(kept.begin());
     relocalizer.Add(pair, f.grey, f.other_grey, pose);
     return true;
+  }
+
+  FrameImages Prepare(const StereoPair& pair) const {
+    FrameImages f;
+    f.grey = Grey(pair.reference);
+    f.other_grey = Grey(pair.other);
+    f.grey_f = Float(f.grey);
+    f.pyramid = GradientPyramid::Build(LocallyNormalized(f.grey_f, options.normalization),
+                                       options.alignment.levels);
+    return f;
+  }
+
+  // The pose of a frame in this odometry's frame without tracking: `prior`, or else ORB + PnP
+  // against the kept keyframes, gives a first pose, refined by photometric alignment to the
+  // kept keyframe nearest to it (ORB alone is centimetres off).
+  std::optional<Eigen::Isometry3d> Localize(const StereoPair& pair, const FrameImages& f,
+                                            const std::optional<Eigen::Isometry3d>& prior,
+                                            std::string* why) const {
+    const auto guess = prior ? prior : relocalizer.Relocalize(pair, f.grey);
+    if (!guess) {
+      if (why) *why = "no keyframe matches";
+      return std::nullopt;
+    }
+    const Keyframe* nearest = nullptr;
+    double nearest_cost = 0;
+    for (const Keyframe& k : kept) {
+      const Eigen::Isometry3d d = k.world_from_camera.inverse() * *guess;
+      // Camera displacement plus the turn, both as shifts of the scene at the keyframe's depth.
+      const double cost =
+          d.translation().norm() + Eigen::AngleAxisd(d.linear()).angle() * k.median_depth;
+      if (!nearest || cost < nearest_cost) nearest = &k, nearest_cost = cost;
+    }
+    if (!nearest) return guess;
+    const AlignmentResult a = AlignPhotometric(
+        nearest->points, nearest->px, nearest->pyramid, f.pyramid, pair.reference_camera,
+        guess->inverse() * nearest->world_from_camera, options.alignment);
+    if (a.visible < options.min_points || a.rms > options.max_rms) {
+      if (prior && why) *why = "the frame does not align with the nearest keyframe";
+      return prior ? std::nullopt : guess;
+    }
+    return nearest->world_from_camera * a.current_from_keyframe.inverse();
   }
 
   bool NeedsKeyframe(const AlignmentResult& a) const {
@@ -94,12 +138,7 @@ std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair
   };
   if (pair.reference.empty() || pair.reference.size() != pair.other.size())
     return fail("stereo images missing or of different sizes");
-  FrameImages f;
-  f.grey = Grey(pair.reference);
-  f.other_grey = Grey(pair.other);
-  f.grey_f = Float(f.grey);
-  f.pyramid = GradientPyramid::Build(LocallyNormalized(f.grey_f, s.options.normalization),
-                                     s.options.alignment.levels);
+  const FrameImages f = s.Prepare(pair);
   DirectOdometryResult result;
   std::string lost;
   if (s.keyframe) {
@@ -126,7 +165,7 @@ std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair
   }
   // The first frame starts at the given pose; after tracking loss the pose is re-localized.
   if (s.started) {
-    const auto relocalized = s.relocalizer.Relocalize(pair, f.grey);
+    const auto relocalized = s.Localize(pair, f, std::nullopt, nullptr);
     if (!relocalized) return fail("tracking lost" + lost + " and no keyframe matches");
     s.pose = *relocalized;
     result.relocalized = true;
@@ -138,6 +177,16 @@ std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair
   result.points = int(s.keyframe->points.size());
   result.new_keyframe = true;
   return result;
+}
+
+std::optional<Eigen::Isometry3d> DirectOdometry::Localize(
+    const StereoPair& pair, std::string* why,
+    const std::optional<Eigen::Isometry3d>& prior) const {
+  if (pair.reference.empty() || pair.reference.size() != pair.other.size()) {
+    if (why) *why = "stereo images missing or of different sizes";
+    return std::nullopt;
+  }
+  return impl_->Localize(pair, impl_->Prepare(pair), prior, why);
 }
 
 }  // namespace novelty::sensors

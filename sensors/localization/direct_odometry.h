@@ -5,7 +5,8 @@
 // prediction. Drift accumulates only when a new keyframe is taken, not every frame, and edges
 // count as well as corners — a scene whose corners are mostly occlusion boundaries (object
 // silhouettes) still gives hundreds of well-measured pixels. Every keyframe is also kept for
-// re-localization (ORB + PnP) after tracking is lost.
+// re-localization after tracking is lost (ORB + PnP, refined by alignment to the nearest
+// keyframe) and for localizing frames of other sequences (Localize).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -53,6 +54,14 @@ class DirectOdometry {
   ~DirectOdometry();
   /// The pose of this frame, or nullopt with the reason (lost and not re-localized; bad input).
   std::optional<DirectOdometryResult> Track(const StereoPair& pair, std::string* why);
+  /// T_world_cam of a frame of another sequence (or a later visit) in this odometry's frame,
+  /// against the keyframes taken so far, without changing the tracking state: the support views
+  /// of sequence registration (thesis 6.1.1). Starts from `prior` when given (e.g. the pose the
+  /// last support view's registration predicts), else from ORB matches, and is refined by
+  /// photometric alignment to the nearest keyframe. nullopt with the reason if that fails.
+  std::optional<Eigen::Isometry3d> Localize(
+      const StereoPair& pair, std::string* why,
+      const std::optional<Eigen::Isometry3d>& prior = std::nullopt) const;
 
  private:
   class Impl;
