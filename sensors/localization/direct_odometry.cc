@@ -45,7 +45,8 @@ class DirectOdometry::Impl {
   Eigen::Isometry3d pose;
   bool started = false;
   std::optional<Keyframe> keyframe;  // empty before the first frame and after tracking loss
-  std::vector<Keyframe> kept;        // every keyframe taken, for localization against them
+  std::vector<Keyframe> kept;  // keyframes taken (at most relocalizer.max_keyframes), to localize
+                               // against
   Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  // last frame-to-frame motion
   KeyframeRelocalizer relocalizer;
 
@@ -58,7 +59,7 @@ class DirectOdometry::Impl {
     }
     Keyframe k;
     k.world_from_camera = pose;
-    k.pyramid = f.pyramid;
+    k.pyramid.image = f.pyramid.image;  // its gradients are never used: 0.4 MB, not 1.2 MB
     std::vector<float> depths;
     for (const EpipolarPoint& e : measured) {
       k.points.push_back(pair.reference_camera.Unproject(e.px.x, e.px.y, e.depth));

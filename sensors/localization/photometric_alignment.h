@@ -37,8 +37,8 @@ struct AlignmentResult {
 };
 
 /// Aligns keyframe points (`points`: keyframe camera frame; `intensity_px`: where each was
-/// selected in the keyframe image, whose pyramid is `keyframe`) to `current`, starting from
-/// `initial` T_cur_kf.
+/// selected in the keyframe image, whose pyramid is `keyframe` — only its images are read, not
+/// its gradients) to `current`, starting from `initial` T_cur_kf.
 AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
                                  const std::vector<cv::Point2f>& intensity_px,
                                  const GradientPyramid& keyframe, const GradientPyramid& current,
