@@ -4,15 +4,10 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "sensors/localization/grey_image.h"
+
 namespace novelty::sensors {
 namespace {
-
-cv::Mat Grey(const cv::Mat& image) {
-  if (image.channels() == 1) return image;
-  cv::Mat grey;
-  cv::cvtColor(image, grey, cv::COLOR_RGB2GRAY);
-  return grey;
-}
 
 cv::Mat Float(const cv::Mat& grey) {
   cv::Mat f;
@@ -77,8 +72,8 @@ class DirectOdometry::Impl {
 
   FrameImages Prepare(const StereoPair& pair) const {
     FrameImages f;
-    f.grey = Grey(pair.reference);
-    f.other_grey = Grey(pair.other);
+    f.grey = GreyImage(pair.reference);
+    f.other_grey = GreyImage(pair.other);
     f.grey_f = Float(f.grey);
     f.pyramid = GradientPyramid::Build(LocallyNormalized(f.grey_f, options.normalization),
                                        options.alignment.levels);

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 
+#include "sensors/localization/grey_image.h"
 #include "sensors/localization/opencv_pose.h"
 #include "sensors/tracker/rigid_fit.h"
 
@@ -19,13 +20,6 @@ struct Feature {
   cv::Point2f anchor_px;  // and where
   int observations = 1;   // triangulations averaged into `world`; 1 = not yet confirmed
 };
-
-cv::Mat Grey(const cv::Mat& image) {
-  if (image.channels() == 1) return image;
-  cv::Mat grey;
-  cv::cvtColor(image, grey, cv::COLOR_RGB2GRAY);
-  return grey;
-}
 
 cv::Point3f ToCv(const Eigen::Vector3d& p) {
   return {float(p.x()), float(p.y()), float(p.z())};
@@ -223,7 +217,7 @@ std::optional<VisualOdometryResult> VisualOdometry::Track(const StereoPair& pair
   };
   if (pair.reference.empty() || pair.reference.size() != pair.other.size())
     return fail("stereo images missing or of different sizes");
-  const cv::Mat grey = Grey(pair.reference), other_grey = Grey(pair.other);
+  const cv::Mat grey = GreyImage(pair.reference), other_grey = GreyImage(pair.other);
   const double fb = Impl::FocalBaseline(pair);
   VisualOdometryResult result;
   ++s.frame;
