@@ -37,14 +37,16 @@ struct DirectOdometryOptions {
   double keyframe_angle_deg = 8.0;
   double min_visible_fraction = 0.6;
   int min_points = 100;   ///< a keyframe (or an alignment) with fewer points fails
-  double max_rms = 25.0;  ///< photometric RMS (grey levels) above which tracking is lost
+  /// Photometric RMS of the aligned images above which tracking is lost (in the units of the
+  /// normalized images, which `normalization.scale` keeps comparable to grey levels).
+  double max_rms = 25.0;
   KeyframeRelocalizerOptions relocalizer;
 };
 
 struct DirectOdometryResult {
   Eigen::Isometry3d world_from_camera = Eigen::Isometry3d::Identity();
   int points = 0;  ///< keyframe points visible in this frame
-  double rms = 0;  ///< photometric RMS residual (grey levels)
+  double rms = 0;  ///< photometric RMS residual (units of the normalized images)
   bool new_keyframe = false;
   bool relocalized = false;
 };
