@@ -28,6 +28,7 @@ struct FrameImages {
   cv::Mat grey, other_grey;  // 8-bit, for ORB and KLT
   cv::Mat grey_f;            // float, for the stereo depth of keyframes
   GradientPyramid pyramid;   // locally normalized, for the photometric alignment
+  GradientPyramid other_pyramid;  // the same of the other image, when both are aligned
 };
 
 }  // namespace
@@ -77,7 +78,18 @@ class DirectOdometry::Impl {
     f.grey_f = Float(f.grey);
     f.pyramid = GradientPyramid::Build(LocallyNormalized(f.grey_f, options.normalization),
                                        options.alignment.levels);
+    if (options.align_both_images)
+      f.other_pyramid = GradientPyramid::Build(
+          LocallyNormalized(Float(f.other_grey), options.normalization), options.alignment.levels);
     return f;
+  }
+
+  // The images a frame's pose is aligned to: the reference image, and the other if asked.
+  std::vector<AlignmentView> Views(const StereoPair& pair, const FrameImages& f) const {
+    std::vector<AlignmentView> v = {{&f.pyramid, pair.reference_camera}};
+    if (options.align_both_images)
+      v.push_back({&f.other_pyramid, pair.other_camera, pair.reference_from_other.inverse()});
+    return v;
   }
 
   // The pose of a frame in this odometry's frame without tracking: `prior`, or else ORB + PnP
@@ -101,9 +113,10 @@ class DirectOdometry::Impl {
       if (!nearest || cost < nearest_cost) nearest = &k, nearest_cost = cost;
     }
     if (!nearest) return guess;
-    const AlignmentResult a = AlignPhotometric(
-        nearest->points, nearest->px, nearest->pyramid, f.pyramid, pair.reference_camera,
-        guess->inverse() * nearest->world_from_camera, options.alignment);
+    const AlignmentResult a = AlignPhotometric(nearest->points, nearest->px, nearest->pyramid,
+                                               Views(pair, f),
+                                               guess->inverse() * nearest->world_from_camera,
+                                               options.alignment);
     if (a.visible < options.min_points || a.rms > options.max_rms) {
       if (prior && why) *why = "the frame does not align with the nearest keyframe";
       return prior ? std::nullopt : guess;
@@ -142,8 +155,8 @@ std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair
     const Eigen::Isometry3d kf_from_previous = s.keyframe->world_from_camera.inverse() * s.pose;
     const Eigen::Isometry3d predicted = (kf_from_previous * s.motion).inverse();
     const AlignmentResult a =
-        AlignPhotometric(s.keyframe->points, s.keyframe->px, s.keyframe->pyramid, f.pyramid,
-                         pair.reference_camera, predicted, s.options.alignment);
+        AlignPhotometric(s.keyframe->points, s.keyframe->px, s.keyframe->pyramid,
+                         s.Views(pair, f), predicted, s.options.alignment);
     if (a.visible >= s.options.min_points && a.rms <= s.options.max_rms) {
       const Eigen::Isometry3d world_from_camera =
           s.keyframe->world_from_camera * a.current_from_keyframe.inverse();

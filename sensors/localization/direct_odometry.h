@@ -30,6 +30,9 @@ struct DirectOdometryOptions {
   /// moved) does not lose tracking; window 0 aligns raw grey levels.
   LocalNormalizationOptions normalization;
   PhotometricAlignmentOptions alignment;
+  /// Align the keyframe's points to the other image of the pair as well (the rig offset is
+  /// known): twice the measurements per frame.
+  bool align_both_images = true;
   /// A new keyframe is taken when the camera has moved this fraction of the keyframe's median
   /// depth, turned by more than `keyframe_angle_deg`, or sees fewer than
   /// `min_visible_fraction` of the keyframe's points.

@@ -32,38 +32,57 @@ struct Normal {
   Matrix6d h = Matrix6d::Zero();
   Vector6d b = Vector6d::Zero();
   double cost = 0;
-  int visible = 0, inliers = 0;
+  int visible = 0;    // points inside the first (reference) view
+  int residuals = 0;  // over all views
+  int inliers = 0;
   double sq = 0;
 };
 
-// Normal equations of the Huber-weighted residuals at level `l` for pose `t`.
-Normal Accumulate(const std::vector<Eigen::Vector3d>& points,
-                  const std::vector<float>& reference, const cv::Mat& image, const cv::Mat& gx,
-                  const cv::Mat& gy, const views::PinholeCamera& c, const Eigen::Isometry3d& t,
-                  double huber) {
-  Normal n;
+// Adds the Huber-weighted residuals of `points` (T·p in the reference camera) seen in one view
+// at one pyramid level to the normal equations of T ← exp(ξ)·T.
+void Accumulate(const std::vector<Eigen::Vector3d>& points, const std::vector<float>& reference,
+                const cv::Mat& image, const cv::Mat& gx, const cv::Mat& gy,
+                const views::PinholeCamera& c, const Eigen::Isometry3d& view_from_reference,
+                const Eigen::Isometry3d& t, double huber, bool count_visible, Normal& n) {
   const float max_x = float(image.cols - 2), max_y = float(image.rows - 2);
+  const Eigen::Matrix3d r_vt = view_from_reference.linear().transpose();
   for (size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3d p = t * points[i];
+    const Eigen::Vector3d q = t * points[i];  // reference camera
+    const Eigen::Vector3d p = view_from_reference * q;
     if (p.z() <= 1e-3) continue;
     const double iz = 1.0 / p.z();
     const float u = float(c.fx * p.x() * iz + c.cx), v = float(c.fy * p.y() * iz + c.cy);
     if (!(u >= 1 && v >= 1 && u < max_x && v < max_y)) continue;
     const double r = SampleBilinear(image, u, v) - reference[i];
     const double gu = SampleBilinear(gx, u, v), gv = SampleBilinear(gy, u, v);
-    // ∂I/∂p through the projection, then ∂p/∂ξ = [I | −[p]×] for T ← exp(ξ)·T.
-    const Eigen::Vector3d dp(gu * c.fx * iz, gv * c.fy * iz,
-                             -(gu * c.fx * p.x() + gv * c.fy * p.y()) * iz * iz);
+    // ∂I/∂p through the projection, rotated back into the reference camera, then
+    // ∂q/∂ξ = [I | −[q]×] for T ← exp(ξ)·T.
+    const Eigen::Vector3d dq =
+        r_vt * Eigen::Vector3d(gu * c.fx * iz, gv * c.fy * iz,
+                               -(gu * c.fx * p.x() + gv * c.fy * p.y()) * iz * iz);
     Vector6d j;
-    j << dp, p.cross(dp);
+    j << dq, q.cross(dq);
     const double a = std::abs(r);
     const double w = a <= huber ? 1.0 : huber / a;
     n.h.selfadjointView<Eigen::Upper>().rankUpdate(j, w);
     n.b += w * r * j;
     n.cost += a <= huber ? 0.5 * r * r : huber * (a - 0.5 * huber);
     n.sq += r * r;
-    ++n.visible;
+    ++n.residuals;
+    if (count_visible) ++n.visible;
     n.inliers += a <= huber;
+  }
+}
+
+// The normal equations over all views at level `l`.
+Normal AccumulateViews(const std::vector<Eigen::Vector3d>& points,
+                       const std::vector<float>& reference, const std::vector<AlignmentView>& views,
+                       int l, const Eigen::Isometry3d& t, double huber) {
+  Normal n;
+  for (size_t v = 0; v < views.size(); ++v) {
+    const GradientPyramid& p = *views[v].pyramid;
+    Accumulate(points, reference, p.image[l], p.gx[l], p.gy[l], AtLevel(views[v].camera, l),
+               views[v].view_from_reference, t, huber, v == 0, n);
   }
   n.h = n.h.selfadjointView<Eigen::Upper>();
   return n;
@@ -96,15 +115,23 @@ AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
                                  const views::PinholeCamera& camera,
                                  const Eigen::Isometry3d& initial,
                                  const PhotometricAlignmentOptions& o) {
+  return AlignPhotometric(points, intensity_px, keyframe, {{&current, camera}}, initial, o);
+}
+
+AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
+                                 const std::vector<cv::Point2f>& intensity_px,
+                                 const GradientPyramid& keyframe,
+                                 const std::vector<AlignmentView>& views,
+                                 const Eigen::Isometry3d& initial,
+                                 const PhotometricAlignmentOptions& o) {
   // Isometry3d::inverse() transposes the rotation: a start that is not quite orthonormal
   // (rounding, compounded by the caller's prediction) would grow at every frame.
   Eigen::Isometry3d t = initial;
   t.linear() = Eigen::Quaterniond(initial.linear()).normalized().toRotationMatrix();
-  const int levels = std::min<int>({o.levels, int(keyframe.image.size()),
-                                    int(current.image.size())});
+  int levels = std::min<int>(o.levels, int(keyframe.image.size()));
+  for (const AlignmentView& v : views) levels = std::min<int>(levels, int(v.pyramid->image.size()));
   Normal last;
   for (int l = levels - 1; l >= 0; --l) {
-    const views::PinholeCamera c = AtLevel(camera, l);
     const float s = float(std::ldexp(1.0, -l));
     const cv::Mat& kf = keyframe.image[l];
     std::vector<Eigen::Vector3d> pts;
@@ -116,18 +143,16 @@ AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
       reference.push_back(SampleBilinear(kf, u, v));
     }
     double lambda = 1e-4;
-    Normal n = Accumulate(pts, reference, current.image[l], current.gx[l], current.gy[l], c, t,
-                          o.huber);
+    Normal n = AccumulateViews(pts, reference, views, l, t, o.huber);
     for (int it = 0; it < o.max_iterations && n.visible >= 6; ++it) {
       Matrix6d h = n.h;
       h.diagonal() *= 1.0 + lambda;
       const Vector6d xi = h.ldlt().solve(-n.b);
       if (!xi.allFinite()) break;
       const Eigen::Isometry3d candidate = Exp(xi) * t;
-      const Normal m = Accumulate(pts, reference, current.image[l], current.gx[l],
-                                  current.gy[l], c, candidate, o.huber);
+      const Normal m = AccumulateViews(pts, reference, views, l, candidate, o.huber);
       // Compare mean costs: the number of visible points may change with the pose.
-      if (m.visible >= 6 && m.cost / m.visible <= n.cost / n.visible) {
+      if (m.visible >= 6 && m.cost / m.residuals <= n.cost / n.residuals) {
         t = candidate, n = m, lambda = std::max(1e-6, lambda / 4);
         if (xi.tail<3>().norm() < o.convergence && xi.head<3>().norm() < o.convergence) break;
       } else {
@@ -140,8 +165,8 @@ AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
   AlignmentResult r;
   r.current_from_keyframe = t;
   r.visible = last.visible;
-  r.rms = last.visible ? std::sqrt(last.sq / last.visible) : 0.0;
-  r.inlier_fraction = last.visible ? double(last.inliers) / last.visible : 0.0;
+  r.rms = last.residuals ? std::sqrt(last.sq / last.residuals) : 0.0;
+  r.inlier_fraction = last.residuals ? double(last.inliers) / last.residuals : 0.0;
   return r;
 }
 

@@ -32,8 +32,16 @@ struct GradientPyramid {
 struct AlignmentResult {
   Eigen::Isometry3d current_from_keyframe = Eigen::Isometry3d::Identity();
   int visible = 0;         ///< points projecting into the current image at level 0
-  double rms = 0.0;        ///< RMS photometric residual of the visible points (grey levels)
-  double inlier_fraction = 0.0;  ///< visible points with residual under the Huber threshold
+  double rms = 0.0;        ///< RMS photometric residual over all views (grey levels)
+  double inlier_fraction = 0.0;  ///< residuals under the Huber threshold, over all views
+};
+
+/// One image the keyframe's points are compared with: the current reference image, or another
+/// camera of the rig at the same instant (its residuals then constrain the same pose).
+struct AlignmentView {
+  const GradientPyramid* pyramid = nullptr;
+  views::PinholeCamera camera;
+  Eigen::Isometry3d view_from_reference = Eigen::Isometry3d::Identity();  ///< the rig offset
 };
 
 /// Aligns keyframe points (`points`: keyframe camera frame; `intensity_px`: where each was
@@ -43,6 +51,15 @@ AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
                                  const std::vector<cv::Point2f>& intensity_px,
                                  const GradientPyramid& keyframe, const GradientPyramid& current,
                                  const views::PinholeCamera& camera,
+                                 const Eigen::Isometry3d& initial,
+                                 const PhotometricAlignmentOptions& options = {});
+
+/// The same, with the residuals of every view in `views` (the first is the current reference
+/// image, which `visible` counts).
+AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
+                                 const std::vector<cv::Point2f>& intensity_px,
+                                 const GradientPyramid& keyframe,
+                                 const std::vector<AlignmentView>& views,
                                  const Eigen::Isometry3d& initial,
                                  const PhotometricAlignmentOptions& options = {});
 
