@@ -6,6 +6,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/sensors/blurred_noise.h"
+
 namespace novelty::sensors {
 namespace {
 
@@ -23,14 +25,7 @@ StereoPair PlanePair(const cv::Mat& texture, double z, double baseline = 0.12) {
   return pair;
 }
 
-cv::Mat Texture(int seed = 7) {
-  cv::Mat noise(240, 320, CV_32F);
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::UNIFORM, 0, 255);
-  cv::GaussianBlur(noise, noise, cv::Size(0, 0), 1.5);
-  cv::normalize(noise, noise, 20, 235, cv::NORM_MINMAX);
-  return noise;
-}
+cv::Mat Texture(int seed = 7) { return BlurredNoise({320, 240}, CV_32F, seed, 1.5, 20, 235); }
 
 TEST(EpipolarDepths, RecoverTheDepthOfATexturedPlaneToSubPixelDisparity) {
   const double z = 1.5;

@@ -5,16 +5,12 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/sensors/blurred_noise.h"
+
 namespace novelty::sensors {
 namespace {
 
-cv::Mat Texture() {
-  cv::Mat noise(60, 80, CV_32F);
-  cv::RNG rng(3);
-  rng.fill(noise, cv::RNG::UNIFORM, 0, 255);
-  cv::GaussianBlur(noise, noise, cv::Size(0, 0), 1.0);
-  return noise;
-}
+cv::Mat Texture() { return BlurredNoise({80, 60}, CV_32F, 3, 1.0); }
 
 TEST(LocallyNormalized, IsZeroOnAFlatImage) {
   const cv::Mat flat(40, 50, CV_32F, cv::Scalar(117));

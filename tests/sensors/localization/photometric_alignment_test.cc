@@ -5,6 +5,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/sensors/blurred_noise.h"
+
 namespace novelty::sensors {
 namespace {
 
@@ -12,14 +14,7 @@ constexpr double kPlaneDepth = 1.5;
 
 views::PinholeCamera Camera() { return views::PinholeCamera::FromFov(320, 240, M_PI / 3); }
 
-cv::Mat Texture() {
-  cv::Mat noise(240, 320, CV_32F);
-  cv::RNG rng(11);
-  rng.fill(noise, cv::RNG::UNIFORM, 0, 255);
-  cv::GaussianBlur(noise, noise, cv::Size(0, 0), 2.0);
-  cv::normalize(noise, noise, 20, 235, cv::NORM_MINMAX);
-  return noise;
-}
+cv::Mat Texture() { return BlurredNoise({320, 240}, CV_32F, 11, 2.0, 20, 235); }
 
 // What a camera at T_kf_cur sees of the keyframe's fronto-parallel plane z = kPlaneDepth
 // textured with the keyframe image.
@@ -67,67 +62,60 @@ void ExpectNear(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double m
   EXPECT_LT(Eigen::AngleAxisd(e.linear()).angle() * 180 / M_PI, deg);
 }
 
-TEST(AlignPhotometric, RecoversAKnownMotionFromIdentity) {
-  const cv::Mat keyframe = Texture();
-  const Eigen::Isometry3d kf_from_cur = SomeMotion();
-  const cv::Mat current = SeenFrom(keyframe, kf_from_cur);
+// The keyframe (the textured plane), its points, and what the camera sees after SomeMotion().
+struct MovedPlane {
+  cv::Mat image = Texture();
+  Eigen::Isometry3d kf_from_cur = SomeMotion();
+  GradientPyramid keyframe = GradientPyramid::Build(image, 3);
+  GradientPyramid current = GradientPyramid::Build(SeenFrom(image, kf_from_cur), 3);
   std::vector<Eigen::Vector3d> points;
   std::vector<cv::Point2f> px;
-  PlanePoints(keyframe, points, px);
-  ASSERT_GT(points.size(), 2000u);
-  const auto r = AlignPhotometric(points, px, GradientPyramid::Build(keyframe, 3),
-                                  GradientPyramid::Build(current, 3), Camera(),
+  MovedPlane() { PlanePoints(image, points, px); }
+};
+
+TEST(AlignPhotometric, RecoversAKnownMotionFromIdentity) {
+  const MovedPlane m;
+  ASSERT_GT(m.points.size(), 2000u);
+  const auto r = AlignPhotometric(m.points, m.px, m.keyframe, m.current, Camera(),
                                   Eigen::Isometry3d::Identity());
-  ExpectNear(r.current_from_keyframe, kf_from_cur.inverse(), 0.5, 0.01);
+  ExpectNear(r.current_from_keyframe, m.kf_from_cur.inverse(), 0.5, 0.01);
   EXPECT_LT(r.rms, 1.0);  // grey levels: only interpolation differs
   EXPECT_GT(r.inlier_fraction, 0.99);
-  EXPECT_GT(r.visible, int(points.size() * 8 / 10));
+  EXPECT_GT(r.visible, int(m.points.size() * 8 / 10));
 }
 
 TEST(AlignPhotometric, ReturnsARotationFromAStartThatIsNotQuiteOne) {
-  const cv::Mat keyframe = Texture();
-  const Eigen::Isometry3d kf_from_cur = SomeMotion();
-  const cv::Mat current = SeenFrom(keyframe, kf_from_cur);
-  std::vector<Eigen::Vector3d> points;
-  std::vector<cv::Point2f> px;
-  PlanePoints(keyframe, points, px);
-  Eigen::Isometry3d start = kf_from_cur.inverse();
+  const MovedPlane m;
+  Eigen::Isometry3d start = m.kf_from_cur.inverse();
   start.linear() *= 1.01;  // what compounding rounding does to a prediction
-  const auto r = AlignPhotometric(points, px, GradientPyramid::Build(keyframe, 3),
-                                  GradientPyramid::Build(current, 3), Camera(), start);
+  const auto r = AlignPhotometric(m.points, m.px, m.keyframe, m.current, Camera(), start);
   const Eigen::Matrix3d rt = r.current_from_keyframe.linear();
   EXPECT_LT((rt.transpose() * rt - Eigen::Matrix3d::Identity()).norm(), 1e-9);
-  ExpectNear(r.current_from_keyframe, kf_from_cur.inverse(), 0.5, 0.01);
+  ExpectNear(r.current_from_keyframe, m.kf_from_cur.inverse(), 0.5, 0.01);
 }
 
 // The odometry starts each frame from a prediction close to the pose (here 0.5° and 1 cm off);
 // from there the second camera's residuals pull to the same pose.
 TEST(AlignPhotometric, UsesASecondCameraOfTheRigWithItsOffset) {
-  const cv::Mat keyframe = Texture();
-  const Eigen::Isometry3d kf_from_cur = SomeMotion();
+  const MovedPlane m;
   Eigen::Isometry3d cur_from_other = Eigen::Isometry3d::Identity();
   cur_from_other.translation() = Eigen::Vector3d(0.12, 0, 0);  // a stereo rig's right camera
-  const GradientPyramid current = GradientPyramid::Build(SeenFrom(keyframe, kf_from_cur), 3);
   const GradientPyramid other =
-      GradientPyramid::Build(SeenFrom(keyframe, kf_from_cur * cur_from_other), 3);
-  std::vector<Eigen::Vector3d> points;
-  std::vector<cv::Point2f> px;
-  PlanePoints(keyframe, points, px);
+      GradientPyramid::Build(SeenFrom(m.image, m.kf_from_cur * cur_from_other), 3);
   Eigen::Isometry3d off = Eigen::Isometry3d::Identity();
   off.linear() = Eigen::AngleAxisd(0.5 * M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix();
   off.translation() = Eigen::Vector3d(0.01, 0, 0);
-  const Eigen::Isometry3d start = off * kf_from_cur.inverse();
-  const GradientPyramid kf = GradientPyramid::Build(keyframe, 3);
-  const auto only_other = AlignPhotometric(
-      points, px, kf, {{&other, Camera(), cur_from_other.inverse()}}, start);
-  ExpectNear(only_other.current_from_keyframe, kf_from_cur.inverse(), 1.0, 0.03);
-  const auto both = AlignPhotometric(
-      points, px, kf, {{&current, Camera()}, {&other, Camera(), cur_from_other.inverse()}}, start);
-  ExpectNear(both.current_from_keyframe, kf_from_cur.inverse(), 1.0, 0.03);
+  const Eigen::Isometry3d start = off * m.kf_from_cur.inverse();
+  const AlignmentView other_view{&other, Camera(), cur_from_other.inverse()};
+  const auto only_other = AlignPhotometric(m.points, m.px, m.keyframe, {other_view}, start);
+  ExpectNear(only_other.current_from_keyframe, m.kf_from_cur.inverse(), 1.0, 0.03);
+  const auto both =
+      AlignPhotometric(m.points, m.px, m.keyframe, {{&m.current, Camera()}, other_view}, start);
+  ExpectNear(both.current_from_keyframe, m.kf_from_cur.inverse(), 1.0, 0.03);
   EXPECT_LT(both.rms, 1.0);  // both views' residuals vanish: the offset is applied right
   // The other view taken for the reference camera's: residuals neither pose can explain.
-  const auto wrong =
-      AlignPhotometric(points, px, kf, {{&current, Camera()}, {&other, Camera()}}, start);
+  const auto wrong = AlignPhotometric(m.points, m.px, m.keyframe,
+                                      {{&m.current, Camera()}, {&other, Camera()}}, start);
   EXPECT_GT(wrong.rms, 5.0);
 }
 

@@ -5,17 +5,13 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "tests/sensors/blurred_noise.h"
+
 namespace novelty::sensors {
 namespace {
 
-// A random, smoothly varying texture (blurred noise) standing in for a textured surface.
 cv::Mat Texture(int w, int h, std::uint64_t seed) {
-  cv::Mat noise(h, w, CV_8UC3);
-  cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::UNIFORM, 0, 255);
-  cv::GaussianBlur(noise, noise, cv::Size(0, 0), 1.2);
-  cv::normalize(noise, noise, 0, 255, cv::NORM_MINMAX);
-  return noise;
+  return BlurredNoise(cv::Size(w, h), CV_8UC3, seed, 1.2, 0, 255);
 }
 
 TEST(PlaneSweep, LabelsAreEvenInInverseDepth) {
