@@ -26,7 +26,7 @@ struct Keyframe {
 // One frame's images in the forms the steps need.
 struct FrameImages {
   cv::Mat grey, other_grey;  // 8-bit, for ORB and KLT
-  cv::Mat grey_f;            // float, for the stereo depth of keyframes
+  cv::Mat grey_f, other_grey_f;  // float, for the stereo depth of keyframes
   GradientPyramid pyramid;   // locally normalized, for the photometric alignment
   GradientPyramid other_pyramid;  // the same of the other image, when both are aligned
 };
@@ -39,16 +39,15 @@ class DirectOdometry::Impl {
       : options(o), pose(p), relocalizer(o.relocalizer) {}
   DirectOdometryOptions options;
   Eigen::Isometry3d pose;
-  bool started = false;
-  std::optional<Keyframe> keyframe;  // empty before the first frame and after tracking loss
-  std::vector<Keyframe> kept;  // keyframes taken (at most relocalizer.max_keyframes), to localize
-                               // against
+  std::vector<Keyframe> kept;  // keyframes taken (at most relocalizer.max_keyframes, at least
+                               // one), to localize against; the last is the current one
+  bool tracking = false;       // false before the first frame and after tracking loss
   Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();  // last frame-to-frame motion
   KeyframeRelocalizer relocalizer;
 
   // A keyframe at the current pose; also kept for re-localization.
   bool TakeKeyframe(const StereoPair& pair, const FrameImages& f, std::string* why) {
-    const auto measured = EpipolarDepths(pair, f.grey_f, Float(f.other_grey), options.depth);
+    const auto measured = EpipolarDepths(pair, f.grey_f, f.other_grey_f, options.depth);
     if (int(measured.size()) < options.min_points) {
       if (why) *why = "only " + std::to_string(measured.size()) + " pixels with stereo depth";
       return false;
@@ -64,9 +63,10 @@ class DirectOdometry::Impl {
     }
     std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
     k.median_depth = depths[depths.size() / 2];
-    keyframe = k;
     kept.push_back(std::move(k));
-    if (kept.size() > options.relocalizer.max_keyframes) kept.erase(kept.begin());
+    if (kept.size() > std::max<size_t>(1, options.relocalizer.max_keyframes))
+      kept.erase(kept.begin());
+    tracking = true;
     relocalizer.Add(pair, f.grey, f.other_grey, pose);
     return true;
   }
@@ -76,11 +76,12 @@ class DirectOdometry::Impl {
     f.grey = GreyImage(pair.reference);
     f.other_grey = GreyImage(pair.other);
     f.grey_f = Float(f.grey);
+    f.other_grey_f = Float(f.other_grey);
     f.pyramid = GradientPyramid::Build(LocallyNormalized(f.grey_f, options.normalization),
                                        options.alignment.levels);
     if (options.align_both_images)
       f.other_pyramid = GradientPyramid::Build(
-          LocallyNormalized(Float(f.other_grey), options.normalization), options.alignment.levels);
+          LocallyNormalized(f.other_grey_f, options.normalization), options.alignment.levels);
     return f;
   }
 
@@ -127,9 +128,10 @@ class DirectOdometry::Impl {
   bool NeedsKeyframe(const AlignmentResult& a) const {
     const Eigen::Isometry3d& t = a.current_from_keyframe;
     const double angle = Eigen::AngleAxisd(t.linear()).angle() * 180 / M_PI;
-    return t.translation().norm() > options.keyframe_distance * keyframe->median_depth ||
+    const Keyframe& k = kept.back();
+    return t.translation().norm() > options.keyframe_distance * k.median_depth ||
            angle > options.keyframe_angle_deg ||
-           a.visible < options.min_visible_fraction * double(keyframe->points.size());
+           a.visible < options.min_visible_fraction * double(k.points.size());
   }
 };
 
@@ -145,21 +147,21 @@ std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair
     if (why) *why = reason;
     return std::nullopt;
   };
-  if (pair.reference.empty() || pair.reference.size() != pair.other.size())
-    return fail("stereo images missing or of different sizes");
+  if (*StereoPairProblem(pair)) return fail(StereoPairProblem(pair));
   const FrameImages f = s.Prepare(pair);
   DirectOdometryResult result;
   std::string lost;
-  if (s.keyframe) {
+  if (s.tracking) {
+    const Keyframe& keyframe = s.kept.back();
     // Constant-velocity prediction of T_cur_kf.
-    const Eigen::Isometry3d kf_from_previous = s.keyframe->world_from_camera.inverse() * s.pose;
+    const Eigen::Isometry3d kf_from_previous = keyframe.world_from_camera.inverse() * s.pose;
     const Eigen::Isometry3d predicted = (kf_from_previous * s.motion).inverse();
     const AlignmentResult a =
-        AlignPhotometric(s.keyframe->points, s.keyframe->px, s.keyframe->pyramid,
+        AlignPhotometric(keyframe.points, keyframe.px, keyframe.pyramid,
                          s.Views(pair, f), predicted, s.options.alignment);
     if (a.visible >= s.options.min_points && a.rms <= s.options.max_rms) {
       const Eigen::Isometry3d world_from_camera =
-          s.keyframe->world_from_camera * a.current_from_keyframe.inverse();
+          keyframe.world_from_camera * a.current_from_keyframe.inverse();
       s.motion = s.pose.inverse() * world_from_camera;
       s.pose = world_from_camera;
       result.world_from_camera = s.pose;
@@ -170,20 +172,19 @@ std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair
     }
     lost = " (" + std::to_string(a.visible) + " points, photometric RMS " +
            std::to_string(int(a.rms)) + ")";
-    s.keyframe.reset();
+    s.tracking = false;
   }
   // The first frame starts at the given pose; after tracking loss the pose is re-localized.
-  if (s.started) {
+  if (!s.kept.empty()) {
     const auto relocalized = s.Localize(pair, f, std::nullopt, nullptr);
     if (!relocalized) return fail("tracking lost" + lost + " and no keyframe matches");
     s.pose = *relocalized;
     result.relocalized = true;
   }
   if (!s.TakeKeyframe(pair, f, why)) return std::nullopt;
-  s.started = true;
   s.motion = Eigen::Isometry3d::Identity();
   result.world_from_camera = s.pose;
-  result.points = int(s.keyframe->points.size());
+  result.points = int(s.kept.back().points.size());
   result.new_keyframe = true;
   return result;
 }
@@ -191,8 +192,8 @@ std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair
 std::optional<Eigen::Isometry3d> DirectOdometry::Localize(
     const StereoPair& pair, std::string* why,
     const std::optional<Eigen::Isometry3d>& prior) const {
-  if (pair.reference.empty() || pair.reference.size() != pair.other.size()) {
-    if (why) *why = "stereo images missing or of different sizes";
+  if (*StereoPairProblem(pair)) {
+    if (why) *why = StereoPairProblem(pair);
     return std::nullopt;
   }
   return impl_->Localize(pair, impl_->Prepare(pair), prior, why);

@@ -17,4 +17,11 @@ struct StereoPair {
   Eigen::Isometry3d reference_from_other = Eigen::Isometry3d::Identity();
 };
 
+/// Why `pair` cannot be used (an image missing, or the two of different sizes); empty if it can.
+inline const char* StereoPairProblem(const StereoPair& pair) {
+  if (pair.reference.empty() || pair.reference.size() != pair.other.size())
+    return "stereo images missing or of different sizes";
+  return "";
+}
+
 }  // namespace novelty::sensors

@@ -215,8 +215,7 @@ std::optional<VisualOdometryResult> VisualOdometry::Track(const StereoPair& pair
     if (why) *why = reason;
     return std::nullopt;
   };
-  if (pair.reference.empty() || pair.reference.size() != pair.other.size())
-    return fail("stereo images missing or of different sizes");
+  if (*StereoPairProblem(pair)) return fail(StereoPairProblem(pair));
   const cv::Mat grey = GreyImage(pair.reference), other_grey = GreyImage(pair.other);
   const double fb = Impl::FocalBaseline(pair);
   VisualOdometryResult result;
