@@ -19,44 +19,46 @@ void CheckSupport(const std::vector<SupportView>& support) {
                                     std::to_string(support[a].index));
 }
 
-// Residual of one support view: the rotation angle-axis of Q(j_n)ᵀ·Q_n and the translation gap,
-// the translation in metres and the rotation in radians weighted by `rotation_weight` (m/rad).
+// Residual of one support view n: how far its registered pose Q(j_n)·M_n lies from where it was
+// localized, S_n — the rotation angle-axis of S_nᵀ·Q(j_n)·M_n weighted by `rotation_weight`
+// (m/rad) and the position gap Q(j_n)·M_n.t − S_n.t in metres. Measured on the registered pose,
+// not on Q: Q's translation is coupled to its rotation through the lever arm M_n.t (metres from
+// the sequence's origin), so fitting Q's parts separately lets a small rotation error become a
+// large position error of the cameras.
 struct SupportResidual {
-  SupportResidual(const Eigen::Isometry3d& q, const Eigen::Matrix3d& reference, double x,
+  SupportResidual(const SupportView& view, const Eigen::Matrix3d& reference, double x,
                   double rotation_weight)
-      : q_(q), reference_(reference), x_(x), w_(rotation_weight) {}
+      : view_(view), reference_(reference), x_(x), w_(rotation_weight) {}
 
   template <typename T>
   bool operator()(const T* rotation, const T* translation, T* residual) const {
     // ω(x) = a + b·x + c·x²; Q_R(x) = exp([ω]×)·R̄
-    T omega[3], r_delta[9];
+    T omega[3];
     for (int k = 0; k < 3; ++k)
       omega[k] = rotation[k] + rotation[3 + k] * T(x_) + rotation[6 + k] * T(x_ * x_);
-    ceres::AngleAxisToRotationMatrix(omega, r_delta);  // column-major
-    // E = Q_Rᵀ·Q_n,R = R̄ᵀ·Δᵀ·Q_n,R ; residual = log(E)
-    T e[9];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) {
-        T sum = T(0);
-        for (int k = 0; k < 3; ++k) {
-          // (Δ·R̄)ᵀ(r,k) = (Δ·R̄)(k,r) = Σ_m Δ(k,m) R̄(m,r)
-          T dr = T(0);
-          for (int m = 0; m < 3; ++m) dr += r_delta[m * 3 + k] * T(reference_(m, r));
-          sum += dr * T(q_.linear()(k, c));
-        }
-        e[c * 3 + r] = sum;  // column-major for ceres
-      }
+    using Matrix3 = Eigen::Matrix<T, 3, 3>;
+    using Vector3 = Eigen::Matrix<T, 3, 1>;
+    Matrix3 delta;
+    ceres::AngleAxisToRotationMatrix(omega, ceres::ColumnMajorAdapter3x3(delta.data()));
+    const Matrix3 q_rotation = delta * reference_.cast<T>();
+    Vector3 q_translation;
+    for (int k = 0; k < 3; ++k)
+      q_translation(k) =
+          translation[k] + translation[3 + k] * T(x_) + translation[6 + k] * T(x_ * x_);
+    const Matrix3 e = view_.common_from_camera.linear().transpose().cast<T>() * q_rotation *
+                      view_.own_from_camera.linear().cast<T>();
     T angle_axis[3];
-    ceres::RotationMatrixToAngleAxis(e, angle_axis);
+    ceres::RotationMatrixToAngleAxis(ceres::ColumnMajorAdapter3x3(e.data()), angle_axis);
+    const Vector3 position = q_rotation * view_.own_from_camera.translation().cast<T>() +
+                             q_translation - view_.common_from_camera.translation().cast<T>();
     for (int k = 0; k < 3; ++k) {
       residual[k] = T(w_) * angle_axis[k];
-      residual[3 + k] = translation[k] + translation[3 + k] * T(x_) +
-                        translation[6 + k] * T(x_ * x_) - T(q_.translation()(k));
+      residual[3 + k] = position(k);
     }
     return true;
   }
 
-  Eigen::Isometry3d q_;
+  SupportView view_;
   Eigen::Matrix3d reference_;
   double x_, w_;
 };
@@ -93,7 +95,7 @@ FittedFrameTransform::FittedFrameTransform(const std::vector<SupportView>& suppo
     const double x = (support[n].index - center_) / scale_;
     // 1 rad ~ 1 m: rotation and translation errors of a room-sized scene weigh alike.
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<SupportResidual, 6, 9, 9>(
-                                 new SupportResidual(q[n], reference_rotation_, x, 1.0)),
+                                 new SupportResidual(support[n], reference_rotation_, x, 1.0)),
                              nullptr, rotation_, translation_);
   }
   for (int k = 0; k < 3; ++k) translation_[k] = q[0].translation()(k);
