@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <opencv2/core/utility.hpp>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "maps/stats/lanes.h"
+#include "maps/views/planar_blocks.h"
 #include "maps/views/reference_view_store.h"
 
 namespace novelty::views {
@@ -30,6 +32,8 @@ struct Vertex {
 // All source vertices, structure of arrays (contiguous loads for the vectorised rasteriser).
 struct Vertices {
   std::vector<float> x, y, inv_z, source_depth;
+  // Per quad (indexed by its top-left vertex): -1 where a planar block draws it, else 0.
+  std::vector<int32_t> skip;
   // n vertices, and padding that SIMD loads past the last one may read (never drawn: 1/z = 0).
   void Resize(std::size_t n) {
     x.resize(n + kPadding);
@@ -37,6 +41,7 @@ struct Vertices {
     inv_z.resize(n + kPadding);
     source_depth.resize(n + kPadding);
     std::fill(inv_z.begin() + std::ptrdiff_t(n), inv_z.end(), 0.0f);
+    skip.assign(n + kPadding, 0);
   }
   static constexpr std::size_t kPadding = 64;
   Vertex operator[](std::size_t i) const { return {x[i], y[i], inv_z[i], source_depth[i]}; }
@@ -313,7 +318,9 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
       iz[n] = Load(&v.inv_z[c[n]]);
       ok[n] = iz[n] != zero;
     }
-    ok[0] &= lane + float(u) < float(w - 1);
+    I16 skip;
+    std::memcpy(&skip, &v.skip[i], sizeof skip);
+    ok[0] &= (lane + float(u) < float(w - 1)) & (skip == 0);
     // The box; an unusable vertex takes p00's place (its triangles are not drawn).
     F16 bx[4] = {x[0]}, by[4] = {y[0]};
     for (int n = 1; n < 4; ++n) {
@@ -353,6 +360,112 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
       }
     }
   }
+}
+
+// A planar block of size × size quads with top-left vertex (u0, r0), drawn as the convex
+// quadrilateral between its corners, row span by row span. On a plane 1/z is affine on screen,
+// and so is A/z for any A linear in 3-D: the source depth z_s and z_s·u_s, z_s·v_s
+// (u_s = (fx·X_s + cx·Z_s)/Z_s). Interpolating those and dividing gives exact source coordinates
+// across the block, where interpolating u_s itself would bend straight texture lines. A block
+// with a corner behind the near plane, or seen edge-on (not convex on screen), is drawn quad by
+// quad instead.
+void RasteriseBlock(const Vertices& v, int w, int u0, int r0, int size, float max_ratio,
+                    const TargetView& t) {
+  const std::size_t i = std::size_t(r0) * w + u0, down = std::size_t(size) * w;
+  // Corners in order around the block: p00, p10, p11, p01.
+  const std::size_t c[4] = {i, i + size, i + down + size, i + down};
+  const float cu[4] = {float(u0), float(u0 + size), float(u0 + size), float(u0)};
+  const float cr[4] = {float(r0), float(r0), float(r0 + size), float(r0 + size)};
+  float x[4], y[4], attr[4][4];  // attr: 1/z, z_s/z, z_s·u_s/z, z_s·v_s/z
+  bool usable = true;
+  for (int n = 0; n < 4; ++n) {
+    x[n] = v.x[c[n]], y[n] = v.y[c[n]];
+    attr[0][n] = v.inv_z[c[n]];
+    attr[1][n] = attr[0][n] * v.source_depth[c[n]];
+    attr[2][n] = attr[1][n] * cu[n];
+    attr[3][n] = attr[1][n] * cr[n];
+    usable &= attr[0][n] != 0.0f;
+  }
+  float turn = 0.0f;  // the corners must turn one way (convex) and span an area
+  for (int n = 0; n < 4 && usable; ++n) {
+    const int a = (n + 1) % 4, b = (n + 2) % 4;
+    const float cross = (x[a] - x[n]) * (y[b] - y[a]) - (y[a] - y[n]) * (x[b] - x[a]);
+    usable = std::abs(cross) > 1e-3f && (n == 0 || (cross > 0) == (turn > 0));
+    turn = cross;
+  }
+  if (!usable) {
+    for (int r = r0; r < r0 + size; ++r)
+      for (int u = u0; u < u0 + size; ++u) RasteriseQuad(v, w, u, r, max_ratio, t);
+    return;
+  }
+  // Gradients of each attribute on screen from p00, p10 and p01 (one plane).
+  const float e1x = x[1] - x[0], e1y = y[1] - y[0], e2x = x[3] - x[0], e2y = y[3] - y[0];
+  const float inv_det = 1.0f / (e1x * e2y - e1y * e2x);
+  float gx[4], gy[4];  // attribute k at (px, py) = attr[k][0] + gx·(px − x0) + gy·(py − y0)
+  for (int k = 0; k < 4; ++k) {
+    const float d1 = attr[k][1] - attr[k][0], d2 = attr[k][3] - attr[k][0];
+    gx[k] = (d1 * e2y - d2 * e1y) * inv_det;
+    gy[k] = (e1x * d2 - e2x * d1) * inv_det;
+  }
+  const int y0 = std::max(0, int(std::ceil(*std::min_element(y, y + 4))));
+  const int y1 = std::min(t.height - 1, int(std::floor(*std::max_element(y, y + 4))));
+  constexpr float kEdge = 1e-4f;  // pixel centres on an edge belong to both neighbours
+  const F16 lane = stats::lanes::Iota();
+  for (int py = y0; py <= y1; ++py) {
+    const float fy = float(py);
+    float xl = 1e30f, xr = -1e30f;
+    for (int n = 0; n < 4; ++n) {
+      const int m = (n + 1) % 4;
+      if ((fy < y[n] && fy < y[m]) || (fy > y[n] && fy > y[m])) continue;
+      const float ex = y[m] == y[n] ? x[n] : x[n] + (fy - y[n]) * (x[m] - x[n]) / (y[m] - y[n]);
+      xl = std::min(xl, std::min(ex, y[m] == y[n] ? x[m] : ex));
+      xr = std::max(xr, std::max(ex, y[m] == y[n] ? x[m] : ex));
+    }
+    const int px0 = std::max(0, int(std::ceil(xl - kEdge)));
+    const int px1 = std::min(t.width - 1, int(std::floor(xr + kEdge)));
+    Texel* row = t.texels + std::size_t(py) * t.width;
+    F16 at_row[4];
+    for (int k = 0; k < 4; ++k) at_row[k] = F16{} + (attr[k][0] + gy[k] * (fy - y[0]));
+    // Sixteen pixels of the span at a time: the attributes and divisions in lanes, the z-test
+    // and write per pixel.
+    for (int px = px0; px <= px1; px += kLanes) {
+      const F16 fx = lane + (float(px) - x[0]);
+      const F16 iz = at_row[0] + gx[0] * fx, a = at_row[1] + gx[1] * fx;
+      const F16 inv_a = (F16{} + 1.0f) / a;
+      const F16 us = (at_row[2] + gx[2] * fx) * inv_a, vs = (at_row[3] + gx[3] * fx) * inv_a;
+      const F16 zs = a / iz;
+      const int n = std::min(kLanes, px1 - px + 1);
+      for (int k = 0; k < n; ++k) {
+        Texel& out = row[px + k];
+        if (iz[k] <= out.inv_z) continue;  // z-test on inverse depth
+        out = {iz[k], zs[k], us[k], vs[k]};
+      }
+    }
+  }
+}
+
+// Marks the quads the planar blocks draw (Vertices::skip) — all of a block's, except its outer
+// row or column towards a neighbour that is not a planar block — and returns the blocks' top-left
+// vertices (u0, r0).
+std::vector<cv::Point> MarkPlanarBlocks(const cv::Mat& flags, int size, int w, Vertices& v) {
+  std::vector<cv::Point> blocks;
+  auto planar = [&](int bx, int by) {
+    return bx >= 0 && by >= 0 && bx < flags.cols && by < flags.rows && flags.at<uchar>(by, bx);
+  };
+  for (int by = 0; by < flags.rows; ++by) {
+    for (int bx = 0; bx < flags.cols; ++bx) {
+      if (!planar(bx, by)) continue;
+      const int u0 = bx * size, r0 = by * size;
+      blocks.push_back({u0, r0});
+      const int qu0 = planar(bx - 1, by) ? 0 : 1, qu1 = planar(bx + 1, by) ? size : size - 1;
+      const int qr0 = planar(bx, by - 1) ? 0 : 1, qr1 = planar(bx, by + 1) ? size : size - 1;
+      for (int r = qr0; r < qr1; ++r) {
+        int32_t* skip = &v.skip[std::size_t(r0 + r) * w + u0];
+        std::fill(skip + qu0, skip + qu1, -1);
+      }
+    }
+  }
+  return blocks;
 }
 
 }  // namespace
@@ -464,6 +577,11 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   const Eigen::Isometry3d T_vs = T_world_dst.inverse() * T_world_src;
   Vertices& v = scratch.vertices;
   ProjectVertices(src, T_vs, depth, dst, o.near_plane, threads, v);
+  std::vector<cv::Point> blocks;
+  if (o.planar_block > 0) {
+    blocks = MarkPlanarBlocks(FindPlanarBlocks(depth, o.planar_block, o.planar_tolerance),
+                              o.planar_block, src.width, v);
+  }
 
   // Threads take blocks of source rows, each with its own buffers, merged by depth afterwards.
   const int n_threads = std::max(1, std::min(src.height - 1, threads));
@@ -478,11 +596,18 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
       const TargetView view{target.data(), dst.width, dst.height};
       const int r_begin = (src.height - 1) * ti / n_threads;
       const int r_end = (src.height - 1) * (ti + 1) / n_threads;
+      for (const cv::Point& b : blocks) {
+        if (b.y >= r_begin && b.y < r_end) {
+          RasteriseBlock(v, w, b.x, b.y, o.planar_block, max_ratio, view);
+        }
+      }
       for (int r = r_begin; r < r_end; ++r) {
         if (o.vectorised) {
           RasteriseRowVectorised(v, w, r, max_ratio, view);
         } else {
-          for (int u = 0; u + 1 < w; ++u) RasteriseQuad(v, w, u, r, max_ratio, view);
+          for (int u = 0; u + 1 < w; ++u) {
+            if (!v.skip[std::size_t(r) * w + u]) RasteriseQuad(v, w, u, r, max_ratio, view);
+          }
         }
       }
     }

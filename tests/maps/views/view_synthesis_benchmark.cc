@@ -69,13 +69,14 @@ void BM_SynthesiseVirtualView(benchmark::State& state) {
 }
 BENCHMARK(BM_SynthesiseVirtualView)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The budget's case: seven reference views warped (whole views per thread) and, with the second
-// argument 1, blended; with 0 the warps alone.
+// The budget's case: seven reference views warped (whole views per thread) and, with `blend` 1,
+// blended; with 0 the warps alone. `planar` is WarpOptions::planar_block (0: every quad alone).
 void BM_SevenViews(benchmark::State& state) {
   static const Views v = MakeViews();
   views::WarpOptions wo;
   wo.threads = static_cast<int>(state.range(0));
   const bool blend = state.range(1) != 0;
+  wo.planar_block = static_cast<int>(state.range(2));
   views::DepthMeshWarper warper(wo);
   const std::vector<views::SourceView> sources = Sources(v);
   std::vector<views::WarpField> warps;
@@ -90,8 +91,8 @@ void BM_SevenViews(benchmark::State& state) {
   state.SetLabel(blend ? "warp + blend" : "warp");
 }
 BENCHMARK(BM_SevenViews)
-    ->ArgsProduct({{1, 2}, {1, 0}})
-    ->ArgNames({"threads", "blend"})
+    ->ArgsProduct({{1, 2}, {1, 0}, {0, 8}})
+    ->ArgNames({"threads", "blend", "planar"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

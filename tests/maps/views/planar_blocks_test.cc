@@ -1,0 +1,67 @@
+#include "maps/views/planar_blocks.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace novelty::views {
+namespace {
+
+// Depth of a tilted plane: inverse depth affine in the pixel coordinates (exactly planar).
+cv::Mat TiltedPlane(int width, int height) {
+  cv::Mat depth(height, width, CV_32FC1);
+  for (int v = 0; v < height; ++v)
+    for (int u = 0; u < width; ++u) depth.at<float>(v, u) = 1.0f / (0.4f + 0.001f * u + 0.0006f * v);
+  return depth;
+}
+
+TEST(PlanarBlocks, EveryBlockOfATiltedPlaneIsPlanar) {
+  const cv::Mat flags = FindPlanarBlocks(TiltedPlane(161, 121), 8, 0.002);
+  ASSERT_EQ(flags.cols, 20);  // ⌊160 / 8⌋
+  ASSERT_EQ(flags.rows, 15);
+  EXPECT_EQ(cv::countNonZero(flags), 20 * 15);
+}
+
+TEST(PlanarBlocks, ACurvedSurfaceHasNone) {
+  // A bowl, curved alike everywhere: inverse depth 0.5 + k·r². At a block's centre it lies
+  // 2·16·k off the affine function through the corners, ≥ 0.29 % of it for k = 5e-4.
+  cv::Mat depth(121, 161, CV_32FC1);
+  for (int v = 0; v < depth.rows; ++v)
+    for (int u = 0; u < depth.cols; ++u)
+      depth.at<float>(v, u) = 1.0f / (0.5f + 5e-4f * float((u - 80) * (u - 80) + (v - 60) * (v - 60)));
+  EXPECT_EQ(cv::countNonZero(FindPlanarBlocks(depth, 8, 0.002)), 0);
+}
+
+TEST(PlanarBlocks, BlocksAcrossAStepOrWithoutDepthAreNot) {
+  cv::Mat depth = TiltedPlane(161, 121);
+  depth(cv::Rect(44, 0, 161 - 44, 121)) *= 1.5f;  // a step inside block column 5 (pixels 40–48)
+  depth.at<float>(100, 10) = std::numeric_limits<float>::quiet_NaN();  // block (1, 12)
+  depth.at<float>(20, 130) = 0.0f;                                      // block (16, 2)
+  const cv::Mat flags = FindPlanarBlocks(depth, 8, 0.002);
+  for (int by = 0; by < flags.rows; ++by) {
+    EXPECT_EQ(flags.at<uchar>(by, 5), 0) << by;   // crosses the step
+    EXPECT_EQ(flags.at<uchar>(by, 4), 255) << by;  // left of it, its right column at u = 40
+    EXPECT_EQ(flags.at<uchar>(by, 6), 255) << by;  // right of it, the scaled plane (still one)
+  }
+  EXPECT_EQ(flags.at<uchar>(12, 1), 0);
+  EXPECT_EQ(flags.at<uchar>(2, 16), 0);
+  EXPECT_EQ(cv::countNonZero(flags), 20 * 15 - 15 - 2);
+}
+
+TEST(PlanarBlocks, TheToleranceIsARelativeDepthError) {
+  cv::Mat depth = TiltedPlane(9, 9);
+  depth.at<float>(4, 4) *= 1.0015f;  // the centre 0.15 % off the plane
+  EXPECT_EQ(cv::countNonZero(FindPlanarBlocks(depth, 8, 0.002)), 1);
+  EXPECT_EQ(cv::countNonZero(FindPlanarBlocks(depth, 8, 0.001)), 0);
+}
+
+TEST(PlanarBlocks, BadInputIsRejected) {
+  EXPECT_THROW(FindPlanarBlocks(cv::Mat(9, 9, CV_8UC1), 8, 0.002), std::invalid_argument);
+  EXPECT_THROW(FindPlanarBlocks(TiltedPlane(9, 9), 0, 0.002), std::invalid_argument);
+  EXPECT_EQ(FindPlanarBlocks(TiltedPlane(5, 5), 8, 0.002).total(), 0u);  // smaller than a block
+}
+
+}  // namespace
+}  // namespace novelty::views
