@@ -45,9 +45,18 @@ void ProcessOne(std::size_t i, const ChannelPlanes& c, float* surprise,
                       : std::numeric_limits<float>::quiet_NaN();
 }
 
+// The KL's α terms depend on the prior α alone (the update of α does not see the data,
+// eq. 4.10), and whole frames share one α where every pixel was updated alike: the last packet's
+// terms serve the next when its sixteen α agree with them — computed the same way, so the
+// surprise is the same to the bit.
+struct AlphaTermsCache {
+  float prior_alpha = -1.0f;  // no α is negative: nothing cached yet
+  Packet terms;
+};
+
 // Sixteen pixels in float. Every prior is read before any posterior is written (in-place use).
 void ProcessPacket(std::size_t i, const ChannelPlanes& c, float* surprise,
-                   const SurpriseBatchOptions& o) {
+                   const SurpriseBatchOptions& o, AlphaTermsCache& cache) {
   const int channels = int(c.x.size());
   Packet x[kMaxChannels];
   Eigen::Array<bool, kLanes, 1> valid = Eigen::Array<bool, kLanes, 1>::Constant(true);
@@ -69,7 +78,13 @@ void ProcessPacket(std::size_t i, const ChannelPlanes& c, float* surprise,
     p[k] = UpdateWithForgetting(p0[k], x[k], o.update, &shift);
     kl += NormalGammaKLOtherTerms(p[k], p0[k], shift);
   }
-  kl += NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl);
+  if ((p0[0].alpha == cache.prior_alpha).all()) {
+    kl += cache.terms;
+  } else {
+    const Packet terms = NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl);
+    kl += terms;
+    if ((p0[0].alpha == p0[0].alpha(0)).all()) cache = {p0[0].alpha(0), terms};
+  }
   PacketMap s(surprise + i);
   for (int k = 0; k < channels; ++k) {
     const NormalGammaPlanes& q = c.posterior[std::size_t(k)];
@@ -121,7 +136,8 @@ void UpdateAndAccumulateSurprise(const ChannelPlanes& planes, float* surprise, s
     const std::size_t end = std::min(n, std::size_t(r.end) * block);
     std::size_t i = std::size_t(r.start) * block;
     if (options.kernel == BatchKernel::kVectorised) {
-      for (; i + kLanes <= end; i += kLanes) ProcessPacket(i, planes, surprise, options);
+      AlphaTermsCache cache;
+      for (; i + kLanes <= end; i += kLanes) ProcessPacket(i, planes, surprise, options, cache);
       for (; i < end; ++i) ProcessOne<float>(i, planes, surprise, options);
       return;
     }

@@ -74,6 +74,32 @@ TEST(NormalGammaBatch, VectorisedKernelAgreesWithScalarToFloatPrecision) {
   EXPECT_LT(worst, 5e-4) << "worst relative surprise difference (absolute floor 1e-3)";
 }
 
+TEST(NormalGammaBatch, RunsOfEqualAlphaGiveTheSurpriseOfTheScalarKernel) {
+  // α constant over runs of 40 pixels (crossing packet boundaries), in between runs of varying α,
+  // and a run that comes back to an earlier value: the vectorised kernel reuses the α terms of the
+  // previous packet only where all its α agree, and must still match the scalar reference.
+  const std::size_t n = 1000;
+  Planes prior(n, 11);
+  const float runs[] = {2.5f, 1.25f, 2.5f, 0.8f};
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t run = i / 40;
+    if (run % 2 == 0) prior.alpha[i] = runs[(run / 2) % 4];
+  }
+  Planes post_s(n, 1), post_v(n, 1);
+  std::vector<float> s_scalar(n, 0.0f), s_vector(n, 0.0f);
+  SurpriseBatchOptions o;
+  o.kernel = BatchKernel::kScalar;
+  UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_s.Mutable(), s_scalar.data(), n,
+                              o);
+  o.kernel = BatchKernel::kVectorised;
+  UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_v.Mutable(), s_vector.data(), n,
+                              o);
+  for (std::size_t i = 0; i < n; ++i) {
+    ASSERT_NEAR(s_vector[i], s_scalar[i], 5e-4 * (1e-3 + s_scalar[i])) << i;
+    ASSERT_FLOAT_EQ(post_v.alpha[i], post_s.alpha[i]) << i;
+  }
+}
+
 TEST(NormalGammaBatch, NaNObservationKeepsPriorAndMarksSurpriseInvalid) {
   for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
     const std::size_t n = 40;
