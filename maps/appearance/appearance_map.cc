@@ -26,8 +26,19 @@ void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCa
   }
 }
 
+struct AppearanceMap::Workspace {
+  cv::Mat ycbcr, expected;  // CV_32FC3: the frame in YCbCr; the prior's τ in RGB
+  std::vector<cv::Mat> x;   // Y, Cb, Cr planes
+  ViewBasedMap::Prediction prior;
+  std::vector<cv::Mat> ab_sigma, tau;  // the prior's planes (α, β×3, σ×3; τ×3)
+  std::vector<cv::Mat> posterior;      // kChannels planes
+  cv::Mat merged;                      // an interleaved image before conversion or copy
+};
+
+AppearanceMap::~AppearanceMap() = default;
+
 AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
-    : options_(options), map_(options.views) {
+    : options_(options), map_(options.views), work_(std::make_unique<Workspace>()) {
   options_.surprise.update.Check();
   stats::CheckNormalGamma(options_.initial_prior, "AppearanceMapOptions::initial_prior");
 }
@@ -37,19 +48,21 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                                          const Eigen::Isometry3d& T_world_cam) {
   CheckFrame(rgb, depth, camera, T_world_cam, "AppearanceMap::Insert");
   const int n = camera.width * camera.height;
-  std::vector<cv::Mat> x;
-  cv::split(color::RgbToYCbCr(rgb), x);
+  Workspace& w = *work_;
+  color::RgbToYCbCr(rgb, w.ycbcr);
+  cv::split(w.ycbcr, w.x);
 
   // Prior: blended reference parameters; the initial prior where no view covers.
-  ViewBasedMap::Prediction prior = map_.Predict(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}});
-  std::vector<cv::Mat> ab_sigma, tau0, p0(kChannels);
-  cv::split(prior.value[0], ab_sigma);
-  cv::split(prior.value[1], tau0);
-  p0[kAlpha] = ab_sigma[0];
+  ViewBasedMap::Prediction& prior = w.prior;
+  map_.Predict(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}}, prior);
+  cv::split(prior.value[0], w.ab_sigma);
+  cv::split(prior.value[1], w.tau);
+  std::vector<cv::Mat> p0(kChannels);
+  p0[kAlpha] = w.ab_sigma[0];
   for (int k = 0; k < 3; ++k) {
-    p0[kBeta + k] = ab_sigma[1 + k];
-    p0[kSigma + k] = ab_sigma[4 + k];
-    p0[kTau + k] = tau0[k];
+    p0[kBeta + k] = w.ab_sigma[1 + k];
+    p0[kSigma + k] = w.ab_sigma[4 + k];
+    p0[kTau + k] = w.tau[k];
   }
   const stats::NormalGamma& init = options_.initial_prior;
   const float initial[kChannels] = {
@@ -63,12 +76,13 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   }
 
   // Update and surprise per channel (eq. 4.8-4.21); α is shared by the three channels.
-  std::vector<cv::Mat> p1(kChannels);
+  std::vector<cv::Mat>& p1 = w.posterior;
+  p1.resize(kChannels);
   for (cv::Mat& m : p1) m.create(camera.height, camera.width, CV_32FC1);
   cv::Mat surprise(camera.height, camera.width, CV_32FC1, cv::Scalar(0));
   stats::ChannelPlanes channels;
   for (int k = 0; k < 3; ++k) {
-    channels.x.push_back(x[k].ptr<float>());
+    channels.x.push_back(w.x[k].ptr<float>());
     channels.prior.push_back({p0[kAlpha].ptr<float>(), p0[kBeta + k].ptr<float>(),
                               p0[kTau + k].ptr<float>(), p0[kSigma + k].ptr<float>()});
     channels.posterior.push_back({p1[kAlpha].ptr<float>(), p1[kBeta + k].ptr<float>(),
@@ -82,19 +96,20 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   out.selected = prior.selected;
   out.surprise = surprise;
   if (gaps) out.surprise.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
-  cv::Mat tau;
-  cv::merge(std::vector<cv::Mat>{p0[kTau], p0[kTau + 1], p0[kTau + 2]}, tau);
-  color::YCbCrToRgb(tau).convertTo(out.expected_rgb, CV_8UC3);
+  cv::merge(std::vector<cv::Mat>{p0[kTau], p0[kTau + 1], p0[kTau + 2]}, w.merged);
+  color::YCbCrToRgb(w.merged, w.expected);
+  w.expected.convertTo(out.expected_rgb, CV_8UC3);
   if (gaps) out.expected_rgb.setTo(cv::Scalar::all(0), uncovered);
   out.uncertainty = p0[kBeta] + p0[kBeta + 1] + p0[kBeta + 2];
   if (gaps) out.uncertainty.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
 
-  // The posterior at this viewpoint goes into the map (4.3's update policy).
-  cv::Mat ab_sigma1, ab_sigma_stored, tau1;
+  // The posterior at this viewpoint goes into the map (4.3's update policy): new images, since
+  // the store keeps them.
+  cv::Mat ab_sigma_stored, tau1;
   cv::merge(std::vector<cv::Mat>{p1[kAlpha], p1[kBeta], p1[kBeta + 1], p1[kBeta + 2], p1[kSigma],
                                  p1[kSigma + 1], p1[kSigma + 2]},
-            ab_sigma1);
-  ab_sigma1.convertTo(ab_sigma_stored, options_.half_precision ? CV_16F : CV_32F);
+            w.merged);
+  w.merged.convertTo(ab_sigma_stored, options_.half_precision ? CV_16F : CV_32F);
   cv::merge(std::vector<cv::Mat>{p1[kTau], p1[kTau + 1], p1[kTau + 2]}, tau1);
   out.update = map_.Update(camera, T_world_cam, depth,
                            {{"ab_sigma", ab_sigma_stored}, {"tau", tau1}}, prior.selected);

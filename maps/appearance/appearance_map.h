@@ -15,6 +15,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -42,6 +43,7 @@ struct AppearanceProducts {
 class AppearanceMap {
  public:
   explicit AppearanceMap(const AppearanceMapOptions& options = {});
+  ~AppearanceMap();
 
   /// Processes one frame: rgb CV_8UC3 (R, G, B) and depth CV_32FC1 (m) of `camera`'s size, pose
   /// T_world_cam. Throws std::invalid_argument naming the problem (sizes, types, pose); the map
@@ -63,6 +65,11 @@ class AppearanceMap {
  private:
   AppearanceMapOptions options_;
   ViewBasedMap map_;
+  // Per-frame working images, kept from frame to frame: fresh megabyte buffers every frame cost
+  // more in page faults than the conversions themselves (a third of a static camera's frame).
+  // Nothing in them outlives a call; the products handed out are always new images.
+  struct Workspace;
+  std::unique_ptr<Workspace> work_;
 };
 
 /// Throws std::invalid_argument unless rgb is CV_8UC3 and depth CV_32FC1, both of the camera's

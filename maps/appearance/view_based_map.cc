@@ -28,15 +28,24 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
     const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
     const std::vector<std::pair<std::string, int>>& names) {
   Prediction p;
+  Predict(camera, T_world_cam, names, p);
+  return p;
+}
+
+void ViewBasedMap::Predict(const views::PinholeCamera& camera,
+                           const Eigen::Isometry3d& T_world_cam,
+                           const std::vector<std::pair<std::string, int>>& names,
+                           Prediction& p) {
   p.selected = views::SelectViews(store_.Poses(), camera, T_world_cam, options_.selection);
+  p.value.resize(names.size());
   if (p.selected.empty()) {
-    for (const auto& [name, channels] : names) {
-      cv::Mat m(camera.height, camera.width, CV_32FC(channels));
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      cv::Mat& m = p.value[k];
+      m.create(camera.height, camera.width, CV_32FC(names[k].second));
       m.reshape(1).setTo(std::numeric_limits<float>::quiet_NaN());  // Scalar: ≤ 4 channels
-      p.value.push_back(m);
     }
     p.valid = cv::Mat::zeros(camera.height, camera.width, CV_8UC1);
-    return p;
+    return;
   }
   // A camera exactly at a reference view (a static camera) needs no warp: the view's own
   // pixels are the prediction, every one of them valid.
@@ -44,13 +53,11 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
     const views::ReferenceView& v = store_.view(j);
     if (!SameCamera(v.camera, camera) || !SamePose(v.T_world_cam, T_world_cam)) continue;
     p.selected = {j};
-    for (const auto& [name, channels] : names) {
-      cv::Mat value;
-      v.planes.at(name).convertTo(value, CV_32F);
-      p.value.push_back(value);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      v.planes.at(names[k].first).convertTo(p.value[k], CV_32F);
     }
     p.valid = cv::Mat(camera.height, camera.width, CV_8UC1, cv::Scalar(255));
-    return p;
+    return;
   }
   std::vector<views::SourceView> sources;
   for (int j : p.selected) {
@@ -58,14 +65,13 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
     sources.push_back({&v.camera, &v.T_world_cam, &v.depth});
   }
   warper_.WarpMany(sources, camera, T_world_cam, warps_);
-  for (const auto& [name, channels] : names) {
+  for (std::size_t k = 0; k < names.size(); ++k) {
     std::vector<cv::Mat> planes;
-    for (int j : p.selected) planes.push_back(store_.view(j).planes.at(name));
+    for (int j : p.selected) planes.push_back(store_.view(j).planes.at(names[k].first));
     views::BlendResult b = views::BlendPlanes(warps_, planes, options_.blend);
-    p.value.push_back(std::move(b.value));
+    p.value[k] = std::move(b.value);
     p.valid = std::move(b.valid);  // the same for every plane: it depends on the warps only
   }
-  return p;
 }
 
 void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,

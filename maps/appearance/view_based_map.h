@@ -51,6 +51,10 @@ class ViewBasedMap {
   /// selected view serves every plane. An empty map predicts nothing: all invalid.
   Prediction Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                      const std::vector<std::pair<std::string, int>>& names);
+  /// The same into `out`, whose value planes are reused where their size and type fit (a static
+  /// camera's frame then converts the view's planes without allocating); `valid` is always new.
+  void Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+               const std::vector<std::pair<std::string, int>>& names, Prediction& out);
 
   struct UpdateResult {
     bool added = false;

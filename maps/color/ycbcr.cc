@@ -15,12 +15,11 @@ cv::Vec3f Apply(const cv::Matx34d& m, const cv::Vec3f& v) {
   return out;
 }
 
-cv::Mat Apply(const cv::Mat& in, const cv::Matx34d& m) {
-  cv::Mat in_f;
-  in.convertTo(in_f, CV_32F);
-  cv::Mat out;
-  cv::transform(in_f, out, cv::Matx34f(m));  // OpenCV's vectorised per-pixel affine map
-  return out;
+// Into `out` (reusing its buffer): the image as float, then in place OpenCV's vectorised
+// per-pixel affine map (each output pixel depends on its own input pixel only).
+void Apply(const cv::Mat& in, const cv::Matx34d& m, cv::Mat& out) {
+  in.convertTo(out, CV_32F);
+  cv::transform(out, out, cv::Matx34f(m));
 }
 
 }  // namespace
@@ -52,24 +51,36 @@ cv::Vec3f YCbCrToRgb(const cv::Vec3f& ycbcr) {
   return Apply(YCbCrToRgbMatrix(), ycbcr);
 }
 
-cv::Mat RgbToYCbCr(const cv::Mat& rgb) {
+void RgbToYCbCr(const cv::Mat& rgb, cv::Mat& ycbcr) {
   if (rgb.type() != CV_8UC3 && rgb.type() != CV_32FC3) {
     throw std::invalid_argument(
         "RgbToYCbCr: expected an RGB image of type CV_8UC3 or CV_32FC3, "
         "got OpenCV type " +
         std::to_string(rgb.type()));
   }
-  return Apply(rgb, RgbToYCbCrMatrix());
+  Apply(rgb, RgbToYCbCrMatrix(), ycbcr);
 }
 
-cv::Mat YCbCrToRgb(const cv::Mat& ycbcr) {
+void YCbCrToRgb(const cv::Mat& ycbcr, cv::Mat& rgb) {
   if (ycbcr.type() != CV_32FC3) {
     throw std::invalid_argument(
         "YCbCrToRgb: expected a YCbCr image of type CV_32FC3, got OpenCV "
         "type " +
         std::to_string(ycbcr.type()));
   }
-  return Apply(ycbcr, YCbCrToRgbMatrix());
+  Apply(ycbcr, YCbCrToRgbMatrix(), rgb);
+}
+
+cv::Mat RgbToYCbCr(const cv::Mat& rgb) {
+  cv::Mat ycbcr;
+  RgbToYCbCr(rgb, ycbcr);
+  return ycbcr;
+}
+
+cv::Mat YCbCrToRgb(const cv::Mat& ycbcr) {
+  cv::Mat rgb;
+  YCbCrToRgb(ycbcr, rgb);
+  return rgb;
 }
 
 }  // namespace novelty::color

@@ -35,4 +35,10 @@ cv::Mat RgbToYCbCr(const cv::Mat& rgb);
 /// gamut stays visible as such. Throws std::invalid_argument for other types.
 cv::Mat YCbCrToRgb(const cv::Mat& ycbcr);
 
+/// The same into an output image whose buffer is reused when it has the right size and type
+/// (per-frame callers avoid a fresh megabyte each time). The output must not share data with
+/// the input unless it is the input itself.
+void RgbToYCbCr(const cv::Mat& rgb, cv::Mat& ycbcr);
+void YCbCrToRgb(const cv::Mat& ycbcr, cv::Mat& rgb);
+
 }  // namespace novelty::color
