@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "maps/views/planar_blocks.h"
+
 namespace novelty::appearance {
 
 namespace {
@@ -62,7 +64,7 @@ void ViewBasedMap::Predict(const views::PinholeCamera& camera,
   std::vector<views::SourceView> sources;
   for (int j : p.selected) {
     const views::ReferenceView& v = store_.view(j);
-    sources.push_back({&v.camera, &v.T_world_cam, &v.depth});
+    sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &planar_blocks_[std::size_t(j)]});
   }
   warper_.WarpMany(sources, camera, T_world_cam, warps_);
   for (std::size_t k = 0; k < names.size(); ++k) {
@@ -81,9 +83,20 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
                                 " views but " + std::to_string(anchors.size()) + " anchors");
   }
   views::ReferenceViewStore store;
-  for (views::ReferenceView& v : views) store.Add(std::move(v));  // checks every view
+  std::vector<cv::Mat> planar_blocks;
+  for (views::ReferenceView& v : views) {
+    planar_blocks.push_back(PlanarBlocks(v.depth));
+    store.Add(std::move(v));  // checks every view
+  }
   store_ = std::move(store);
   anchors_ = std::move(anchors);
+  planar_blocks_ = std::move(planar_blocks);
+}
+
+cv::Mat ViewBasedMap::PlanarBlocks(const cv::Mat& depth) const {
+  const views::WarpOptions& o = options_.warp;
+  if (o.planar_block <= 0 || depth.type() != CV_32FC1) return cv::Mat();
+  return views::FindPlanarBlocks(depth, o.planar_block, o.planar_tolerance);
 }
 
 ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& camera,
@@ -105,6 +118,7 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& came
   v.T_world_cam = T_world_cam;
   v.depth = depth.clone();
   v.planes = std::move(payload);
+  cv::Mat planar_blocks = PlanarBlocks(v.depth);
   UpdateResult r;
   bool add = nearest_view < 0 || nearest >= options_.new_view_distance;
   if (!add) {
@@ -116,9 +130,11 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& came
     r.added = true;
     r.view = store_.Add(std::move(v));
     anchors_.push_back(T_world_cam);
+    planar_blocks_.push_back(planar_blocks);
   } else {
     r.view = selected.front();
     store_.Replace(r.view, std::move(v));
+    planar_blocks_[std::size_t(r.view)] = planar_blocks;
   }
   return r;
 }

@@ -519,8 +519,8 @@ DepthMeshWarper::~DepthMeshWarper() = default;
 void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_world_src,
                            const cv::Mat& depth, const PinholeCamera& dst,
                            const Eigen::Isometry3d& T_world_dst, WarpField& field) {
-  WarpWith(*scratch_, ThreadCount(options_.threads), src, T_world_src, depth, dst, T_world_dst,
-           field);
+  WarpWith(*scratch_, ThreadCount(options_.threads), src, T_world_src, depth, nullptr, dst,
+           T_world_dst, field);
 }
 
 void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const PinholeCamera& dst,
@@ -530,8 +530,8 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
   const int threads = ThreadCount(options_.threads);
   if (threads < 2 || sources.size() < 2) {
     for (std::size_t k = 0; k < sources.size(); ++k) {
-      Warp(*sources[k].camera, *sources[k].T_world_cam, *sources[k].depth, dst, T_world_dst,
-           fields[k]);
+      WarpWith(*scratch_, threads, *sources[k].camera, *sources[k].T_world_cam,
+               *sources[k].depth, sources[k].planar_blocks, dst, T_world_dst, fields[k]);
     }
     return;
   }
@@ -546,7 +546,8 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
       try {
         for (std::size_t k = std::size_t(w); k < sources.size(); k += std::size_t(workers)) {
           WarpWith(*worker_scratch_[std::size_t(w)], 1, *sources[k].camera,
-                   *sources[k].T_world_cam, *sources[k].depth, dst, T_world_dst, fields[k]);
+                   *sources[k].T_world_cam, *sources[k].depth, sources[k].planar_blocks, dst,
+                   T_world_dst, fields[k]);
         }
       } catch (const std::exception& e) {
         errors[std::size_t(w)] = e.what();  // rethrown below, not across the thread pool
@@ -560,8 +561,8 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
 
 void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamera& src,
                                const Eigen::Isometry3d& T_world_src, const cv::Mat& depth,
-                               const PinholeCamera& dst, const Eigen::Isometry3d& T_world_dst,
-                               WarpField& field) const {
+                               const cv::Mat* planar_blocks, const PinholeCamera& dst,
+                               const Eigen::Isometry3d& T_world_dst, WarpField& field) const {
   const WarpOptions& o = options_;
   src.Check();
   dst.Check();
@@ -579,8 +580,13 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   ProjectVertices(src, T_vs, depth, dst, o.near_plane, threads, v);
   std::vector<cv::Point> blocks;
   if (o.planar_block > 0) {
-    blocks = MarkPlanarBlocks(FindPlanarBlocks(depth, o.planar_block, o.planar_tolerance),
-                              o.planar_block, src.width, v);
+    // The caller's flags if they fit this block size (a grid of another size: found anew).
+    const cv::Size grid((src.width - 1) / o.planar_block, (src.height - 1) / o.planar_block);
+    const bool kept = planar_blocks && planar_blocks->type() == CV_8UC1 &&
+                      planar_blocks->size() == grid;
+    blocks = MarkPlanarBlocks(
+        kept ? *planar_blocks : FindPlanarBlocks(depth, o.planar_block, o.planar_tolerance),
+        o.planar_block, src.width, v);
   }
 
   // Threads take blocks of source rows, each with its own buffers, merged by depth afterwards.

@@ -59,6 +59,9 @@ struct SourceView {
   const PinholeCamera* camera;
   const Eigen::Isometry3d* T_world_cam;
   const cv::Mat* depth;  ///< CV_32FC1, the camera's size
+  /// FindPlanarBlocks(depth, planar_block, planar_tolerance) kept by a caller whose views do not
+  /// change between frames (a map's reference views); null: found at each warp.
+  const cv::Mat* planar_blocks = nullptr;
 };
 
 /// Warps views one after another, reusing its buffers (and the output field's) from call to
@@ -88,8 +91,8 @@ class DepthMeshWarper {
   struct Scratch;
   void WarpWith(Scratch& scratch, int threads, const PinholeCamera& source_camera,
                 const Eigen::Isometry3d& T_world_source, const cv::Mat& source_depth,
-                const PinholeCamera& virtual_camera, const Eigen::Isometry3d& T_world_virtual,
-                WarpField& out) const;
+                const cv::Mat* planar_blocks, const PinholeCamera& virtual_camera,
+                const Eigen::Isometry3d& T_world_virtual, WarpField& out) const;
   WarpOptions options_;
   std::unique_ptr<Scratch> scratch_;
   std::vector<std::unique_ptr<Scratch>> worker_scratch_;  // one per WarpMany worker

@@ -119,7 +119,12 @@ class DirectOdometry::Impl {
                                                guess->inverse() * nearest->world_from_camera,
                                                options.alignment);
     if (a.visible < options.min_points || a.rms > options.max_rms) {
-      if (prior && why) *why = "the frame does not align with the nearest keyframe";
+      if (prior && why) {
+        *why = "the frame does not align with the nearest keyframe (" +
+               std::to_string(a.visible) + " points visible, min_points " +
+               std::to_string(options.min_points) + "; rms " + std::to_string(a.rms) +
+               ", max_rms " + std::to_string(options.max_rms) + ")";
+      }
       return prior ? std::nullopt : guess;
     }
     return nearest->world_from_camera * a.current_from_keyframe.inverse();

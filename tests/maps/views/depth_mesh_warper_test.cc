@@ -135,6 +135,31 @@ TEST(DepthMeshWarper, PlanarBlocksGiveTheFieldOfTheSmallQuads) {
   std::printf("blocks against quads: %.4f px, relative depth %.1e\n", worst_px, worst_depth);
 }
 
+TEST(DepthMeshWarper, PlanarFlagsKeptByTheCallerAreUsed) {
+  // A tilted plane: kept flags equal to FindPlanarBlocks give the field found without them;
+  // flags that mark no block give exactly the quad-by-quad field; flags of another grid size are
+  // ignored (found anew).
+  cv::Mat depth(kCam.height, kCam.width, CV_32FC1);
+  for (int y = 0; y < depth.rows; ++y)
+    for (int x = 0; x < depth.cols; ++x) depth.at<float>(y, x) = 1.0f / (0.4f + 0.0008f * x + 0.0005f * y);
+  const Eigen::Isometry3d src = Forward(), virt = LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0});
+  const cv::Mat found = FindPlanarBlocks(depth, 8, 0.002);
+  const cv::Mat none = cv::Mat::zeros(found.size(), CV_8UC1), other_grid(3, 3, CV_8UC1, 255);
+  auto warp = [&](const cv::Mat* flags, int planar_block) {
+    WarpOptions o;
+    o.planar_block = planar_block;
+    DepthMeshWarper warper(o);
+    std::vector<WarpField> fields;
+    warper.WarpMany({{&kCam, &src, &depth, flags}}, kCam, virt, fields);
+    return fields[0];
+  };
+  const WarpField blocks = warp(nullptr, 8), quads = warp(nullptr, 0);
+  ASSERT_GT(cv::norm(blocks.map, quads.map, cv::NORM_INF), 0.0);  // the two paths differ a little
+  EXPECT_EQ(cv::norm(warp(&found, 8).map, blocks.map, cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(warp(&none, 8).map, quads.map, cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(warp(&other_grid, 8).map, blocks.map, cv::NORM_INF), 0.0);
+}
+
 TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
   // Three views of a wavy surface; whole views per thread must give exactly the fields of
   // warping each view alone (the same rasteriser, only the work split differs).

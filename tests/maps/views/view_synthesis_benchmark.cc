@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "maps/views/depth_mesh_warper.h"
+#include "maps/views/planar_blocks.h"
 #include "maps/views/view_blender.h"
 #include "maps/views/view_selection.h"
 #include "sim/render/renderer.h"
@@ -14,7 +15,7 @@ namespace {
 struct Views {
   views::PinholeCamera camera = views::PinholeCamera::FromFov(320, 240, 1.0);
   std::vector<Eigen::Isometry3d> poses;
-  std::vector<cv::Mat> depths, images;
+  std::vector<cv::Mat> depths, images, planar_blocks;  // flags as a map keeps them per view
   Eigen::Isometry3d virtual_pose;
 };
 
@@ -36,6 +37,7 @@ Views MakeViews() {
     v.poses.push_back(views::LookAt(eye, {0, 0, 0.2}));
     const sim::RenderedFrame f = sim::Render(scene, light, v.camera, v.poses.back());
     v.depths.push_back(f.depth);
+    v.planar_blocks.push_back(views::FindPlanarBlocks(f.depth, 8, 0.002));
     v.images.push_back(f.rgb);
   }
   v.virtual_pose = views::LookAt({2.0 * std::cos(0.05), 2.0 * std::sin(0.05), 1.25}, {0, 0, 0.2});
@@ -45,7 +47,8 @@ Views MakeViews() {
 // All seven views as WarpMany's sources.
 std::vector<views::SourceView> Sources(const Views& v) {
   std::vector<views::SourceView> sources;
-  for (int j = 0; j < 7; ++j) sources.push_back({&v.camera, &v.poses[j], &v.depths[j]});
+  for (int j = 0; j < 7; ++j)
+    sources.push_back({&v.camera, &v.poses[j], &v.depths[j], &v.planar_blocks[j]});
   return sources;
 }
 
