@@ -81,7 +81,8 @@ Eigen::Matrix4d LagrangeFrameTransform(const std::vector<SupportView>& support, 
   return q;
 }
 
-FittedFrameTransform::FittedFrameTransform(const std::vector<SupportView>& support) {
+FittedFrameTransform::FittedFrameTransform(const std::vector<SupportView>& support,
+                                           const FrameFitOptions& options) {
   CheckSupport(support);
   double lo = support[0].index, hi = lo;
   for (const auto& s : support) lo = std::min(lo, s.index), hi = std::max(hi, s.index);
@@ -93,17 +94,18 @@ FittedFrameTransform::FittedFrameTransform(const std::vector<SupportView>& suppo
   ceres::Problem problem;
   for (size_t n = 0; n < support.size(); ++n) {
     const double x = (support[n].index - center_) / scale_;
-    // 1 rad ~ 1 m: rotation and translation errors of a room-sized scene weigh alike.
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<SupportResidual, 6, 9, 9>(
-                                 new SupportResidual(support[n], reference_rotation_, x, 1.0)),
-                             nullptr, rotation_, translation_);
+    problem.AddResidualBlock(
+        new ceres::AutoDiffCostFunction<SupportResidual, 6, 9, 9>(new SupportResidual(
+            support[n], reference_rotation_, x, options.rotation_weight)),
+        options.robust_scale > 0 ? new ceres::HuberLoss(options.robust_scale) : nullptr,
+        rotation_, translation_);
   }
   for (int k = 0; k < 3; ++k) translation_[k] = q[0].translation()(k);
-  ceres::Solver::Options options;
-  options.max_num_iterations = 100;
-  options.linear_solver_type = ceres::DENSE_QR;
+  ceres::Solver::Options solver;
+  solver.max_num_iterations = 100;
+  solver.linear_solver_type = ceres::DENSE_QR;
   ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
+  ceres::Solve(solver, &problem, &summary);
   if (!summary.IsSolutionUsable())
     throw std::runtime_error("registration: the fit did not converge: " + summary.BriefReport());
 }

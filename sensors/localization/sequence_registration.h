@@ -27,11 +27,22 @@ struct SupportView {
 /// Throws std::invalid_argument with fewer than three or two at the same index.
 Eigen::Matrix4d LagrangeFrameTransform(const std::vector<SupportView>& support, double j);
 
+struct FrameFitOptions {
+  /// Metres per radian: how rotation residuals weigh against position residuals (1 rad ~ 1 m:
+  /// alike for a room-sized scene).
+  double rotation_weight = 1.0;
+  /// Huber scale (m) of each support view's residual: a support view that aligned wrongly (under
+  /// another lighting one can be centimetres off) pulls the fit linearly, not quadratically.
+  /// 0 = plain least squares.
+  double robust_scale = 0.005;
+};
+
 /// The Ceres fit of Q_j; evaluate with At(). Throws std::invalid_argument with fewer
 /// than three support views.
 class FittedFrameTransform {
  public:
-  explicit FittedFrameTransform(const std::vector<SupportView>& support);
+  explicit FittedFrameTransform(const std::vector<SupportView>& support,
+                                const FrameFitOptions& options = {});
   Eigen::Isometry3d At(double j) const;
 
  private:

@@ -51,18 +51,32 @@ TEST(NormalGammaBatch, ScalarKernelEqualsPerPixelFormulas) {
   }
 }
 
+// One channel's update and surprise from `prior` by the scalar and by the vectorised kernel.
+struct BothKernels {
+  Planes post_s, post_v;
+  std::vector<float> s_scalar, s_vector;
+  explicit BothKernels(const Planes& prior)
+      : post_s(prior.x.size(), 1),
+        post_v(prior.x.size(), 1),
+        s_scalar(prior.x.size(), 0.0f),
+        s_vector(prior.x.size(), 0.0f) {
+    const std::size_t n = prior.x.size();
+    SurpriseBatchOptions o;
+    o.kernel = BatchKernel::kScalar;
+    UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_s.Mutable(), s_scalar.data(),
+                                n, o);
+    o.kernel = BatchKernel::kVectorised;
+    UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_v.Mutable(), s_vector.data(),
+                                n, o);
+  }
+};
+
 TEST(NormalGammaBatch, VectorisedKernelAgreesWithScalarToFloatPrecision) {
   const std::size_t n = 320 * 240 + 7;  // a tail that is not a multiple of the packet size
   const Planes prior(n, 9);
-  Planes post_s(n, 1), post_v(n, 1);
-  std::vector<float> s_scalar(n, 0.0f), s_vector(n, 0.0f);
-  SurpriseBatchOptions o;
-  o.kernel = BatchKernel::kScalar;
-  UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_s.Mutable(), s_scalar.data(), n,
-                              o);
-  o.kernel = BatchKernel::kVectorised;
-  UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_v.Mutable(), s_vector.data(), n,
-                              o);
+  const BothKernels r(prior);
+  const Planes &post_s = r.post_s, &post_v = r.post_v;
+  const std::vector<float>&s_scalar = r.s_scalar, &s_vector = r.s_vector;
   double worst = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     EXPECT_NEAR(post_v.beta[i], post_s.beta[i], 2e-6f * post_s.beta[i]) << i;
@@ -85,15 +99,9 @@ TEST(NormalGammaBatch, RunsOfEqualAlphaGiveTheSurpriseOfTheScalarKernel) {
     const std::size_t run = i / 40;
     if (run % 2 == 0) prior.alpha[i] = runs[(run / 2) % 4];
   }
-  Planes post_s(n, 1), post_v(n, 1);
-  std::vector<float> s_scalar(n, 0.0f), s_vector(n, 0.0f);
-  SurpriseBatchOptions o;
-  o.kernel = BatchKernel::kScalar;
-  UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_s.Mutable(), s_scalar.data(), n,
-                              o);
-  o.kernel = BatchKernel::kVectorised;
-  UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_v.Mutable(), s_vector.data(), n,
-                              o);
+  const BothKernels r(prior);
+  const Planes &post_s = r.post_s, &post_v = r.post_v;
+  const std::vector<float>&s_scalar = r.s_scalar, &s_vector = r.s_vector;
   for (std::size_t i = 0; i < n; ++i) {
     ASSERT_NEAR(s_vector[i], s_scalar[i], 5e-4 * (1e-3 + s_scalar[i])) << i;
     ASSERT_FLOAT_EQ(post_v.alpha[i], post_s.alpha[i]) << i;
