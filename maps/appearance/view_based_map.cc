@@ -64,7 +64,9 @@ void ViewBasedMap::Predict(const views::PinholeCamera& camera,
   std::vector<views::SourceView> sources;
   for (int j : p.selected) {
     const views::ReferenceView& v = store_.view(j);
-    sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &planar_blocks_[std::size_t(j)]});
+    cv::Mat& flags = planar_blocks_[std::size_t(j)];
+    if (flags.empty()) flags = PlanarBlocks(v.depth);  // when the view is first warped
+    sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &flags});
   }
   warper_.WarpMany(sources, camera, T_world_cam, warps_);
   for (std::size_t k = 0; k < names.size(); ++k) {
@@ -83,7 +85,7 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
                                 " views but " + std::to_string(anchors.size()) + " anchors");
   }
   views::ReferenceViewStore store;
-  std::vector<cv::Mat> planar_blocks;
+  std::vector<cv::Mat> planar_blocks;  // found now: a loaded map's views are meant to be warped
   for (views::ReferenceView& v : views) {
     planar_blocks.push_back(PlanarBlocks(v.depth));
     store.Add(std::move(v));  // checks every view
@@ -118,7 +120,6 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& came
   v.T_world_cam = T_world_cam;
   v.depth = depth.clone();
   v.planes = std::move(payload);
-  cv::Mat planar_blocks = PlanarBlocks(v.depth);
   UpdateResult r;
   bool add = nearest_view < 0 || nearest >= options_.new_view_distance;
   if (!add) {
@@ -130,11 +131,11 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& came
     r.added = true;
     r.view = store_.Add(std::move(v));
     anchors_.push_back(T_world_cam);
-    planar_blocks_.push_back(planar_blocks);
+    planar_blocks_.emplace_back();  // found when first warped
   } else {
     r.view = selected.front();
     store_.Replace(r.view, std::move(v));
-    planar_blocks_[std::size_t(r.view)] = planar_blocks;
+    planar_blocks_[std::size_t(r.view)] = cv::Mat();  // the depth changed
   }
   return r;
 }

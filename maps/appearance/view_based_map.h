@@ -76,7 +76,9 @@ class ViewBasedMap {
   ViewBasedMapOptions options_;
   views::ReferenceViewStore store_;
   std::vector<Eigen::Isometry3d> anchors_;  // pose of each view when it was created
-  std::vector<cv::Mat> planar_blocks_;      // per view, for the warper: found once per view
+  // Per view, for the warper: found when a view is loaded or first warped, dropped when it is
+  // replaced (a static camera replaces its view every frame and never warps it).
+  std::vector<cv::Mat> planar_blocks_;
   cv::Mat PlanarBlocks(const cv::Mat& depth) const;
   views::DepthMeshWarper warper_;
   std::vector<views::WarpField> warps_;  // reused from frame to frame
