@@ -32,7 +32,9 @@ struct AppearanceMap::Workspace {
   ViewBasedMap::Prediction prior;
   std::vector<cv::Mat> ab_sigma, tau;  // the prior's planes (α, β×3, σ×3; τ×3)
   std::vector<cv::Mat> posterior;      // kChannels planes
-  cv::Mat merged;                      // an interleaved image before conversion or copy
+  // Interleaved images before conversion: τ (3 channels) and α, β, σ (7); one buffer each, since
+  // a buffer of the other channel count would be reallocated twice a frame.
+  cv::Mat merged_tau, merged_ab_sigma;
 };
 
 AppearanceMap::~AppearanceMap() = default;
@@ -96,8 +98,8 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   out.selected = prior.selected;
   out.surprise = surprise;
   if (gaps) out.surprise.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
-  cv::merge(std::vector<cv::Mat>{p0[kTau], p0[kTau + 1], p0[kTau + 2]}, w.merged);
-  color::YCbCrToRgb(w.merged, w.expected);
+  cv::merge(std::vector<cv::Mat>{p0[kTau], p0[kTau + 1], p0[kTau + 2]}, w.merged_tau);
+  color::YCbCrToRgb(w.merged_tau, w.expected);
   w.expected.convertTo(out.expected_rgb, CV_8UC3);
   if (gaps) out.expected_rgb.setTo(cv::Scalar::all(0), uncovered);
   out.uncertainty = p0[kBeta] + p0[kBeta + 1] + p0[kBeta + 2];
@@ -108,8 +110,8 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   cv::Mat ab_sigma_stored, tau1;
   cv::merge(std::vector<cv::Mat>{p1[kAlpha], p1[kBeta], p1[kBeta + 1], p1[kBeta + 2], p1[kSigma],
                                  p1[kSigma + 1], p1[kSigma + 2]},
-            w.merged);
-  w.merged.convertTo(ab_sigma_stored, options_.half_precision ? CV_16F : CV_32F);
+            w.merged_ab_sigma);
+  w.merged_ab_sigma.convertTo(ab_sigma_stored, options_.half_precision ? CV_16F : CV_32F);
   cv::merge(std::vector<cv::Mat>{p1[kTau], p1[kTau + 1], p1[kTau + 2]}, tau1);
   out.update = map_.Update(camera, T_world_cam, depth,
                            {{"ab_sigma", ab_sigma_stored}, {"tau", tau1}}, prior.selected);

@@ -1,6 +1,7 @@
 #include "sensors/localization/support_views.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace novelty::sensors {
 
