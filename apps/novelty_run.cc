@@ -33,7 +33,9 @@
 #include "maps/appearance/differencing_map.h"
 #include "maps/eval/attentional_selectivity.h"
 #include "maps/eval/false_color.h"
+#include "maps/eval/first_run.h"
 #include "maps/eval/html_report.h"
+#include "maps/eval/selectivity_findings.h"
 #include "maps/eval/write_rgb_image.h"
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/c_appearance_map.h"
@@ -115,12 +117,6 @@ std::map<std::string, cv::Mat> ChangedRegions(const cv::Mat& novelty, const cv::
   return regions;
 }
 
-struct Row {
-  int frame;
-  std::string phase, object;
-  eval::Selectivity surprise, difference;
-};
-
 std::string Fmt(double v) {
   if (!std::isfinite(v)) return "";
   char buf[32];
@@ -128,49 +124,109 @@ std::string Fmt(double v) {
   return buf;
 }
 
-void WriteReport(const std::string& out, const std::vector<Row>& rows,
-                 const std::vector<Phase>& phases, const std::vector<int>& panel_frames, int frames,
-                 double seconds, int views) {
+// The findings of thesis 4.3 for the glass-and-cup scenario, each read over the first run of its
+// phase (Q1 → Q2, found from the true camera positions). Phases or regions a sequence lacks are
+// left out.
+std::vector<eval::Finding> ThesisFindings(const std::vector<Phase>& phases,
+                                          const std::map<int, Eigen::Isometry3d>& poses) {
+  std::map<int, Eigen::Vector3d> positions;
+  for (const auto& [frame, pose] : poses) positions[frame] = pose.translation();
+  const struct {
+    const char* phase;
+    const char* region;
+    eval::Claim claim;
+    const char* what;
+  } specs[] = {
+      {"B", "glass", eval::Claim::kSurpriseMoreSelective,
+       "glass: surprise more selective than differencing (fig. 4.9)"},
+      {"C", "cup", eval::Claim::kBothDetect, "black cup: detected by both, PAS > 0 dB (fig. 4.12)"},
+      {"D", "removed", eval::Claim::kSurpriseLessSelective,
+       "removed cup: less surprising than differencing makes it (fig. 4.12, phase D)"}};
+  std::vector<eval::Finding> findings;
+  for (const auto& spec : specs) {
+    for (const Phase& p : phases) {
+      if (p.name != spec.phase || !positions.count(p.first)) continue;
+      findings.push_back(
+          {spec.what, spec.region, spec.claim, p.first, eval::FirstRunEnd(positions, p.first, p.last)});
+    }
+  }
+  return findings;
+}
+
+std::vector<std::string> MeanCells(const eval::MeanSelectivity& m) {
+  return {std::to_string(m.frames), Fmt(m.as_surprise), Fmt(m.as_difference), Fmt(m.pas_surprise),
+          Fmt(m.pas_difference)};
+}
+
+// OUT/findings.csv and a table in the report: each finding with its numbers and whether it holds.
+void ReportFindings(const std::string& out, const std::vector<eval::SelectivityRow>& rows,
+                    const std::vector<eval::Finding>& findings, eval::HtmlReport& report) {
+  std::ofstream csv(out + "/findings.csv");
+  csv << "finding,region,first_frame,last_frame,frames,AS_surprise,AS_diff,PAS_surprise,PAS_diff,"
+         "holds\n";
+  std::vector<std::vector<std::string>> table;
+  for (const eval::Finding& f : findings) {
+    const eval::FindingResult r = eval::Evaluate(rows, f);
+    const std::string frames = std::to_string(f.first) + "–" + std::to_string(f.last);
+    std::vector<std::string> line = {f.what, frames};
+    for (const std::string& cell : MeanCells(r.mean)) line.push_back(cell);
+    line.push_back(r.holds ? "yes" : "no");
+    table.push_back(line);
+    csv << '"' << f.what << "\"," << f.region << "," << f.first << "," << f.last;
+    for (const std::string& cell : MeanCells(r.mean)) csv << "," << cell;
+    csv << "," << (r.holds ? "yes" : "no") << "\n";
+    std::printf("  %-78s %s (AS %s vs %s dB, PAS %s vs %s dB, frames %s)\n", f.what.c_str(),
+                r.holds ? "holds" : "does NOT hold", Fmt(r.mean.as_surprise).c_str(),
+                Fmt(r.mean.as_difference).c_str(), Fmt(r.mean.pas_surprise).c_str(),
+                Fmt(r.mean.pas_difference).c_str(), frames.c_str());
+  }
+  report.Heading("Findings of thesis 4.3, over the first run after each change");
+  report.Paragraph(
+      "Means over the frames of the first run (Q1 to Q2) of each phase that show the region; "
+      "surprise / differencing. The effect of fewer reference views (fig. 4.13) needs runs with "
+      "--view-reduction 2 and 4: compare their findings.csv.");
+  report.Table({"finding", "frames", "frames with region", "AS surprise", "AS differencing",
+                "PAS surprise", "PAS differencing", "holds"},
+               table);
+}
+
+void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>& rows,
+                 const std::vector<Phase>& phases, const std::vector<eval::Finding>& findings,
+                 const std::vector<int>& panel_frames, int frames, double seconds, int views) {
   eval::HtmlReport report("NoveltyMaps — Bayesian surprise vs image differencing");
   char summary[256];
   std::snprintf(summary, sizeof summary,
                 "%d frames in %.1f s (%.1f frames/s); %d reference views in the map at the end.",
                 frames, seconds, frames / seconds, views);
   report.Paragraph(summary);
+  ReportFindings(out, rows, findings, report);
   std::vector<eval::PlotBand> bands;
   for (const Phase& p : phases) bands.push_back({double(p.first), double(p.last), p.name});
-  std::set<std::string> objects;
-  for (const Row& r : rows) objects.insert(r.object);
-  for (const std::string& object : objects) {
-    report.Heading("Region: " + object);
+  std::set<std::string> regions;
+  for (const eval::SelectivityRow& r : rows) regions.insert(r.region);
+  for (const std::string& region : regions) {
+    report.Heading("Region: " + region);
     eval::PlotSeries as_s{"AS surprise", "#c0392b", {}}, as_d{"AS differencing", "#2471a3", {}};
     eval::PlotSeries pas_s{"PAS surprise", "#c0392b", {}}, pas_d{"PAS differencing", "#2471a3", {}};
-    std::map<std::string, std::vector<const Row*>> by_phase;
-    for (const Row& r : rows) {
-      if (r.object != object) continue;
+    for (const eval::SelectivityRow& r : rows) {
+      if (r.region != region) continue;
       as_s.points.push_back({double(r.frame), r.surprise.as_db});
       as_d.points.push_back({double(r.frame), r.difference.as_db});
       pas_s.points.push_back({double(r.frame), r.surprise.pas_db});
       pas_d.points.push_back({double(r.frame), r.difference.pas_db});
-      by_phase[r.phase].push_back(&r);
     }
-    report.Raw(eval::SvgLinePlot("Attentional selectivity (eq. 4.24) — " + object, "frame", "dB",
+    report.Raw(eval::SvgLinePlot("Attentional selectivity (eq. 4.24) — " + region, "frame", "dB",
                                  {as_s, as_d}, bands));
-    report.Raw(eval::SvgLinePlot("Peak attentional selectivity (eq. 4.25) — " + object, "frame",
+    report.Raw(eval::SvgLinePlot("Peak attentional selectivity (eq. 4.25) — " + region, "frame",
                                  "dB", {pas_s, pas_d}, bands));
     std::vector<std::vector<std::string>> table;
-    for (const auto& [phase, list] : by_phase) {
-      double s[4] = {0, 0, 0, 0};
-      int n = 0;
-      for (const Row* r : list) {
-        if (!std::isfinite(r->surprise.as_db) || !std::isfinite(r->difference.as_db)) continue;
-        s[0] += r->surprise.as_db, s[1] += r->difference.as_db;
-        s[2] += r->surprise.pas_db, s[3] += r->difference.pas_db;
-        ++n;
-      }
-      if (n == 0) continue;
-      table.push_back({phase, std::to_string(n), Fmt(s[0] / n), Fmt(s[1] / n), Fmt(s[2] / n),
-                       Fmt(s[3] / n), s[0] > s[1] ? "surprise" : "differencing"});
+    for (const Phase& p : phases) {
+      const eval::MeanSelectivity m = eval::MeanOver(rows, region, p.first, p.last);
+      if (m.frames == 0) continue;
+      std::vector<std::string> line = {p.name};
+      for (const std::string& cell : MeanCells(m)) line.push_back(cell);
+      line.push_back(m.as_surprise > m.as_difference ? "surprise" : "differencing");
+      table.push_back(line);
     }
     report.Table({"phase", "frames", "mean AS surprise", "mean AS differencing",
                   "mean PAS surprise", "mean PAS differencing", "higher AS"},
@@ -234,7 +290,7 @@ int main(int argc, char** argv) {
     appearance::DifferencingMap baseline(options.views);
     std::ofstream csv(dir + "/metrics.csv");
     csv << "frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff\n";
-    std::vector<Row> rows;
+    std::vector<eval::SelectivityRow> rows;
     std::vector<int> panel_frames;
     int frames = 0, no_pose = 0;
     const auto start = std::chrono::steady_clock::now();
@@ -257,10 +313,11 @@ int main(int argc, char** argv) {
       const cv::Mat ids = cv::imread(gt + "/ids/" + stem + ".png", cv::IMREAD_UNCHANGED);
       if (!novelty.empty() && !ids.empty()) {
         for (const auto& [object, region] : ChangedRegions(novelty, ids, names, 30)) {
-          Row r{f.index, PhaseOf(phases, f.index), object,
-                eval::AttentionalSelectivity(p.surprise, region),
-                eval::AttentionalSelectivity(d.difference, region)};
-          csv << r.frame << "," << r.phase << "," << r.object << "," << Fmt(r.surprise.as_db) << ","
+          const eval::SelectivityRow r{f.index, object,
+                                       eval::AttentionalSelectivity(p.surprise, region),
+                                       eval::AttentionalSelectivity(d.difference, region)};
+          csv << r.frame << "," << PhaseOf(phases, f.index) << "," << r.region << ","
+              << Fmt(r.surprise.as_db) << ","
               << Fmt(r.surprise.pas_db) << "," << Fmt(r.difference.as_db) << ","
               << Fmt(r.difference.pas_db) << "\n";
           rows.push_back(r);
@@ -283,7 +340,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "\n");
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    WriteReport(dir, rows, phases, panel_frames, frames, seconds, map.map().store().size());
+    std::printf("Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");
+    WriteReport(dir, rows, phases, ThesisFindings(phases, poses), panel_frames, frames, seconds,
+                map.map().store().size());
     const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";
     map.SaveToFile(saved);
     map.SaveSceneFile(dir + "/map.3Dscene");  // for SceneViewer3D
