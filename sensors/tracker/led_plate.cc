@@ -49,17 +49,23 @@ std::optional<std::pair<size_t, size_t>> FindStaticInterval(const std::vector<Le
       ++start;
       continue;
     }
-    // Grow the run while every LED stays near the mean of the run so far.
+    // Grow the run while every LED seen stays near its mean over the run so far. A sample
+    // missing an LED (a dropout, 2 % per LED in the simulator) neither ends the run nor counts
+    // for that LED: at 25 Hz, runs of complete samples rarely last a second.
     std::array<Eigen::Vector3d, 4> sum;
-    for (int k = 0; k < 4; ++k) sum[k] = *samples[start].leds[k];
+    std::array<int, 4> count;
+    for (int k = 0; k < 4; ++k) sum[k] = *samples[start].leds[k], count[k] = 1;
     size_t end = start + 1;
-    for (; end < samples.size() && complete(end); ++end) {
+    for (; end < samples.size(); ++end) {
+      const auto& leds = samples[end].leds;
       bool still = true;
       for (int k = 0; k < 4 && still; ++k)
-        still = (*samples[end].leds[k] - sum[k] / double(end - start)).norm() <= options.tolerance;
+        still = !leds[k] || (*leds[k] - sum[k] / double(count[k])).norm() <= options.tolerance;
       if (!still) break;
-      for (int k = 0; k < 4; ++k) sum[k] += *samples[end].leds[k];
+      for (int k = 0; k < 4; ++k)
+        if (leds[k]) sum[k] += *leds[k], ++count[k];
     }
+    while (!complete(end - 1)) --end;  // the run ends on a complete sample
     const double duration = samples[end - 1].time - samples[start].time;
     if (duration > best_duration) {
       best_duration = duration;

@@ -46,8 +46,9 @@ struct StaticIntervalOptions {
   double tolerance = 0.004;
 };
 
-/// The longest run of consecutive samples, all four LEDs seen, in which every LED stays within
-/// `tolerance` of its running mean; nullopt (with `why`) when none lasts `min_duration`.
+/// The longest run of consecutive samples, starting and ending with all four LEDs seen, in which
+/// every LED stays within `tolerance` of its running mean (samples missing an LED are kept; that
+/// LED is not checked in them); nullopt (with `why`) when none lasts `min_duration`.
 std::optional<std::pair<size_t, size_t>> FindStaticInterval(const std::vector<LedSample>& samples,
                                                             const StaticIntervalOptions& options,
                                                             std::string* why);

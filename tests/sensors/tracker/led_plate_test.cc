@@ -92,6 +92,7 @@ TEST(LedPlate, FindsTheStaticIntervalBetweenMotions) {
     samples.push_back(Sample(i * 0.04, plate, pose, rng, 0.001));
   }
   samples[20].leds[1].reset();  // a dropout while moving does no harm
+  for (int i = 110; i < 170; i += 7) samples[std::size_t(i)].leds[i % 4].reset();  // nor still
   std::string why;
   const auto interval = FindStaticInterval(samples, {}, &why);
   ASSERT_TRUE(interval) << why;
