@@ -146,8 +146,8 @@ std::vector<eval::Finding> ThesisFindings(const std::vector<Phase>& phases,
   for (const auto& spec : specs) {
     for (const Phase& p : phases) {
       if (p.name != spec.phase || !positions.count(p.first)) continue;
-      findings.push_back(
-          {spec.what, spec.region, spec.claim, p.first, eval::FirstRunEnd(positions, p.first, p.last)});
+      findings.push_back({spec.what, spec.region, spec.claim, p.first,
+                          eval::FirstRunEnd(positions, p.first, p.last)});
     }
   }
   return findings;
@@ -317,9 +317,8 @@ int main(int argc, char** argv) {
                                        eval::AttentionalSelectivity(p.surprise, region),
                                        eval::AttentionalSelectivity(d.difference, region)};
           csv << r.frame << "," << PhaseOf(phases, f.index) << "," << r.region << ","
-              << Fmt(r.surprise.as_db) << ","
-              << Fmt(r.surprise.pas_db) << "," << Fmt(r.difference.as_db) << ","
-              << Fmt(r.difference.pas_db) << "\n";
+              << Fmt(r.surprise.as_db) << "," << Fmt(r.surprise.pas_db) << ","
+              << Fmt(r.difference.as_db) << "," << Fmt(r.difference.pas_db) << "\n";
           rows.push_back(r);
         }
       }
@@ -340,7 +339,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "\n");
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");
+    std::printf(
+        "Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");
     WriteReport(dir, rows, phases, ThesisFindings(phases, poses), panel_frames, frames, seconds,
                 map.map().store().size());
     const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";

@@ -1,6 +1,8 @@
 #include "maps/appearance/appearance_map.h"
 
+#include <algorithm>
 #include <limits>
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
@@ -26,15 +28,29 @@ void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCa
   }
 }
 
+namespace {
+
+// A frame is processed in tiles of this many rows, on all cores: each tile's working planes
+// (about 30 of 320 floats per row) stay in cache from the colour conversion through the kernel
+// to the stored posterior.
+constexpr int kTileRows = 8;
+
+}  // namespace
+
+// Working planes of one tile, reused for the tiles one task processes.
+struct AppearanceMap::TileWork {
+  cv::Mat ycbcr, prior7, prior3, merged7, merged3, expected, beta_sum;
+  std::vector<cv::Mat> x, ab_sigma, tau, posterior;
+};
+
+// The frame's shared inputs and outputs: what every tile reads and writes its rows of.
 struct AppearanceMap::Workspace {
-  cv::Mat ycbcr, expected;  // CV_32FC3: the frame in YCbCr; the prior's τ in RGB
-  std::vector<cv::Mat> x;   // Y, Cb, Cr planes
-  ViewBasedMap::Prediction prior;
-  std::vector<cv::Mat> ab_sigma, tau;  // the prior's planes (α, β×3, σ×3; τ×3)
-  std::vector<cv::Mat> posterior;      // kChannels planes
-  // Interleaved images before conversion: τ (3 channels) and α, β, σ (7); one buffer each, since
-  // a buffer of the other channel count would be reallocated twice a frame.
-  cv::Mat merged_tau, merged_ab_sigma;
+  const cv::Mat* rgb = nullptr;
+  const ViewBasedMap::Prediction* prior = nullptr;
+  cv::Mat uncovered;  // empty when the map covers every pixel
+  float initial[kChannels] = {};
+  cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau;
+  ViewBasedMap::Prediction prediction;  // the prior of the frame in progress
 };
 
 AppearanceMap::~AppearanceMap() = default;
@@ -45,76 +61,119 @@ AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
   stats::CheckNormalGamma(options_.initial_prior, "AppearanceMapOptions::initial_prior");
 }
 
+// Rows [r0, r1): prior planes from the prediction, update and surprise (eq. 4.8-4.21; α is shared
+// by the three channels), and the rows of every product and of the posterior to be stored.
+void AppearanceMap::ProcessRows(int r0, int r1, TileWork& t) const {
+  const Workspace& w = *work_;
+  const cv::Range rows(r0, r1);
+  color::RgbToYCbCr((*w.rgb).rowRange(rows), t.ycbcr);
+  cv::split(t.ycbcr, t.x);
+  // The prediction is float, or half floats where a static camera reads its view directly.
+  const cv::Mat& ab_sigma = w.prior->value[0];
+  const cv::Mat& tau = w.prior->value[1];
+  if (ab_sigma.depth() == CV_32F) {
+    cv::split(ab_sigma.rowRange(rows), t.ab_sigma);
+  } else {
+    ab_sigma.rowRange(rows).convertTo(t.prior7, CV_32F);
+    cv::split(t.prior7, t.ab_sigma);
+  }
+  if (tau.depth() == CV_32F) {
+    cv::split(tau.rowRange(rows), t.tau);
+  } else {
+    tau.rowRange(rows).convertTo(t.prior3, CV_32F);
+    cv::split(t.prior3, t.tau);
+  }
+  cv::Mat* const p0[kChannels] = {&t.ab_sigma[0], &t.ab_sigma[1], &t.ab_sigma[2], &t.ab_sigma[3],
+                                  &t.tau[0],      &t.tau[1],      &t.tau[2],      &t.ab_sigma[4],
+                                  &t.ab_sigma[5], &t.ab_sigma[6]};
+  const cv::Mat uncovered = w.uncovered.empty() ? cv::Mat() : w.uncovered.rowRange(rows);
+  if (!uncovered.empty()) {  // the initial prior where no view covers (a static camera: never)
+    for (int c = 0; c < kChannels; ++c) p0[c]->setTo(w.initial[c], uncovered);
+  }
+  t.posterior.resize(kChannels);
+  for (cv::Mat& m : t.posterior) m.create(r1 - r0, t.ycbcr.cols, CV_32FC1);
+  std::vector<cv::Mat>& p1 = t.posterior;
+  stats::ChannelPlanes channels;
+  for (int k = 0; k < 3; ++k) {
+    channels.x.push_back(t.x[k].ptr<float>());
+    channels.prior.push_back({p0[kAlpha]->ptr<float>(), p0[kBeta + k]->ptr<float>(),
+                              p0[kTau + k]->ptr<float>(), p0[kSigma + k]->ptr<float>()});
+    channels.posterior.push_back({p1[kAlpha].ptr<float>(), p1[kBeta + k].ptr<float>(),
+                                  p1[kTau + k].ptr<float>(), p1[kSigma + k].ptr<float>()});
+  }
+  cv::Mat surprise = w.surprise.rowRange(rows);
+  surprise.setTo(0.0f);
+  stats::UpdateAndAccumulateSurprise(channels, surprise.ptr<float>(), surprise.total(),
+                                     options_.surprise);
+
+  // Products: the prior's τ in RGB, its Σβ; NaN or black where not covered.
+  cv::merge(std::vector<cv::Mat>{*p0[kTau], *p0[kTau + 1], *p0[kTau + 2]}, t.merged3);
+  color::YCbCrToRgb(t.merged3, t.expected);
+  cv::Mat expected_rgb = w.expected_rgb.rowRange(rows), uncertainty = w.uncertainty.rowRange(rows);
+  t.expected.convertTo(expected_rgb, CV_8U);
+  cv::add(*p0[kBeta], *p0[kBeta + 1], t.beta_sum);
+  cv::add(t.beta_sum, *p0[kBeta + 2], uncertainty);
+  if (!uncovered.empty()) {
+    surprise.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
+    expected_rgb.setTo(cv::Scalar::all(0), uncovered);
+    uncertainty.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
+  }
+  // The posterior as the store keeps it.
+  cv::merge(std::vector<cv::Mat>{p1[kAlpha], p1[kBeta], p1[kBeta + 1], p1[kBeta + 2], p1[kSigma],
+                                 p1[kSigma + 1], p1[kSigma + 2]},
+            t.merged7);
+  cv::Mat stored_ab_sigma = w.stored_ab_sigma.rowRange(rows);
+  t.merged7.convertTo(stored_ab_sigma, stored_ab_sigma.depth());
+  cv::Mat stored_tau = w.stored_tau.rowRange(rows);
+  cv::merge(std::vector<cv::Mat>{p1[kTau], p1[kTau + 1], p1[kTau + 2]}, stored_tau);
+}
+
 AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& depth,
                                          const views::PinholeCamera& camera,
                                          const Eigen::Isometry3d& T_world_cam) {
   CheckFrame(rgb, depth, camera, T_world_cam, "AppearanceMap::Insert");
-  const int n = camera.width * camera.height;
+  const int n = camera.width * camera.height, rows = camera.height, cols = camera.width;
   Workspace& w = *work_;
-  color::RgbToYCbCr(rgb, w.ycbcr);
-  cv::split(w.ycbcr, w.x);
-
   // Prior: blended reference parameters; the initial prior where no view covers.
-  ViewBasedMap::Prediction& prior = w.prior;
+  ViewBasedMap::Prediction& prior = w.prediction;
   map_.Predict(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}}, prior);
-  cv::split(prior.value[0], w.ab_sigma);
-  cv::split(prior.value[1], w.tau);
-  std::vector<cv::Mat> p0(kChannels);
-  p0[kAlpha] = w.ab_sigma[0];
-  for (int k = 0; k < 3; ++k) {
-    p0[kBeta + k] = w.ab_sigma[1 + k];
-    p0[kSigma + k] = w.ab_sigma[4 + k];
-    p0[kTau + k] = w.tau[k];
-  }
   const stats::NormalGamma& init = options_.initial_prior;
   const float initial[kChannels] = {
       float(init.alpha), float(init.beta), float(init.beta),  float(init.beta),  float(init.tau),
       float(init.tau),   float(init.tau),  float(init.sigma), float(init.sigma), float(init.sigma)};
-  // Masked writes only where the map has gaps (a static camera has none: 13 passes saved).
-  const bool gaps = cv::countNonZero(prior.valid) < n;
-  const cv::Mat uncovered = gaps ? cv::Mat(~prior.valid) : cv::Mat();
-  if (gaps) {
-    for (int c = 0; c < kChannels; ++c) p0[c].setTo(initial[c], uncovered);
-  }
-
-  // Update and surprise per channel (eq. 4.8-4.21); α is shared by the three channels.
-  std::vector<cv::Mat>& p1 = w.posterior;
-  p1.resize(kChannels);
-  for (cv::Mat& m : p1) m.create(camera.height, camera.width, CV_32FC1);
-  cv::Mat surprise(camera.height, camera.width, CV_32FC1, cv::Scalar(0));
-  stats::ChannelPlanes channels;
-  for (int k = 0; k < 3; ++k) {
-    channels.x.push_back(w.x[k].ptr<float>());
-    channels.prior.push_back({p0[kAlpha].ptr<float>(), p0[kBeta + k].ptr<float>(),
-                              p0[kTau + k].ptr<float>(), p0[kSigma + k].ptr<float>()});
-    channels.posterior.push_back({p1[kAlpha].ptr<float>(), p1[kBeta + k].ptr<float>(),
-                                  p1[kTau + k].ptr<float>(), p1[kSigma + k].ptr<float>()});
-  }
-  stats::UpdateAndAccumulateSurprise(channels, surprise.ptr<float>(), std::size_t(n),
-                                     options_.surprise);
+  std::copy(initial, initial + kChannels, w.initial);
+  w.uncovered = cv::countNonZero(prior.valid) < n ? cv::Mat(~prior.valid) : cv::Mat();
+  w.rgb = &rgb;
+  w.prior = &prior;
+  // New images: the caller and the store keep them.
+  w.surprise = cv::Mat(rows, cols, CV_32FC1);
+  w.expected_rgb = cv::Mat(rows, cols, CV_8UC3);
+  w.uncertainty = cv::Mat(rows, cols, CV_32FC1);
+  w.stored_ab_sigma =
+      cv::Mat(rows, cols, CV_MAKETYPE(options_.half_precision ? CV_16F : CV_32F, 7));
+  w.stored_tau = cv::Mat(rows, cols, CV_32FC3);
+  const int tiles = (rows + kTileRows - 1) / kTileRows;
+  cv::parallel_for_(
+      cv::Range(0, tiles),
+      [&](const cv::Range& r) {
+        TileWork t;
+        for (int i = r.start; i < r.end; ++i)
+          ProcessRows(i * kTileRows, std::min(rows, (i + 1) * kTileRows), t);
+      },
+      std::min(tiles, 4));
 
   AppearanceProducts out;
   out.valid = prior.valid;
   out.selected = prior.selected;
-  out.surprise = surprise;
-  if (gaps) out.surprise.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
-  cv::merge(std::vector<cv::Mat>{p0[kTau], p0[kTau + 1], p0[kTau + 2]}, w.merged_tau);
-  color::YCbCrToRgb(w.merged_tau, w.expected);
-  w.expected.convertTo(out.expected_rgb, CV_8UC3);
-  if (gaps) out.expected_rgb.setTo(cv::Scalar::all(0), uncovered);
-  out.uncertainty = p0[kBeta] + p0[kBeta + 1] + p0[kBeta + 2];
-  if (gaps) out.uncertainty.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
-
-  // The posterior at this viewpoint goes into the map (4.3's update policy): new images, since
-  // the store keeps them.
-  cv::Mat ab_sigma_stored, tau1;
-  cv::merge(std::vector<cv::Mat>{p1[kAlpha], p1[kBeta], p1[kBeta + 1], p1[kBeta + 2], p1[kSigma],
-                                 p1[kSigma + 1], p1[kSigma + 2]},
-            w.merged_ab_sigma);
-  w.merged_ab_sigma.convertTo(ab_sigma_stored, options_.half_precision ? CV_16F : CV_32F);
-  cv::merge(std::vector<cv::Mat>{p1[kTau], p1[kTau + 1], p1[kTau + 2]}, tau1);
-  out.update = map_.Update(camera, T_world_cam, depth,
-                           {{"ab_sigma", ab_sigma_stored}, {"tau", tau1}}, prior.selected);
+  out.surprise = w.surprise;
+  out.expected_rgb = w.expected_rgb;
+  out.uncertainty = w.uncertainty;
+  // The posterior at this viewpoint goes into the map (4.3's update policy).
+  out.update =
+      map_.Update(camera, T_world_cam, depth,
+                  {{"ab_sigma", w.stored_ab_sigma}, {"tau", w.stored_tau}}, prior.selected);
+  w.rgb = nullptr;
+  w.prior = nullptr;
   return out;
 }
 

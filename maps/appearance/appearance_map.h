@@ -65,9 +65,12 @@ class AppearanceMap {
  private:
   AppearanceMapOptions options_;
   ViewBasedMap map_;
-  // Per-frame working images, kept from frame to frame: fresh megabyte buffers every frame cost
-  // more in page faults than the conversions themselves (a third of a static camera's frame).
-  // Nothing in them outlives a call; the products handed out are always new images.
+  struct TileWork;
+  void ProcessRows(int r0, int r1, TileWork& t) const;
+  // A frame runs in row tiles on all cores (ProcessRows): each tile converts its rows of the
+  // frame and of the prior into small planes that stay in cache through the kernel, and writes
+  // its rows of the products and of the posterior to be stored. The workspace holds what the
+  // tiles share; the products handed out and the stored planes are always new images.
   struct Workspace;
   std::unique_ptr<Workspace> work_;
 };

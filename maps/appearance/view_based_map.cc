@@ -34,30 +34,26 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
   return p;
 }
 
-void ViewBasedMap::Predict(const views::PinholeCamera& camera,
-                           const Eigen::Isometry3d& T_world_cam,
-                           const std::vector<std::pair<std::string, int>>& names,
-                           Prediction& p) {
+void ViewBasedMap::Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+                           const std::vector<std::pair<std::string, int>>& names, Prediction& p) {
   p.selected = views::SelectViews(store_.Poses(), camera, T_world_cam, options_.selection);
   p.value.resize(names.size());
   if (p.selected.empty()) {
     for (std::size_t k = 0; k < names.size(); ++k) {
       cv::Mat& m = p.value[k];
-      m.create(camera.height, camera.width, CV_32FC(names[k].second));
-      m.reshape(1).setTo(std::numeric_limits<float>::quiet_NaN());  // Scalar: ≤ 4 channels
+      m = cv::Mat(camera.height, camera.width, CV_32FC(names[k].second));  // never a view's own
+      m.reshape(1).setTo(std::numeric_limits<float>::quiet_NaN());         // Scalar: ≤ 4 channels
     }
     p.valid = cv::Mat::zeros(camera.height, camera.width, CV_8UC1);
     return;
   }
   // A camera exactly at a reference view (a static camera) needs no warp: the view's own
-  // pixels are the prediction, every one of them valid.
+  // planes are the prediction, shared as stored, every pixel valid.
   for (int j : p.selected) {
     const views::ReferenceView& v = store_.view(j);
     if (!SameCamera(v.camera, camera) || !SamePose(v.T_world_cam, T_world_cam)) continue;
     p.selected = {j};
-    for (std::size_t k = 0; k < names.size(); ++k) {
-      v.planes.at(names[k].first).convertTo(p.value[k], CV_32F);
-    }
+    for (std::size_t k = 0; k < names.size(); ++k) p.value[k] = v.planes.at(names[k].first);
     p.valid = cv::Mat(camera.height, camera.width, CV_8UC1, cv::Scalar(255));
     return;
   }

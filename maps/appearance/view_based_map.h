@@ -43,16 +43,19 @@ class ViewBasedMap {
   explicit ViewBasedMap(const ViewBasedMapOptions& options = {});
 
   struct Prediction {
-    std::vector<int> selected;   ///< views used, best for the central ray first
-    std::vector<cv::Mat> value;  ///< per requested plane: CV_32FC(n), NaN where no view covers
-    cv::Mat valid;               ///< CV_8UC1
+    std::vector<int> selected;  ///< views used, best for the central ray first
+    /// Per requested plane: CV_32FC(n), NaN where no view covers. A camera at a view's pose (a
+    /// static camera) gets that view's own planes, shared and in their stored depth (half floats
+    /// possibly): read them, never write into them.
+    std::vector<cv::Mat> value;
+    cv::Mat valid;  ///< CV_8UC1
   };
   /// The planes `names` (with their channel counts) predicted at `T_world_cam`: one warp per
   /// selected view serves every plane. An empty map predicts nothing: all invalid.
   Prediction Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                      const std::vector<std::pair<std::string, int>>& names);
-  /// The same into `out`, whose value planes are reused where their size and type fit (a static
-  /// camera's frame then converts the view's planes without allocating); `valid` is always new.
+  /// The same into `out`; its value planes are replaced, never written into (they may be a
+  /// view's); `valid` is always new.
   void Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                const std::vector<std::pair<std::string, int>>& names, Prediction& out);
 

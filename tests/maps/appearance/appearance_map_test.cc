@@ -156,8 +156,7 @@ Selectivities MeasureChangedRegion(const std::vector<Frame>& clip, const views::
     *v /= std::max(1, r.frames);
   }
   std::printf("%d views; AS surprise %.2f dB, differencing %.2f dB; PAS %.2f / %.2f dB\n",
-              map.store().size(), r.as_surprise, r.as_difference, r.pas_surprise,
-              r.pas_difference);
+              map.store().size(), r.as_surprise, r.as_difference, r.pas_surprise, r.pas_difference);
   return r;
 }
 

@@ -19,13 +19,12 @@ SelectivityRow Row(int frame, const std::string& region, double as_s, double pas
 
 TEST(MeanOver, AveragesTheRegionsFiniteFramesInRange) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<SelectivityRow> rows = {
-      Row(9, "cup", 9, 9, 9, 9),       // before the range
-      Row(10, "cup", 1, 2, 3, 4),      //
-      Row(11, "glass", 7, 7, 7, 7),    // another region
-      Row(12, "cup", nan, 0, 0, 0),    // no measure: left out
-      Row(13, "cup", -3, 0, -1, -2),   //
-      Row(21, "cup", 9, 9, 9, 9)};     // after
+  const std::vector<SelectivityRow> rows = {Row(9, "cup", 9, 9, 9, 9),      // before the range
+                                            Row(10, "cup", 1, 2, 3, 4),     //
+                                            Row(11, "glass", 7, 7, 7, 7),   // another region
+                                            Row(12, "cup", nan, 0, 0, 0),   // no measure: left out
+                                            Row(13, "cup", -3, 0, -1, -2),  //
+                                            Row(21, "cup", 9, 9, 9, 9)};    // after
   const MeanSelectivity m = MeanOver(rows, "cup", 10, 20);
   EXPECT_EQ(m.frames, 2);
   EXPECT_DOUBLE_EQ(m.as_surprise, -1.0);

@@ -1,0 +1,68 @@
+#include "maps/appearance/view_based_map.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace novelty::appearance {
+namespace {
+
+const views::PinholeCamera kCamera = views::PinholeCamera::FromFov(32, 24, 1.0);
+
+// A wall 2 m in front of the camera; the payload plane holds (1, 2, 3) in half floats.
+struct Frame {
+  cv::Mat depth = cv::Mat(24, 32, CV_32FC1, cv::Scalar(2.0f));
+  cv::Mat payload;
+  Frame() { cv::Mat(24, 32, CV_32FC3, cv::Scalar(1, 2, 3)).convertTo(payload, CV_16F); }
+};
+
+Eigen::Isometry3d At(double x, double yaw_deg = 0.0) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation().x() = x;
+  T.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitY()).matrix();
+  return T;
+}
+
+TEST(ViewBasedMap, AStaticCameraReadsItsViewsOwnPlanes) {
+  ViewBasedMap map;
+  const Frame f;
+  map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {});
+  const ViewBasedMap::Prediction p = map.Predict(kCamera, At(0), {{"p", 3}});
+  ASSERT_EQ(p.selected, std::vector<int>{0});
+  EXPECT_EQ(p.value[0].data, map.store().view(0).planes.at("p").data) << "shared, not copied";
+  EXPECT_EQ(p.value[0].type(), CV_16FC3);
+  EXPECT_EQ(cv::countNonZero(p.valid), 32 * 24);
+}
+
+TEST(ViewBasedMap, APredictionReplacesSharedPlanesInsteadOfWritingIntoThem) {
+  ViewBasedMap map;
+  Frame f;
+  cv::Mat(24, 32, CV_32FC3, cv::Scalar(1, 2, 3)).copyTo(f.payload);  // the type of a prediction
+  map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {});
+  ViewBasedMap::Prediction p;
+  map.Predict(kCamera, At(0), {{"p", 3}}, p);       // shares the view's plane
+  map.Predict(kCamera, At(0, 180), {{"p", 3}}, p);  // facing away: nothing to predict
+  EXPECT_TRUE(p.selected.empty());
+  EXPECT_TRUE(std::isnan(p.value[0].at<cv::Vec3f>(5, 5)[0]));
+  EXPECT_EQ(map.store().view(0).planes.at("p").at<cv::Vec3f>(5, 5), cv::Vec3f(1, 2, 3))
+      << "the view's plane must survive";
+}
+
+TEST(ViewBasedMap, FarFramesAddViewsNearOnesReplaceTheSelected) {
+  ViewBasedMapOptions options;
+  options.new_view_distance = 0.1;
+  ViewBasedMap map(options);
+  const Frame f;
+  EXPECT_TRUE(map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {}).added);
+  EXPECT_TRUE(map.Update(kCamera, At(0.2), f.depth, {{"p", f.payload}}, {0}).added);
+  const ViewBasedMap::UpdateResult r =
+      map.Update(kCamera, At(0.05), f.depth, {{"p", f.payload}}, {1});
+  EXPECT_FALSE(r.added);
+  EXPECT_EQ(r.view, 1);  // the selected view, moved to the frame's pose; its anchor stays
+  EXPECT_EQ(map.store().size(), 2);
+  EXPECT_NEAR(map.store().view(1).T_world_cam.translation().x(), 0.05, 1e-12);
+  EXPECT_NEAR(map.anchors()[1].translation().x(), 0.2, 1e-12);
+}
+
+}  // namespace
+}  // namespace novelty::appearance
