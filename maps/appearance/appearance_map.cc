@@ -1,6 +1,7 @@
 #include "maps/appearance/appearance_map.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
@@ -48,7 +49,7 @@ struct AppearanceMap::Workspace {
   const cv::Mat* rgb = nullptr;
   const ViewBasedMap::Prediction* prior = nullptr;
   cv::Mat uncovered;  // empty when the map covers every pixel
-  float initial[kChannels] = {};
+  std::array<float, kChannels> initial = {};
   cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau;
   ViewBasedMap::Prediction prediction;  // the prior of the frame in progress
 };
@@ -138,10 +139,9 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   ViewBasedMap::Prediction& prior = w.prediction;
   map_.Predict(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}}, prior);
   const stats::NormalGamma& init = options_.initial_prior;
-  const float initial[kChannels] = {
-      float(init.alpha), float(init.beta), float(init.beta),  float(init.beta),  float(init.tau),
-      float(init.tau),   float(init.tau),  float(init.sigma), float(init.sigma), float(init.sigma)};
-  std::copy(initial, initial + kChannels, w.initial);
+  const float alpha0 = float(init.alpha), beta0 = float(init.beta), tau0 = float(init.tau),
+              sigma0 = float(init.sigma);
+  w.initial = {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0};  // Channel
   w.uncovered = cv::countNonZero(prior.valid) < n ? cv::Mat(~prior.valid) : cv::Mat();
   w.rgb = &rgb;
   w.prior = &prior;

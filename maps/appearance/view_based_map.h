@@ -28,8 +28,9 @@
 namespace novelty::appearance {
 
 struct ViewBasedMapOptions {
-  /// A frame at least this far (m) from every reference view becomes a new view. 8 mm gives
-  /// about 200 views on the 1.7 m arc Q1 → Q2 of 4.3, the thesis's density.
+  /// A frame at least this far (m) from every reference view becomes a new view. 8 mm makes every
+  /// frame of the first run of 4.3 a view (frames 13 mm apart on the 1.95 m arc Q1 → Q2: 151
+  /// views; the thesis's 200 would need frames 10 mm apart).
   double new_view_distance = 0.008;
   /// … or turned at least this much (rad) from the nearest view's optical axis (5°).
   double new_view_angle = 5.0 * M_PI / 180.0;
