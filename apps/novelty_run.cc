@@ -2,7 +2,7 @@
 //
 //   novelty-run --rawlog DIR/<name>.rawlog --groundtruth DIR/groundtruth --out OUT
 //               [--config share/appearance.ini] [--frames N] [--panels-every K]
-//               [--poses groundtruth|rawlog]
+//               [--poses groundtruth|rawlog] [--compare-views 2,4]
 //
 // Plays the rawlog with ground-truth poses (or, with --poses rawlog, the camera poses that
 // novelty-poses put into it; depth may come from novelty-depth), updates the probabilistic
@@ -11,7 +11,11 @@
 //   OUT/metrics.csv        frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff for every
 //                          changed object in view (regions from the ground-truth novelty masks:
 //                          added objects and the arm by id, "removed" where objects were taken)
-//   OUT/report.html        plots of AS/PAS over frames, a table per object and phase, panels,
+//   OUT/findings.csv       the findings of thesis 4.3, each over the first run after its change,
+//                          with its numbers and whether it holds (fig. 4.13 too with
+//                          --compare-views: maps with sparser reference views run side by side)
+//   OUT/report.html        the findings, plots of AS/PAS over frames, a table per object and
+//                          phase, panels,
 // and the map (OUT/map.appearance_map, or --map-out; --map-in continues from a saved map) with
 // its reference-view frusta as OUT/map.3Dscene for SceneViewer3D.
 // Progress on stderr.
@@ -23,6 +27,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <optional>
@@ -124,6 +129,39 @@ std::string Fmt(double v) {
   return buf;
 }
 
+// "2,4" → {2, 4}; each factor must be ≥ 1.
+std::vector<double> ParseFactors(const std::string& list) {
+  std::vector<double> factors;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');) {
+    std::size_t used = 0;
+    double f = 0.0;
+    try {
+      f = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != item.size() || !(f >= 1.0))
+      throw std::invalid_argument("--compare-views: '" + item + "' is not a factor >= 1");
+    factors.push_back(f);
+  }
+  return factors;
+}
+
+// Maps with reference views `factor` times sparser, run side by side with the main one (fig. 4.13).
+struct SparserMaps {
+  double factor;
+  appearance::AppearanceMap map;
+  appearance::DifferencingMap baseline;
+  std::vector<eval::SelectivityRow> rows;
+  SparserMaps(double f, appearance::AppearanceMapOptions options)
+      : factor(f), map(Sparser(options, f)), baseline(Sparser(options, f).views) {}
+  static appearance::AppearanceMapOptions Sparser(appearance::AppearanceMapOptions o, double f) {
+    o.views.new_view_distance *= f;
+    return o;
+  }
+};
+
 // The findings of thesis 4.3 for the glass-and-cup scenario, each read over the first run of its
 // phase (Q1 → Q2, found from the true camera positions). Phases or regions a sequence lacks are
 // left out.
@@ -153,9 +191,19 @@ std::vector<eval::Finding> ThesisFindings(const std::vector<Phase>& phases,
   return findings;
 }
 
+// Frames and the four means; the means blank when no frame showed the region.
 std::vector<std::string> MeanCells(const eval::MeanSelectivity& m) {
+  if (m.frames == 0) return {"0", "", "", "", ""};
   return {std::to_string(m.frames), Fmt(m.as_surprise), Fmt(m.as_difference), Fmt(m.pas_surprise),
           Fmt(m.pas_difference)};
+}
+
+std::string HoldsCell(bool holds, int frames) {
+  return frames == 0 ? "no frames" : holds ? "yes" : "no";
+}
+
+const char* HoldsText(bool holds, int frames) {
+  return frames == 0 ? "no frames" : holds ? "holds" : "does NOT hold";
 }
 
 // OUT/findings.csv and a table in the report: each finding with its numbers and whether it holds.
@@ -170,28 +218,71 @@ void ReportFindings(const std::string& out, const std::vector<eval::SelectivityR
     const std::string frames = std::to_string(f.first) + "–" + std::to_string(f.last);
     std::vector<std::string> line = {f.what, frames};
     for (const std::string& cell : MeanCells(r.mean)) line.push_back(cell);
-    line.push_back(r.holds ? "yes" : "no");
+    line.push_back(HoldsCell(r.holds, r.mean.frames));
     table.push_back(line);
     csv << '"' << f.what << "\"," << f.region << "," << f.first << "," << f.last;
     for (const std::string& cell : MeanCells(r.mean)) csv << "," << cell;
-    csv << "," << (r.holds ? "yes" : "no") << "\n";
+    csv << "," << HoldsCell(r.holds, r.mean.frames) << "\n";
     std::printf("  %-78s %s (AS %s vs %s dB, PAS %s vs %s dB, frames %s)\n", f.what.c_str(),
-                r.holds ? "holds" : "does NOT hold", Fmt(r.mean.as_surprise).c_str(),
+                HoldsText(r.holds, r.mean.frames), Fmt(r.mean.as_surprise).c_str(),
                 Fmt(r.mean.as_difference).c_str(), Fmt(r.mean.pas_surprise).c_str(),
                 Fmt(r.mean.pas_difference).c_str(), frames.c_str());
   }
   report.Heading("Findings of thesis 4.3, over the first run after each change");
   report.Paragraph(
       "Means over the frames of the first run (Q1 to Q2) of each phase that show the region; "
-      "surprise / differencing. The effect of fewer reference views (fig. 4.13) needs runs with "
-      "--view-reduction 2 and 4: compare their findings.csv.");
+      "surprise / differencing.");
   report.Table({"finding", "frames", "frames with region", "AS surprise", "AS differencing",
                 "PAS surprise", "PAS differencing", "holds"},
                table);
 }
 
+// Fig. 4.13: each finding's region with sparser reference views (--compare-views), appended to
+// findings.csv; the claim is that surprise's PAS falls less than differencing's.
+void ReportSparser(const std::string& out, const std::vector<eval::SelectivityRow>& rows, int views,
+                   const std::vector<std::unique_ptr<SparserMaps>>& sparser,
+                   const std::vector<eval::Finding>& findings, eval::HtmlReport& report) {
+  if (sparser.empty()) return;
+  std::ofstream csv(out + "/findings.csv", std::ios::app);
+  std::vector<std::vector<std::string>> table;
+  for (const eval::Finding& f : findings) {
+    const eval::MeanSelectivity full = eval::Evaluate(rows, f).mean;
+    table.push_back({f.region, "F", std::to_string(views), Fmt(full.pas_surprise),
+                     Fmt(full.pas_difference), "", ""});
+    for (const auto& s : sparser) {
+      const eval::MeanSelectivity m = eval::Evaluate(s->rows, f).mean;
+      const bool holds = eval::SurpriseLosesLess(full, m);
+      char name_buf[32];
+      std::snprintf(name_buf, sizeof name_buf, "R%g", s->factor);  // the thesis's R2, R4
+      const std::string name = name_buf;
+      table.push_back({f.region, name, std::to_string(s->map.store().size()), Fmt(m.pas_surprise),
+                       Fmt(m.pas_difference),
+                       Fmt(full.pas_surprise - m.pas_surprise) + " / " +
+                           Fmt(full.pas_difference - m.pas_difference),
+                       HoldsCell(holds, m.frames)});
+      csv << "\"" << f.region << ", " << name
+          << ": surprise loses less PAS than differencing (fig. 4.13)\"," << f.region << ","
+          << f.first << "," << f.last;
+      for (const std::string& cell : MeanCells(m)) csv << "," << cell;
+      csv << "," << HoldsCell(holds, m.frames) << "\n";
+      std::printf("  %-78s %s (PAS loss %s vs %s dB, %d views)\n",
+                  (f.region + ", " + name + ": surprise loses less PAS (fig. 4.13)").c_str(),
+                  HoldsText(holds, m.frames), Fmt(full.pas_surprise - m.pas_surprise).c_str(),
+                  Fmt(full.pas_difference - m.pas_difference).c_str(), s->map.store().size());
+    }
+  }
+  report.Heading("Fewer reference views (fig. 4.13)");
+  report.Paragraph(
+      "The same frames with reference views spaced N times wider (RN), over each finding's "
+      "first run. The thesis: surprise keeps more of its peak selectivity than differencing.");
+  report.Table({"region", "views", "reference views", "PAS surprise", "PAS differencing",
+                "PAS loss surprise / differencing", "surprise loses less"},
+               table);
+}
+
 void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>& rows,
                  const std::vector<Phase>& phases, const std::vector<eval::Finding>& findings,
+                 const std::vector<std::unique_ptr<SparserMaps>>& sparser,
                  const std::vector<int>& panel_frames, int frames, double seconds, int views) {
   eval::HtmlReport report("NoveltyMaps — Bayesian surprise vs image differencing");
   char summary[256];
@@ -200,6 +291,7 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
                 frames, seconds, frames / seconds, views);
   report.Paragraph(summary);
   ReportFindings(out, rows, findings, report);
+  ReportSparser(out, rows, views, sparser, findings, report);
   std::vector<eval::PlotBand> bands;
   for (const Phase& p : phases) bands.push_back({double(p.first), double(p.last), p.name});
   std::set<std::string> regions;
@@ -271,6 +363,11 @@ int main(int argc, char** argv) {
                                     "Space reference views N times wider than configured: the "
                                     "thesis's R2 and R4 experiments (fig. 4.13) use 2 and 4",
                                     false, 1.0, "N", cmd);
+  TCLAP::ValueArg<std::string> compare_views(
+      "", "compare-views",
+      "Also run maps with reference views N times sparser, side by side, e.g. 2,4 (fig. 4.13's "
+      "R2 and R4); the report compares each finding's peak selectivity",
+      false, "", "N,M", cmd);
   try {
     cmd.parse(argc, argv);
     appearance::AppearanceMapOptions options =
@@ -288,6 +385,9 @@ int main(int argc, char** argv) {
     mrpt_plugins::CAppearanceMap map(options);
     if (map_in.isSet()) map.LoadFromFile(map_in.getValue());  // its options come with it
     appearance::DifferencingMap baseline(options.views);
+    std::vector<std::unique_ptr<SparserMaps>> sparser;
+    for (const double factor : ParseFactors(compare_views.getValue()))
+      sparser.push_back(std::make_unique<SparserMaps>(factor, options));
     std::ofstream csv(dir + "/metrics.csv");
     csv << "frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff\n";
     std::vector<eval::SelectivityRow> rows;
@@ -307,6 +407,11 @@ int main(int argc, char** argv) {
       }
       const appearance::AppearanceProducts& p = map.InsertFrame(f.rgb, f.depth, f.camera, *pose);
       const appearance::DifferencingProducts d = baseline.Insert(f.rgb, f.depth, f.camera, *pose);
+      std::vector<std::pair<cv::Mat, cv::Mat>> sparse_maps;  // surprise, difference
+      for (const auto& s : sparser) {
+        sparse_maps.emplace_back(s->map.Insert(f.rgb, f.depth, f.camera, *pose).surprise,
+                                 s->baseline.Insert(f.rgb, f.depth, f.camera, *pose).difference);
+      }
       ++frames;
       const std::string stem = Stem(f.index);
       const cv::Mat novelty = cv::imread(gt + "/novelty/" + stem + ".png", cv::IMREAD_UNCHANGED);
@@ -320,6 +425,11 @@ int main(int argc, char** argv) {
               << Fmt(r.surprise.as_db) << "," << Fmt(r.surprise.pas_db) << ","
               << Fmt(r.difference.as_db) << "," << Fmt(r.difference.pas_db) << "\n";
           rows.push_back(r);
+          for (std::size_t k = 0; k < sparser.size(); ++k) {
+            sparser[k]->rows.push_back(
+                {f.index, object, eval::AttentionalSelectivity(sparse_maps[k].first, region),
+                 eval::AttentionalSelectivity(sparse_maps[k].second, region)});
+          }
         }
       }
       if (f.index % panels_every.getValue() == 0) {
@@ -341,8 +451,8 @@ int main(int argc, char** argv) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(
         "Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");
-    WriteReport(dir, rows, phases, ThesisFindings(phases, poses), panel_frames, frames, seconds,
-                map.map().store().size());
+    WriteReport(dir, rows, phases, ThesisFindings(phases, poses), sparser, panel_frames, frames,
+                seconds, map.map().store().size());
     const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";
     map.SaveToFile(saved);
     map.SaveSceneFile(dir + "/map.3Dscene");  // for SceneViewer3D

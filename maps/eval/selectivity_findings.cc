@@ -45,4 +45,9 @@ FindingResult Evaluate(const std::vector<SelectivityRow>& rows, const Finding& f
   return r;
 }
 
+bool SurpriseLosesLess(const MeanSelectivity& full, const MeanSelectivity& sparse) {
+  if (full.frames == 0 || sparse.frames == 0) return false;
+  return full.pas_surprise - sparse.pas_surprise < full.pas_difference - sparse.pas_difference;
+}
+
 }  // namespace novelty::eval

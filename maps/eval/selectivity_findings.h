@@ -47,4 +47,8 @@ struct FindingResult {
 
 FindingResult Evaluate(const std::vector<SelectivityRow>& rows, const Finding& finding);
 
+/// Fig. 4.13: with sparser reference views surprise keeps more of its peak selectivity — its PAS
+/// falls less than differencing's from `full` to `sparse` (false when either has no frame).
+bool SurpriseLosesLess(const MeanSelectivity& full, const MeanSelectivity& sparse);
+
 }  // namespace novelty::eval

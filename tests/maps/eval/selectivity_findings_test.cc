@@ -52,5 +52,17 @@ TEST(Evaluate, DecidesEachClaimFromTheMeans) {
   EXPECT_DOUBLE_EQ(r.mean.as_difference, 1.8);
 }
 
+TEST(SurpriseLosesLess, ComparesTheDropsOfPeakSelectivity) {
+  MeanSelectivity full, half;
+  full.frames = half.frames = 10;
+  full.pas_surprise = 4.2, full.pas_difference = 2.6;
+  half.pas_surprise = 3.8, half.pas_difference = 0.3;  // drops 0.4 against 2.3 dB
+  EXPECT_TRUE(SurpriseLosesLess(full, half));
+  half.pas_surprise = 1.0;  // drops 3.2 dB
+  EXPECT_FALSE(SurpriseLosesLess(full, half));
+  half.frames = 0;
+  EXPECT_FALSE(SurpriseLosesLess(full, half));
+}
+
 }  // namespace
 }  // namespace novelty::eval
