@@ -184,18 +184,23 @@ int main(int argc, char** argv) {
     output.ShareImagesOf(in.getValue());
     int cameras = 0, posed = 0;
     std::vector<std::string> reasons;
+    // Every camera time (a rig's images share one) with its pose, if it got one: in time order
+    // they are the frames 1, 2, … of novelty-sim's ground truth.
+    std::map<double, std::optional<Eigen::Isometry3d>> frame_poses;
     while (const auto obj = input.Next()) {
       if (const auto mount = CameraMount(*obj)) {
         ++cameras;
         const auto& o = dynamic_cast<const mrpt::obs::CObservation&>(*obj);
         std::string why;
         const double t = mrpt::Clock::toDouble(o.timestamp);
-        if (const auto pose = pose_at(t, &why)) {
+        const auto pose = pose_at(t, &why);
+        if (pose) {
           output.Write(sensors::MakeCameraPoseObservation(t, *pose, *mount, label, 0.001, 0.003));
           ++posed;
         } else {
           reasons.push_back(why);
         }
+        frame_poses.emplace(t, pose);
       }
       output.Write(*obj);
     }
@@ -209,14 +214,10 @@ int main(int argc, char** argv) {
     if (truth.isSet()) {  // pose error per frame against novelty-sim's ground truth
       const auto gt = sensors::LoadGroundTruthPoses(truth.getValue() + "/poses.csv");
       std::vector<std::pair<int, Eigen::Isometry3d>> estimated;  // frame index, pose
-      if (visual) {  // rig frames in time order are frames 1, 2, … (none are lost here)
-        int index = 0;
-        for (const auto& [t, pose] : visual_poses) estimated.emplace_back(++index, pose);
-        if (rejected > 0) estimated.clear();  // indices would not match; skip the report
-      } else {
-        sensors::RawlogFrameReader reader(output.path());
-        for (sensors::Frame f; reader.Next(f);)
-          if (f.pose) estimated.emplace_back(f.index, *f.pose);
+      int frame = 0;
+      for (const auto& [t, pose] : frame_poses) {
+        ++frame;
+        if (pose) estimated.emplace_back(frame, *pose);
       }
       std::vector<double> angle, shift;
       for (const auto& [index, pose] : estimated) {
