@@ -1,7 +1,7 @@
 // The first run of a phase (thesis 4.3, table 4.1): every phase starts with the robot at Q1, where
 // the scene was changed; it drives to Q2 and back. The first run — Q1 to Q2, until every
 // reference view on the path has been passed once since the change — is where the findings of
-// 4.3 are read (e.g. the glass, frames 340–520: fig. 4.8–4.9).
+// 4.3 are read (in the thesis, the glass: frames 340–520, fig. 4.8–4.9).
 #pragma once
 
 #include <Eigen/Core>

@@ -125,9 +125,8 @@ TEST(AppearanceMap, LearnsTheSceneAndIsSurprisedByTheNewCup) {
 }
 
 // Mean AS and PAS (dB) of a changed region between `after` and `before` seconds, over the frames
-// that show it,
-// for Bayesian surprise and for differencing. The region is where the ground-truth novelty mask
-// has `mask_value`: 255 for added objects, 128 where removed ones were.
+// that show it, for Bayesian surprise and for differencing. The region is where the ground-truth
+// novelty mask has `mask_value`: 255 for added objects, 128 where removed ones were.
 struct Selectivities {
   double as_surprise = 0, as_difference = 0, pas_surprise = 0, pas_difference = 0;
   int frames = 0;
@@ -189,8 +188,9 @@ TEST(AppearanceMap, FewerReferenceViewsHurtSurpriseLessThanDifferencing) {
 // Thesis fig. 4.9: for the glass, Bayesian surprise gives a higher AS and PAS than differencing,
 // whose differences at object edges (pose and interpolation errors) and at the tin plate's
 // moving highlights compete with the faint glass. Measured on this clip: AS −1.06 against
-// −1.19 dB (a thin margin: the direction is asserted), PAS 3.34 against 2.58 dB; on the whole
-// glass-and-cup sequence novelty-run measures AS −0.8 dB (surprise) against −2.5 dB.
+// −1.19 dB (a thin margin: the direction is asserted), PAS 3.34 against 2.58 dB; over the
+// glass's first run in the glass-and-cup sequence novelty-run measures AS 0.41 dB (surprise)
+// against −0.67 dB.
 TEST(AppearanceMap, SurpriseSingsOutTheGlassBetterThanDifferencing) {
   std::printf("glass: ");
   const Selectivities s = MeasureChangedRegion(
