@@ -31,65 +31,57 @@ void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCa
 
 namespace {
 
+constexpr int kChannels = AppearanceMap::kChannels, kAlpha = AppearanceMap::kAlpha,
+              kBeta = AppearanceMap::kBeta, kTau = AppearanceMap::kTau,
+              kSigma = AppearanceMap::kSigma;
+
 // A frame is processed in tiles of this many rows, on all cores: each tile's working planes
 // (about 30 of 320 floats per row) stay in cache from the colour conversion through the kernel
 // to the stored posterior.
 constexpr int kTileRows = 8;
 
-}  // namespace
+// One frame: what every tile reads, and the new images (handed out, or kept by the store) that
+// each tile writes its rows of.
+struct FrameRows {
+  const cv::Mat& rgb;
+  const ViewBasedMap::Prediction& prior;
+  cv::Mat uncovered;                     // empty when the map covers every pixel
+  std::array<float, kChannels> initial;  // the initial prior, in Channel order
+  cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau;
+};
 
 // Working planes of one tile, reused for the tiles one task processes.
-struct AppearanceMap::TileWork {
-  cv::Mat ycbcr, prior7, prior3, merged7, merged3, expected, beta_sum;
+struct TileWork {
+  cv::Mat ycbcr, prior_float, merged7, merged3, expected, beta_sum;
   std::vector<cv::Mat> x, ab_sigma, tau, posterior;
 };
 
-// The frame's shared inputs and outputs: what every tile reads and writes its rows of.
-struct AppearanceMap::Workspace {
-  const cv::Mat* rgb = nullptr;
-  const ViewBasedMap::Prediction* prior = nullptr;
-  cv::Mat uncovered;  // empty when the map covers every pixel
-  std::array<float, kChannels> initial = {};
-  cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau;
-  ViewBasedMap::Prediction prediction;  // the prior of the frame in progress
-};
-
-AppearanceMap::~AppearanceMap() = default;
-
-AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
-    : options_(options), map_(options.views), work_(std::make_unique<Workspace>()) {
-  options_.surprise.update.Check();
-  stats::CheckNormalGamma(options_.initial_prior, "AppearanceMapOptions::initial_prior");
+// Rows of an interleaved prediction as float planes: split in place when float, converted into
+// `scratch` first when half floats (a static camera reads its view's stored planes directly).
+void SplitAsFloat(const cv::Mat& rows, cv::Mat& scratch, std::vector<cv::Mat>& planes) {
+  if (rows.depth() == CV_32F) {
+    cv::split(rows, planes);
+    return;
+  }
+  rows.convertTo(scratch, CV_32F);
+  cv::split(scratch, planes);
 }
 
 // Rows [r0, r1): prior planes from the prediction, update and surprise (eq. 4.8-4.21; α is shared
 // by the three channels), and the rows of every product and of the posterior to be stored.
-void AppearanceMap::ProcessRows(int r0, int r1, TileWork& t) const {
-  const Workspace& w = *work_;
+void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options, int r0, int r1,
+                 TileWork& t) {
   const cv::Range rows(r0, r1);
-  color::RgbToYCbCr((*w.rgb).rowRange(rows), t.ycbcr);
+  color::RgbToYCbCr(f.rgb.rowRange(rows), t.ycbcr);
   cv::split(t.ycbcr, t.x);
-  // The prediction is float, or half floats where a static camera reads its view directly.
-  const cv::Mat& ab_sigma = w.prior->value[0];
-  const cv::Mat& tau = w.prior->value[1];
-  if (ab_sigma.depth() == CV_32F) {
-    cv::split(ab_sigma.rowRange(rows), t.ab_sigma);
-  } else {
-    ab_sigma.rowRange(rows).convertTo(t.prior7, CV_32F);
-    cv::split(t.prior7, t.ab_sigma);
-  }
-  if (tau.depth() == CV_32F) {
-    cv::split(tau.rowRange(rows), t.tau);
-  } else {
-    tau.rowRange(rows).convertTo(t.prior3, CV_32F);
-    cv::split(t.prior3, t.tau);
-  }
+  SplitAsFloat(f.prior.value[0].rowRange(rows), t.prior_float, t.ab_sigma);
+  SplitAsFloat(f.prior.value[1].rowRange(rows), t.prior_float, t.tau);
   cv::Mat* const p0[kChannels] = {&t.ab_sigma[0], &t.ab_sigma[1], &t.ab_sigma[2], &t.ab_sigma[3],
                                   &t.tau[0],      &t.tau[1],      &t.tau[2],      &t.ab_sigma[4],
                                   &t.ab_sigma[5], &t.ab_sigma[6]};
-  const cv::Mat uncovered = w.uncovered.empty() ? cv::Mat() : w.uncovered.rowRange(rows);
+  const cv::Mat uncovered = f.uncovered.empty() ? cv::Mat() : f.uncovered.rowRange(rows);
   if (!uncovered.empty()) {  // the initial prior where no view covers (a static camera: never)
-    for (int c = 0; c < kChannels; ++c) p0[c]->setTo(w.initial[c], uncovered);
+    for (int c = 0; c < kChannels; ++c) p0[c]->setTo(f.initial[std::size_t(c)], uncovered);
   }
   t.posterior.resize(kChannels);
   for (cv::Mat& m : t.posterior) m.create(r1 - r0, t.ycbcr.cols, CV_32FC1);
@@ -102,15 +94,14 @@ void AppearanceMap::ProcessRows(int r0, int r1, TileWork& t) const {
     channels.posterior.push_back({p1[kAlpha].ptr<float>(), p1[kBeta + k].ptr<float>(),
                                   p1[kTau + k].ptr<float>(), p1[kSigma + k].ptr<float>()});
   }
-  cv::Mat surprise = w.surprise.rowRange(rows);
+  cv::Mat surprise = f.surprise.rowRange(rows);
   surprise.setTo(0.0f);
-  stats::UpdateAndAccumulateSurprise(channels, surprise.ptr<float>(), surprise.total(),
-                                     options_.surprise);
+  stats::UpdateAndAccumulateSurprise(channels, surprise.ptr<float>(), surprise.total(), options);
 
   // Products: the prior's τ in RGB, its Σβ; NaN or black where not covered.
   cv::merge(std::vector<cv::Mat>{*p0[kTau], *p0[kTau + 1], *p0[kTau + 2]}, t.merged3);
   color::YCbCrToRgb(t.merged3, t.expected);
-  cv::Mat expected_rgb = w.expected_rgb.rowRange(rows), uncertainty = w.uncertainty.rowRange(rows);
+  cv::Mat expected_rgb = f.expected_rgb.rowRange(rows), uncertainty = f.uncertainty.rowRange(rows);
   t.expected.convertTo(expected_rgb, CV_8U);
   cv::add(*p0[kBeta], *p0[kBeta + 1], t.beta_sum);
   cv::add(t.beta_sum, *p0[kBeta + 2], uncertainty);
@@ -123,57 +114,60 @@ void AppearanceMap::ProcessRows(int r0, int r1, TileWork& t) const {
   cv::merge(std::vector<cv::Mat>{p1[kAlpha], p1[kBeta], p1[kBeta + 1], p1[kBeta + 2], p1[kSigma],
                                  p1[kSigma + 1], p1[kSigma + 2]},
             t.merged7);
-  cv::Mat stored_ab_sigma = w.stored_ab_sigma.rowRange(rows);
+  cv::Mat stored_ab_sigma = f.stored_ab_sigma.rowRange(rows);
   t.merged7.convertTo(stored_ab_sigma, stored_ab_sigma.depth());
-  cv::Mat stored_tau = w.stored_tau.rowRange(rows);
+  cv::Mat stored_tau = f.stored_tau.rowRange(rows);
   cv::merge(std::vector<cv::Mat>{p1[kTau], p1[kTau + 1], p1[kTau + 2]}, stored_tau);
+}
+
+}  // namespace
+
+AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
+    : options_(options), map_(options.views) {
+  options_.surprise.update.Check();
+  stats::CheckNormalGamma(options_.initial_prior, "AppearanceMapOptions::initial_prior");
 }
 
 AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& depth,
                                          const views::PinholeCamera& camera,
                                          const Eigen::Isometry3d& T_world_cam) {
   CheckFrame(rgb, depth, camera, T_world_cam, "AppearanceMap::Insert");
-  const int n = camera.width * camera.height, rows = camera.height, cols = camera.width;
-  Workspace& w = *work_;
+  const int rows = camera.height, cols = camera.width;
   // Prior: blended reference parameters; the initial prior where no view covers.
-  ViewBasedMap::Prediction& prior = w.prediction;
-  map_.Predict(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}}, prior);
+  const ViewBasedMap::Prediction prior =
+      map_.Predict(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}});
   const stats::NormalGamma& init = options_.initial_prior;
   const float alpha0 = float(init.alpha), beta0 = float(init.beta), tau0 = float(init.tau),
               sigma0 = float(init.sigma);
-  w.initial = {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0};  // Channel
-  w.uncovered = cv::countNonZero(prior.valid) < n ? cv::Mat(~prior.valid) : cv::Mat();
-  w.rgb = &rgb;
-  w.prior = &prior;
-  // New images: the caller and the store keep them.
-  w.surprise = cv::Mat(rows, cols, CV_32FC1);
-  w.expected_rgb = cv::Mat(rows, cols, CV_8UC3);
-  w.uncertainty = cv::Mat(rows, cols, CV_32FC1);
-  w.stored_ab_sigma =
-      cv::Mat(rows, cols, CV_MAKETYPE(options_.half_precision ? CV_16F : CV_32F, 7));
-  w.stored_tau = cv::Mat(rows, cols, CV_32FC3);
+  const FrameRows f{rgb,
+                    prior,
+                    cv::countNonZero(prior.valid) < rows * cols ? cv::Mat(~prior.valid) : cv::Mat(),
+                    {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0},
+                    cv::Mat(rows, cols, CV_32FC1),
+                    cv::Mat(rows, cols, CV_8UC3),
+                    cv::Mat(rows, cols, CV_32FC1),
+                    cv::Mat(rows, cols, CV_MAKETYPE(options_.half_precision ? CV_16F : CV_32F, 7)),
+                    cv::Mat(rows, cols, CV_32FC3)};
   const int tiles = (rows + kTileRows - 1) / kTileRows;
   cv::parallel_for_(
       cv::Range(0, tiles),
       [&](const cv::Range& r) {
         TileWork t;
         for (int i = r.start; i < r.end; ++i)
-          ProcessRows(i * kTileRows, std::min(rows, (i + 1) * kTileRows), t);
+          ProcessRows(f, options_.surprise, i * kTileRows, std::min(rows, (i + 1) * kTileRows), t);
       },
       std::min(tiles, 4));
 
   AppearanceProducts out;
   out.valid = prior.valid;
   out.selected = prior.selected;
-  out.surprise = w.surprise;
-  out.expected_rgb = w.expected_rgb;
-  out.uncertainty = w.uncertainty;
+  out.surprise = f.surprise;
+  out.expected_rgb = f.expected_rgb;
+  out.uncertainty = f.uncertainty;
   // The posterior at this viewpoint goes into the map (4.3's update policy).
   out.update =
       map_.Update(camera, T_world_cam, depth,
-                  {{"ab_sigma", w.stored_ab_sigma}, {"tau", w.stored_tau}}, prior.selected);
-  w.rgb = nullptr;
-  w.prior = nullptr;
+                  {{"ab_sigma", f.stored_ab_sigma}, {"tau", f.stored_tau}}, prior.selected);
   return out;
 }
 

@@ -15,7 +15,6 @@
 #pragma once
 
 #include <Eigen/Geometry>
-#include <memory>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -43,7 +42,6 @@ struct AppearanceProducts {
 class AppearanceMap {
  public:
   explicit AppearanceMap(const AppearanceMapOptions& options = {});
-  ~AppearanceMap();
 
   /// Processes one frame: rgb CV_8UC3 (R, G, B) and depth CV_32FC1 (m) of `camera`'s size, pose
   /// T_world_cam. Throws std::invalid_argument naming the problem (sizes, types, pose); the map
@@ -63,16 +61,11 @@ class AppearanceMap {
   enum Channel { kAlpha = 0, kBeta = 1, kTau = 4, kSigma = 7, kChannels = 10 };
 
  private:
+  // A frame runs in row tiles on all cores (appearance_map.cc): each tile converts its rows of
+  // the frame and of the prior into small planes that stay in cache through the kernel, and
+  // writes its rows of the products and of the posterior to be stored, always new images.
   AppearanceMapOptions options_;
   ViewBasedMap map_;
-  struct TileWork;
-  void ProcessRows(int r0, int r1, TileWork& t) const;
-  // A frame runs in row tiles on all cores (ProcessRows): each tile converts its rows of the
-  // frame and of the prior into small planes that stay in cache through the kernel, and writes
-  // its rows of the products and of the posterior to be stored. The workspace holds what the
-  // tiles share; the products handed out and the stored planes are always new images.
-  struct Workspace;
-  std::unique_ptr<Workspace> work_;
 };
 
 /// Throws std::invalid_argument unless rgb is CV_8UC3 and depth CV_32FC1, both of the camera's

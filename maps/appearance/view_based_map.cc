@@ -30,22 +30,16 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
     const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
     const std::vector<std::pair<std::string, int>>& names) {
   Prediction p;
-  Predict(camera, T_world_cam, names, p);
-  return p;
-}
-
-void ViewBasedMap::Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
-                           const std::vector<std::pair<std::string, int>>& names, Prediction& p) {
   p.selected = views::SelectViews(store_.Poses(), camera, T_world_cam, options_.selection);
   p.value.resize(names.size());
   if (p.selected.empty()) {
     for (std::size_t k = 0; k < names.size(); ++k) {
       cv::Mat& m = p.value[k];
-      m = cv::Mat(camera.height, camera.width, CV_32FC(names[k].second));  // never a view's own
-      m.reshape(1).setTo(std::numeric_limits<float>::quiet_NaN());         // Scalar: ≤ 4 channels
+      m.create(camera.height, camera.width, CV_32FC(names[k].second));
+      m.reshape(1).setTo(std::numeric_limits<float>::quiet_NaN());  // Scalar: ≤ 4 channels
     }
     p.valid = cv::Mat::zeros(camera.height, camera.width, CV_8UC1);
-    return;
+    return p;
   }
   // A camera exactly at a reference view (a static camera) needs no warp: the view's own
   // planes are the prediction, shared as stored, every pixel valid.
@@ -55,7 +49,7 @@ void ViewBasedMap::Predict(const views::PinholeCamera& camera, const Eigen::Isom
     p.selected = {j};
     for (std::size_t k = 0; k < names.size(); ++k) p.value[k] = v.planes.at(names[k].first);
     p.valid = cv::Mat(camera.height, camera.width, CV_8UC1, cv::Scalar(255));
-    return;
+    return p;
   }
   std::vector<views::SourceView> sources;
   for (int j : p.selected) {
@@ -72,6 +66,7 @@ void ViewBasedMap::Predict(const views::PinholeCamera& camera, const Eigen::Isom
     p.value[k] = std::move(b.value);
     p.valid = std::move(b.valid);  // the same for every plane: it depends on the warps only
   }
+  return p;
 }
 
 void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,

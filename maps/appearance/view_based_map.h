@@ -55,10 +55,6 @@ class ViewBasedMap {
   /// selected view serves every plane. An empty map predicts nothing: all invalid.
   Prediction Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                      const std::vector<std::pair<std::string, int>>& names);
-  /// The same into `out`; its value planes are replaced, never written into (they may be a
-  /// view's); `valid` is always new.
-  void Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
-               const std::vector<std::pair<std::string, int>>& names, Prediction& out);
 
   struct UpdateResult {
     bool added = false;

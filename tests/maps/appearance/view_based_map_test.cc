@@ -34,14 +34,14 @@ TEST(ViewBasedMap, AStaticCameraReadsItsViewsOwnPlanes) {
   EXPECT_EQ(cv::countNonZero(p.valid), 32 * 24);
 }
 
-TEST(ViewBasedMap, APredictionReplacesSharedPlanesInsteadOfWritingIntoThem) {
+TEST(ViewBasedMap, APredictionNeverWritesIntoAViewsPlanes) {
   ViewBasedMap map;
   Frame f;
   cv::Mat(24, 32, CV_32FC3, cv::Scalar(1, 2, 3)).copyTo(f.payload);  // the type of a prediction
   map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {});
-  ViewBasedMap::Prediction p;
-  map.Predict(kCamera, At(0), {{"p", 3}}, p);       // shares the view's plane
-  map.Predict(kCamera, At(0, 180), {{"p", 3}}, p);  // facing away: nothing to predict
+  const ViewBasedMap::Prediction shared = map.Predict(kCamera, At(0), {{"p", 3}});
+  ASSERT_EQ(shared.value[0].data, map.store().view(0).planes.at("p").data);
+  const ViewBasedMap::Prediction p = map.Predict(kCamera, At(0, 180), {{"p", 3}});  // facing away
   EXPECT_TRUE(p.selected.empty());
   EXPECT_TRUE(std::isnan(p.value[0].at<cv::Vec3f>(5, 5)[0]));
   EXPECT_EQ(map.store().view(0).planes.at("p").at<cv::Vec3f>(5, 5), cv::Vec3f(1, 2, 3))
