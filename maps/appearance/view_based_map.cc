@@ -6,8 +6,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "maps/views/planar_blocks.h"
-
 namespace novelty::appearance {
 
 namespace {
@@ -55,7 +53,7 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
   for (int j : p.selected) {
     const views::ReferenceView& v = store_.view(j);
     cv::Mat& flags = planar_blocks_[std::size_t(j)];
-    if (flags.empty()) flags = PlanarBlocks(v.depth);  // when the view is first warped
+    if (flags.empty()) flags = views::PlanarBlocksFor(v.depth, options_.warp);  // first warp
     sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &flags});
   }
   warper_.WarpMany(sources, camera, T_world_cam, warps_);
@@ -78,18 +76,12 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
   views::ReferenceViewStore store;
   std::vector<cv::Mat> planar_blocks;  // found now: a loaded map's views are meant to be warped
   for (views::ReferenceView& v : views) {
-    planar_blocks.push_back(PlanarBlocks(v.depth));
-    store.Add(std::move(v));  // checks every view
+    const int added = store.Add(std::move(v));  // checks every view
+    planar_blocks.push_back(views::PlanarBlocksFor(store.view(added).depth, options_.warp));
   }
   store_ = std::move(store);
   anchors_ = std::move(anchors);
   planar_blocks_ = std::move(planar_blocks);
-}
-
-cv::Mat ViewBasedMap::PlanarBlocks(const cv::Mat& depth) const {
-  const views::WarpOptions& o = options_.warp;
-  if (o.planar_block <= 0 || depth.type() != CV_32FC1) return cv::Mat();
-  return views::FindPlanarBlocks(depth, o.planar_block, o.planar_tolerance);
 }
 
 ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& camera,

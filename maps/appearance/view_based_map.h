@@ -79,7 +79,6 @@ class ViewBasedMap {
   // Per view, for the warper: found when a view is loaded or first warped, dropped when it is
   // replaced (a static camera replaces its view every frame and never warps it).
   std::vector<cv::Mat> planar_blocks_;
-  cv::Mat PlanarBlocks(const cv::Mat& depth) const;
   views::DepthMeshWarper warper_;
   std::vector<views::WarpField> warps_;  // reused from frame to frame
 };

@@ -89,9 +89,17 @@ void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, co
   // R · K⁻¹ (u, v, 1) is affine in u and v: a·u + b·v + c.
   const Eigen::Vector3f a = R.col(0) / float(src.fx), b = R.col(1) / float(src.fy);
   const Eigen::Vector3f c = R.col(2) - a * float(src.cx) - b * float(src.cy);
-  const Projection project{a.x(),          a.y(),          a.z(),          t.x(),
-                           t.y(),          t.z(),          float(dst.fx),  float(dst.fy),
-                           float(dst.cx),  float(dst.cy),  float(near_plane)};
+  const Projection project{a.x(),
+                           a.y(),
+                           a.z(),
+                           t.x(),
+                           t.y(),
+                           t.z(),
+                           float(dst.fx),
+                           float(dst.fy),
+                           float(dst.cx),
+                           float(dst.cy),
+                           float(near_plane)};
   const F16 lane_u = stats::lanes::Iota();
   ParallelBlocks(src.height, ThreadCount(threads), [&](int r0, int r1) {
     for (int r = r0; r < r1; ++r) {
@@ -211,7 +219,7 @@ struct QuadLanes {
 
 // The corners' screen positions and data (p00, p10, p01, p11) → QuadLanes; `draw` masks lanes.
 inline QuadLanes MakeQuadLanes(const F16 (&x)[4], const F16 (&y)[4], const F16 (&iz)[4],
-                        const F16 (&z)[4], I16 draw, float max_ratio) {
+                               const F16 (&z)[4], I16 draw, float max_ratio) {
   QuadLanes q;
   const F16 zero = F16{}, tiny = zero + 1e-12f, ratio = zero + max_ratio;
   q.x00 = x[0];
@@ -470,6 +478,11 @@ std::vector<cv::Point> MarkPlanarBlocks(const cv::Mat& flags, int size, int w, V
 
 }  // namespace
 
+cv::Mat PlanarBlocksFor(const cv::Mat& depth, const WarpOptions& options) {
+  if (options.planar_block <= 0) return cv::Mat();
+  return FindPlanarBlocks(depth, options.planar_block, options.planar_tolerance);
+}
+
 struct DepthMeshWarper::Scratch {
   Vertices vertices;
   std::vector<std::vector<Texel>> targets;  // one per thread
@@ -530,8 +543,8 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
   const int threads = ThreadCount(options_.threads);
   if (threads < 2 || sources.size() < 2) {
     for (std::size_t k = 0; k < sources.size(); ++k) {
-      WarpWith(*scratch_, threads, *sources[k].camera, *sources[k].T_world_cam,
-               *sources[k].depth, sources[k].planar_blocks, dst, T_world_dst, fields[k]);
+      WarpWith(*scratch_, threads, *sources[k].camera, *sources[k].T_world_cam, *sources[k].depth,
+               sources[k].planar_blocks, dst, T_world_dst, fields[k]);
     }
     return;
   }
@@ -545,9 +558,8 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
     for (int w = w0; w < w1; ++w) {
       try {
         for (std::size_t k = std::size_t(w); k < sources.size(); k += std::size_t(workers)) {
-          WarpWith(*worker_scratch_[std::size_t(w)], 1, *sources[k].camera,
-                   *sources[k].T_world_cam, *sources[k].depth, sources[k].planar_blocks, dst,
-                   T_world_dst, fields[k]);
+          WarpWith(*worker_scratch_[std::size_t(w)], 1, *sources[k].camera, *sources[k].T_world_cam,
+                   *sources[k].depth, sources[k].planar_blocks, dst, T_world_dst, fields[k]);
         }
       } catch (const std::exception& e) {
         errors[std::size_t(w)] = e.what();  // rethrown below, not across the thread pool
@@ -582,11 +594,10 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   if (o.planar_block > 0) {
     // The caller's flags if they fit this block size (a grid of another size: found anew).
     const cv::Size grid((src.width - 1) / o.planar_block, (src.height - 1) / o.planar_block);
-    const bool kept = planar_blocks && planar_blocks->type() == CV_8UC1 &&
-                      planar_blocks->size() == grid;
-    blocks = MarkPlanarBlocks(
-        kept ? *planar_blocks : FindPlanarBlocks(depth, o.planar_block, o.planar_tolerance),
-        o.planar_block, src.width, v);
+    const bool kept =
+        planar_blocks && planar_blocks->type() == CV_8UC1 && planar_blocks->size() == grid;
+    blocks = MarkPlanarBlocks(kept ? *planar_blocks : PlanarBlocksFor(depth, o), o.planar_block,
+                              src.width, v);
   }
 
   // Threads take blocks of source rows, each with its own buffers, merged by depth afterwards.

@@ -11,8 +11,8 @@
 
 #include <Eigen/Geometry>
 #include <memory>
-#include <vector>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "maps/views/pinhole_camera.h"
 
@@ -30,10 +30,10 @@ struct WarpOptions {
   /// Also fill WarpField::cos_angle (for view-dependent blending weights).
   bool compute_view_angles = false;
   /// Blocks of this many × this many quads whose depths lie on one plane (within
-  /// `planar_tolerance`, relative depth; planar_blocks.h) are drawn as two triangles with
-  /// perspective-correct source coordinates instead of 2·size² small ones: walls, floors and
-  /// table tops cost a fraction. Where such a block borders a non-planar one, its quads along that
-  /// side are drawn as well, so no crack opens between the block's straight edge and the
+  /// `planar_tolerance`, relative depth; planar_blocks.h) are drawn as one convex quadrilateral
+  /// with perspective-correct source coordinates instead of 2·size² small triangles: walls, floors
+  /// and table tops cost a fraction. Where such a block borders a non-planar one, its quads along
+  /// that side are drawn as well, so no crack opens between the block's straight edge and the
   /// neighbour's vertices. 0 = every quad on its own.
   int planar_block = 8;
   /// 0.002 moves a vertex by at most 0.2 % of its depth: 0.06 px of parallax for a 20 cm
@@ -63,6 +63,11 @@ struct SourceView {
   /// change between frames (a map's reference views); null: found at each warp.
   const cv::Mat* planar_blocks = nullptr;
 };
+
+/// The planar-block flags a warp with `options` uses for `depth` (FindPlanarBlocks with the
+/// options' block size and tolerance; empty when planar_block is 0): what a caller keeps in
+/// SourceView::planar_blocks.
+cv::Mat PlanarBlocksFor(const cv::Mat& depth, const WarpOptions& options);
 
 /// Warps views one after another, reusing its buffers (and the output field's) from call to
 /// call: a robot warps seven views per frame, and fresh megabyte buffers each time cost more in

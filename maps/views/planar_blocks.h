@@ -1,9 +1,9 @@
 // Blocks of a depth map whose pixels lie on one plane. A plane seen by a pinhole camera has an
 // inverse depth that is affine in the pixel coordinates (n·X = d with X = z·K⁻¹(u, v, 1) gives
 // 1/z = n·K⁻¹(u, v, 1)/d), so a block is planar when every pixel's inverse depth matches the
-// affine function through three of its corners. The warper draws such a block as two large
-// triangles instead of size² quads of two (depth_mesh_warper.h): the same surface, since the
-// mesh vertices inside lie on those triangles.
+// affine function through three of its corners. The warper draws such a block as one convex
+// quadrilateral instead of size² quads of two (depth_mesh_warper.h): the same surface, since the
+// mesh vertices inside lie on its plane.
 #pragma once
 
 #include <opencv2/core.hpp>
