@@ -89,17 +89,9 @@ void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, co
   // R · K⁻¹ (u, v, 1) is affine in u and v: a·u + b·v + c.
   const Eigen::Vector3f a = R.col(0) / float(src.fx), b = R.col(1) / float(src.fy);
   const Eigen::Vector3f c = R.col(2) - a * float(src.cx) - b * float(src.cy);
-  const Projection project{a.x(),
-                           a.y(),
-                           a.z(),
-                           t.x(),
-                           t.y(),
-                           t.z(),
-                           float(dst.fx),
-                           float(dst.fy),
-                           float(dst.cx),
-                           float(dst.cy),
-                           float(near_plane)};
+  const Projection project{a.x(),          a.y(),          a.z(),          t.x(),
+                           t.y(),          t.z(),          float(dst.fx),  float(dst.fy),
+                           float(dst.cx),  float(dst.cy),  float(near_plane)};
   const F16 lane_u = stats::lanes::Iota();
   ParallelBlocks(src.height, ThreadCount(threads), [&](int r0, int r1) {
     for (int r = r0; r < r1; ++r) {
