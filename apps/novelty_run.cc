@@ -148,18 +148,21 @@ std::vector<double> ParseFactors(const std::string& list) {
   return factors;
 }
 
-// Maps with reference views `factor` times sparser, run side by side with the main one (fig. 4.13).
+// The options with reference views `factor` times farther apart (fig. 4.13's R2, R4).
+appearance::AppearanceMapOptions WithSparserViews(appearance::AppearanceMapOptions o,
+                                                  double factor) {
+  o.views.new_view_distance *= factor;
+  return o;
+}
+
+// Maps with reference views `factor` times sparser, run side by side with the main one.
 struct SparserMaps {
   double factor;
   appearance::AppearanceMap map;
   appearance::DifferencingMap baseline;
   std::vector<eval::SelectivityRow> rows;
-  SparserMaps(double f, appearance::AppearanceMapOptions options)
-      : factor(f), map(Sparser(options, f)), baseline(Sparser(options, f).views) {}
-  static appearance::AppearanceMapOptions Sparser(appearance::AppearanceMapOptions o, double f) {
-    o.views.new_view_distance *= f;
-    return o;
-  }
+  SparserMaps(double f, const appearance::AppearanceMapOptions& options)
+      : factor(f), map(WithSparserViews(options, f)), baseline(map.options().views) {}
 };
 
 // The findings of thesis 4.3 for the glass-and-cup scenario, each read over the first run of its
@@ -206,12 +209,18 @@ const char* HoldsText(bool holds, int frames) {
   return frames == 0 ? "no frames" : holds ? "holds" : "does NOT hold";
 }
 
-// OUT/findings.csv and a table in the report: each finding with its numbers and whether it holds.
-void ReportFindings(const std::string& out, const std::vector<eval::SelectivityRow>& rows,
+// One row of findings.csv: the finding, its region and frames, the means, whether it holds.
+void WriteFindingRow(std::ostream& csv, const std::string& what, const eval::Finding& f,
+                     const eval::MeanSelectivity& m, bool holds) {
+  csv << '"' << what << "\"," << f.region << "," << f.first << "," << f.last;
+  for (const std::string& cell : MeanCells(m)) csv << "," << cell;
+  csv << "," << HoldsCell(holds, m.frames) << "\n";
+}
+
+// Rows of findings.csv and a table in the report: each finding with its numbers and whether it
+// holds.
+void ReportFindings(std::ostream& csv, const std::vector<eval::SelectivityRow>& rows,
                     const std::vector<eval::Finding>& findings, eval::HtmlReport& report) {
-  std::ofstream csv(out + "/findings.csv");
-  csv << "finding,region,first_frame,last_frame,frames,AS_surprise,AS_diff,PAS_surprise,PAS_diff,"
-         "holds\n";
   std::vector<std::vector<std::string>> table;
   for (const eval::Finding& f : findings) {
     const eval::FindingResult r = eval::Evaluate(rows, f);
@@ -220,9 +229,7 @@ void ReportFindings(const std::string& out, const std::vector<eval::SelectivityR
     for (const std::string& cell : MeanCells(r.mean)) line.push_back(cell);
     line.push_back(HoldsCell(r.holds, r.mean.frames));
     table.push_back(line);
-    csv << '"' << f.what << "\"," << f.region << "," << f.first << "," << f.last;
-    for (const std::string& cell : MeanCells(r.mean)) csv << "," << cell;
-    csv << "," << HoldsCell(r.holds, r.mean.frames) << "\n";
+    WriteFindingRow(csv, f.what, f, r.mean, r.holds);
     std::printf("  %-78s %s (AS %s vs %s dB, PAS %s vs %s dB, frames %s)\n", f.what.c_str(),
                 HoldsText(r.holds, r.mean.frames), Fmt(r.mean.as_surprise).c_str(),
                 Fmt(r.mean.as_difference).c_str(), Fmt(r.mean.pas_surprise).c_str(),
@@ -237,13 +244,12 @@ void ReportFindings(const std::string& out, const std::vector<eval::SelectivityR
                table);
 }
 
-// Fig. 4.13: each finding's region with sparser reference views (--compare-views), appended to
-// findings.csv; the claim is that surprise's PAS falls less than differencing's.
-void ReportSparser(const std::string& out, const std::vector<eval::SelectivityRow>& rows, int views,
+// Fig. 4.13: each finding's region with sparser reference views (--compare-views), as rows of
+// findings.csv and a table; the claim is that surprise's PAS falls less than differencing's.
+void ReportSparser(std::ostream& csv, const std::vector<eval::SelectivityRow>& rows, int views,
                    const std::vector<std::unique_ptr<SparserMaps>>& sparser,
                    const std::vector<eval::Finding>& findings, eval::HtmlReport& report) {
   if (sparser.empty()) return;
-  std::ofstream csv(out + "/findings.csv", std::ios::app);
   std::vector<std::vector<std::string>> table;
   for (const eval::Finding& f : findings) {
     const eval::MeanSelectivity full = eval::Evaluate(rows, f).mean;
@@ -260,11 +266,9 @@ void ReportSparser(const std::string& out, const std::vector<eval::SelectivityRo
                        Fmt(full.pas_surprise - m.pas_surprise) + " / " +
                            Fmt(full.pas_difference - m.pas_difference),
                        HoldsCell(holds, m.frames)});
-      csv << "\"" << f.region << ", " << name
-          << ": surprise loses less PAS than differencing (fig. 4.13)\"," << f.region << ","
-          << f.first << "," << f.last;
-      for (const std::string& cell : MeanCells(m)) csv << "," << cell;
-      csv << "," << HoldsCell(holds, m.frames) << "\n";
+      WriteFindingRow(
+          csv, f.region + ", " + name + ": surprise loses less PAS than differencing (fig. 4.13)",
+          f, m, holds);
       std::printf("  %-78s %s (PAS loss %s vs %s dB, %d views)\n",
                   (f.region + ", " + name + ": surprise loses less PAS (fig. 4.13)").c_str(),
                   HoldsText(holds, m.frames), Fmt(full.pas_surprise - m.pas_surprise).c_str(),
@@ -290,8 +294,11 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
                 "%d frames in %.1f s (%.1f frames/s); %d reference views in the map at the end.",
                 frames, seconds, frames / seconds, views);
   report.Paragraph(summary);
-  ReportFindings(out, rows, findings, report);
-  ReportSparser(out, rows, views, sparser, findings, report);
+  std::ofstream csv(out + "/findings.csv");
+  csv << "finding,region,first_frame,last_frame,frames,AS_surprise,AS_diff,PAS_surprise,PAS_diff,"
+         "holds\n";
+  ReportFindings(csv, rows, findings, report);
+  ReportSparser(csv, rows, views, sparser, findings, report);
   std::vector<eval::PlotBand> bands;
   for (const Phase& p : phases) bands.push_back({double(p.first), double(p.last), p.name});
   std::set<std::string> regions;
@@ -375,7 +382,7 @@ int main(int argc, char** argv) {
                        : appearance::AppearanceMapOptions{};
     if (!(reduction.getValue() >= 1.0))
       throw std::invalid_argument("--view-reduction must be >= 1");
-    options.views.new_view_distance *= reduction.getValue();
+    options = WithSparserViews(options, reduction.getValue());
     const std::string gt = truth.getValue(), dir = out.getValue();
     const auto poses = sensors::LoadGroundTruthPoses(gt + "/poses.csv");
     const auto names = ReadObjects(gt);
