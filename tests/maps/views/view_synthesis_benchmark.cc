@@ -4,7 +4,6 @@
 #include <benchmark/benchmark.h>
 
 #include "maps/views/depth_mesh_warper.h"
-#include "maps/views/planar_blocks.h"
 #include "maps/views/view_blender.h"
 #include "maps/views/view_selection.h"
 #include "sim/render/renderer.h"
@@ -37,7 +36,7 @@ Views MakeViews() {
     v.poses.push_back(views::LookAt(eye, {0, 0, 0.2}));
     const sim::RenderedFrame f = sim::Render(scene, light, v.camera, v.poses.back());
     v.depths.push_back(f.depth);
-    v.planar_blocks.push_back(views::FindPlanarBlocks(f.depth, 8, 0.002));
+    v.planar_blocks.push_back(views::PlanarBlocksFor(f.depth, views::WarpOptions{}));
     v.images.push_back(f.rgb);
   }
   v.virtual_pose = views::LookAt({2.0 * std::cos(0.05), 2.0 * std::sin(0.05), 1.25}, {0, 0, 0.2});
