@@ -118,16 +118,23 @@ class DirectOdometry::Impl {
                                                Views(pair, f),
                                                guess->inverse() * nearest->world_from_camera,
                                                options.alignment);
-    if (a.visible < options.min_points || a.rms > options.max_rms) {
+    const double max_rms = prior ? options.prior_max_rms : options.max_rms;
+    if (!Aligned(a, max_rms)) {
       if (prior && why) {
-        *why = "the frame does not align with the nearest keyframe (" +
-               std::to_string(a.visible) + " points visible, min_points " +
-               std::to_string(options.min_points) + "; rms " + std::to_string(a.rms) +
-               ", max_rms " + std::to_string(options.max_rms) + ")";
+        *why = "the frame does not align with the nearest keyframe (" + std::to_string(a.visible) +
+               " points visible, min_points " + std::to_string(options.min_points) + "; rms " +
+               std::to_string(a.rms) + ", max_rms " + std::to_string(max_rms) + "; textured " +
+               std::to_string(a.textured_fraction) + ", min_textured_fraction " +
+               std::to_string(options.min_textured_fraction) + ")";
       }
       return prior ? std::nullopt : guess;
     }
     return nearest->world_from_camera * a.current_from_keyframe.inverse();
+  }
+
+  bool Aligned(const AlignmentResult& a, double max_rms) const {
+    return a.visible >= options.min_points && a.rms <= max_rms &&
+           a.textured_fraction >= options.min_textured_fraction;
   }
 
   bool NeedsKeyframe(const AlignmentResult& a) const {
@@ -164,7 +171,7 @@ std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair
     const AlignmentResult a =
         AlignPhotometric(keyframe.points, keyframe.px, keyframe.pyramid,
                          s.Views(pair, f), predicted, s.options.alignment);
-    if (a.visible >= s.options.min_points && a.rms <= s.options.max_rms) {
+    if (s.Aligned(a, s.options.max_rms)) {
       const Eigen::Isometry3d world_from_camera =
           keyframe.world_from_camera * a.current_from_keyframe.inverse();
       s.motion = s.pose.inverse() * world_from_camera;

@@ -43,6 +43,17 @@ struct DirectOdometryOptions {
   /// Photometric RMS of the aligned images above which tracking is lost (in the units of the
   /// normalized images, which `normalization.scale` keeps comparable to grey levels).
   double max_rms = 25.0;
+  /// The same bound for Localize from a prior (support views): a frame of another sequence
+  /// is often under another lighting, which leaves a larger RMS on a right alignment (phase I5
+  /// of the stereo scenario: 25.5–31.9); registration copes with the few that align wrongly
+  /// (FrameFitOptions).
+  double prior_max_rms = 40.0;
+  /// An alignment where fewer of the residuals fall on texture of the current image
+  /// (AlignmentResult::textured_fraction) fails: a blank or blacked-out image (0) would
+  /// otherwise pass the RMS bounds (its RMS is the keyframe's own contrast, ~25), and only the
+  /// prior would place it. Measured on the stereo scenario (I1 tracked, support views of
+  /// I2–I9): ≥ 0.91 for tracked frames, ≥ 0.75 for support views.
+  double min_textured_fraction = 0.5;
   KeyframeRelocalizerOptions relocalizer;
 };
 

@@ -35,6 +35,7 @@ struct Normal {
   int visible = 0;    // points inside the first (reference) view
   int residuals = 0;  // over all views
   int inliers = 0;
+  int textured = 0;
   double sq = 0;
 };
 
@@ -43,7 +44,8 @@ struct Normal {
 void Accumulate(const std::vector<Eigen::Vector3d>& points, const std::vector<float>& reference,
                 const cv::Mat& image, const cv::Mat& gx, const cv::Mat& gy,
                 const views::PinholeCamera& c, const Eigen::Isometry3d& view_from_reference,
-                const Eigen::Isometry3d& t, double huber, bool count_visible, Normal& n) {
+                const Eigen::Isometry3d& t, double huber, double textured_gradient,
+                bool count_visible, Normal& n) {
   const float max_x = float(image.cols - 2), max_y = float(image.rows - 2);
   const Eigen::Matrix3d r_vt = view_from_reference.linear().transpose();
   for (size_t i = 0; i < points.size(); ++i) {
@@ -71,18 +73,19 @@ void Accumulate(const std::vector<Eigen::Vector3d>& points, const std::vector<fl
     ++n.residuals;
     if (count_visible) ++n.visible;
     n.inliers += a <= huber;
+    n.textured += gu * gu + gv * gv >= textured_gradient * textured_gradient;
   }
 }
 
 // The normal equations over all views at level `l`.
 Normal AccumulateViews(const std::vector<Eigen::Vector3d>& points,
                        const std::vector<float>& reference, const std::vector<AlignmentView>& views,
-                       int l, const Eigen::Isometry3d& t, double huber) {
+                       int l, const Eigen::Isometry3d& t, const PhotometricAlignmentOptions& o) {
   Normal n;
   for (size_t v = 0; v < views.size(); ++v) {
     const GradientPyramid& p = *views[v].pyramid;
     Accumulate(points, reference, p.image[l], p.gx[l], p.gy[l], AtLevel(views[v].camera, l),
-               views[v].view_from_reference, t, huber, v == 0, n);
+               views[v].view_from_reference, t, o.huber, o.textured_gradient, v == 0, n);
   }
   n.h = n.h.selfadjointView<Eigen::Upper>();
   return n;
@@ -143,14 +146,14 @@ AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
       reference.push_back(SampleBilinear(kf, u, v));
     }
     double lambda = 1e-4;
-    Normal n = AccumulateViews(pts, reference, views, l, t, o.huber);
+    Normal n = AccumulateViews(pts, reference, views, l, t, o);
     for (int it = 0; it < o.max_iterations && n.visible >= 6; ++it) {
       Matrix6d h = n.h;
       h.diagonal() *= 1.0 + lambda;
       const Vector6d xi = h.ldlt().solve(-n.b);
       if (!xi.allFinite()) break;
       const Eigen::Isometry3d candidate = Exp(xi) * t;
-      const Normal m = AccumulateViews(pts, reference, views, l, candidate, o.huber);
+      const Normal m = AccumulateViews(pts, reference, views, l, candidate, o);
       // Compare mean costs: the number of visible points may change with the pose.
       if (m.visible >= 6 && m.cost / m.residuals <= n.cost / n.residuals) {
         t = candidate, n = m, lambda = std::max(1e-6, lambda / 4);
@@ -167,6 +170,7 @@ AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
   r.visible = last.visible;
   r.rms = last.residuals ? std::sqrt(last.sq / last.residuals) : 0.0;
   r.inlier_fraction = last.residuals ? double(last.inliers) / last.residuals : 0.0;
+  r.textured_fraction = last.residuals ? double(last.textured) / last.residuals : 0.0;
   return r;
 }
 

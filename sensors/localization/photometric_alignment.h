@@ -18,6 +18,9 @@ struct PhotometricAlignmentOptions {
   int levels = 3;           ///< pyramid levels (each half the size of the previous)
   int max_iterations = 30;  ///< per level
   double huber = 6.0;       ///< Huber threshold of the photometric residual (grey levels)
+  /// Image gradient (grey levels per pixel) from which a point of the current image counts as
+  /// textured (AlignmentResult::textured_fraction).
+  double textured_gradient = 4.0;
   /// Iterations stop when the update's rotation (rad) and translation (m) are below this.
   double convergence = 1e-6;
 };
@@ -34,6 +37,9 @@ struct AlignmentResult {
   int visible = 0;         ///< points projecting into the current image at level 0
   double rms = 0.0;        ///< RMS photometric residual over all views (grey levels)
   double inlier_fraction = 0.0;  ///< residuals under the Huber threshold, over all views
+  /// Residuals where the current image is textured, over all views: near 0 for a blank or
+  /// blacked-out image, which otherwise leaves an RMS like that of another lighting.
+  double textured_fraction = 0.0;
 };
 
 /// One image the keyframe's points are compared with: the current reference image, or another

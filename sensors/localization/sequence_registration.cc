@@ -91,16 +91,24 @@ FittedFrameTransform::FittedFrameTransform(const std::vector<SupportView>& suppo
   std::vector<Eigen::Isometry3d> q;
   for (const auto& s : support) q.push_back(s.common_from_camera * s.own_from_camera.inverse());
   reference_rotation_ = q[0].linear();
+  for (int k = 0; k < 3; ++k) translation_[k] = q[0].translation()(k);
+  Solve(support, options, options.robust_scale > 0 ? Loss::kHuber : Loss::kNone);
+  if (options.outlier_scale > 0) Solve(support, options, Loss::kCauchy);  // from the Huber fit
+}
+
+void FittedFrameTransform::Solve(const std::vector<SupportView>& support,
+                                 const FrameFitOptions& options, Loss loss) {
   ceres::Problem problem;
   for (size_t n = 0; n < support.size(); ++n) {
     const double x = (support[n].index - center_) / scale_;
+    ceres::LossFunction* robust = nullptr;
+    if (loss == Loss::kHuber) robust = new ceres::HuberLoss(options.robust_scale);
+    if (loss == Loss::kCauchy) robust = new ceres::CauchyLoss(options.outlier_scale);
     problem.AddResidualBlock(
-        new ceres::AutoDiffCostFunction<SupportResidual, 6, 9, 9>(new SupportResidual(
-            support[n], reference_rotation_, x, options.rotation_weight)),
-        options.robust_scale > 0 ? new ceres::HuberLoss(options.robust_scale) : nullptr,
-        rotation_, translation_);
+        new ceres::AutoDiffCostFunction<SupportResidual, 6, 9, 9>(
+            new SupportResidual(support[n], reference_rotation_, x, options.rotation_weight)),
+        robust, rotation_, translation_);
   }
-  for (int k = 0; k < 3; ++k) translation_[k] = q[0].translation()(k);
   ceres::Solver::Options solver;
   solver.max_num_iterations = 100;
   solver.linear_solver_type = ceres::DENSE_QR;

@@ -35,6 +35,11 @@ struct FrameFitOptions {
   /// another lighting one can be centimetres off) pulls the fit linearly, not quadratically.
   /// 0 = plain least squares.
   double robust_scale = 0.005;
+  /// Then refit from there with a Cauchy loss of this scale (m), whose pull fades with the
+  /// distance: under another lighting several support views can be biased alike by 1–1.5 cm
+  /// (phase I5: 5 of 12), too many for the Huber fit, which still pulls linearly. 0 = the Huber
+  /// fit only.
+  double outlier_scale = 0.003;
 };
 
 /// The Ceres fit of Q_j; evaluate with At(). Throws std::invalid_argument with fewer
@@ -46,6 +51,9 @@ class FittedFrameTransform {
   Eigen::Isometry3d At(double j) const;
 
  private:
+  enum class Loss { kNone, kHuber, kCauchy };
+  void Solve(const std::vector<SupportView>& support, const FrameFitOptions& options, Loss loss);
+
   Eigen::Matrix3d reference_rotation_;
   double center_ = 0, scale_ = 1;  // j is normalised to (j − center) / scale for conditioning
   double rotation_[9] = {0};       // a, b, c (angle-axis coefficients)

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -142,50 +143,56 @@ class CommonFrameDistortion {
   std::vector<Eigen::Isometry3d> error_;
 };
 
-// Registration of a second sequence (6.1.1): phase I2 (frames 201–295, other lighting) is
-// localized by its own odometry from the identity; support views of it (every 8th frame) are
-// localized against the keyframes of I1's odometry (the common frame, started at the true pose),
-// the first by ORB matches, the others from the pose the previous support view predicts; eq. 6.1
-// gives Q at each, and every I2 pose is registered by eq. 6.3 with Q interpolated (Lagrange,
-// first, middle and last support view) or fitted (Ceres, all).
+// Registration of a second sequence (6.1.1): the phase is localized by its own odometry from
+// the identity; support views of it (every 8th frame) are localized against the keyframes of
+// I1's odometry (the common frame, started at the true pose), the first by ORB matches, the
+// others from the pose the previous support view predicts; eq. 6.1 gives Q at each, and every
+// pose of the phase is registered by eq. 6.3 with Q interpolated (Lagrange, first, middle and
+// last support view) or fitted (Ceres, all; also with the Huber fit alone).
 //
 // Registration error is measured against where the common frame puts each camera
 // (CommonFrameDistortion): that is what registration is for (virtual views at the same place
 // from different sequences) and all it can reach; the common frame's own error is its drift,
-// which the drift test bounds. Measured (RMS / worst): Ceres 2.8 / 6.8 mm, Lagrange 3.2 / 6.6 mm,
-// worst 0.25°; the best smooth Q possible — fitted to the common frame's own poses at every frame
-// — reaches 2.0 / 7.5 mm: the worst cases are the odometries' frame-to-frame jitter (2–3 mm
-// per frame against the keyframe), not the registration. Against the ground truth: RMS 5.5 mm,
-// worst 7.9–8.2 mm.
-TEST(DirectOdometry, RegistersASecondSequenceThroughSupportViews) {
+// which the drift test bounds.
+struct PhaseRegistration {
+  SupportViews found;
+  std::vector<Errors> support;  // each support view against the common frame
+  Errors ceres, huber_only, lagrange, floor, ceres_truth, lagrange_truth;
+};
+
+// `start_given`: the first support view starts from where the common frame puts the first
+// camera, instead of from ORB matches.
+PhaseRegistration Register(const Clip& second, bool start_given = false) {
   const Clip& common = PhaseI1();
-  const Clip& second = PhaseI2();
   DirectOdometry reference({}, common[0].second);
   std::string why;
   std::vector<Eigen::Isometry3d> common_poses;
   for (const auto& [pair, truth] : common) {
     const auto r = reference.Track(pair, &why);
-    ASSERT_TRUE(r) << why;
-    common_poses.push_back(r->world_from_camera);
+    EXPECT_TRUE(r) << why;
+    common_poses.push_back(r ? r->world_from_camera : truth);
   }
   const CommonFrameDistortion distortion(common, common_poses);
   DirectOdometry own_odometry({}, Eigen::Isometry3d::Identity());
   std::vector<Eigen::Isometry3d> own;
+  std::vector<StereoPair> frames;
   for (const auto& [pair, truth] : second) {
     const auto r = own_odometry.Track(pair, &why);
-    ASSERT_TRUE(r) << why;
-    own.push_back(r->world_from_camera);
+    EXPECT_TRUE(r) << why;
+    own.push_back(r ? r->world_from_camera : Eigen::Isometry3d::Identity());
+    frames.push_back(pair);
   }
-  std::vector<StereoPair> frames;
-  for (const auto& [pair, truth] : second) frames.push_back(pair);
-  const SupportViews found = LocalizeSupportViews(reference, frames, own);  // every 8th frame
-  for (const std::string& s : found.skipped) std::printf("skipped %s\n", s.c_str());
-  EXPECT_GE(found.views.size(), 11u);  // of 12
-  const std::vector<SupportView>& support = found.views;
+  PhaseRegistration out;
+  std::optional<Eigen::Isometry3d> start;
+  if (start_given) start = distortion.At(second.front().second);
+  out.found = LocalizeSupportViews(reference, frames, own, {}, start);  // every 8th frame
+  for (const std::string& s : out.found.skipped) std::printf("skipped %s\n", s.c_str());
+  const std::vector<SupportView>& support = out.found.views;
+  if (support.size() < 3) return out;
   for (const SupportView& s : support) {
-    Errors e;
-    e.Add(s.common_from_camera, distortion.At(second[std::size_t(s.index)].second));
-    EXPECT_LT(e.worst_mm, 6.0) << "support view " << s.index;
+    out.support.emplace_back();
+    out.support.back().Add(s.common_from_camera,
+                           distortion.At(second[std::size_t(s.index)].second));
   }
   std::vector<SupportView> ideal;
   const std::vector<SupportView> three = {support.front(), support[support.size() / 2],
@@ -193,9 +200,10 @@ TEST(DirectOdometry, RegistersASecondSequenceThroughSupportViews) {
   for (size_t j = 0; j < second.size(); ++j)
     ideal.push_back({double(j), distortion.At(second[j].second), own[j]});
   FrameFitOptions least_squares;  // the floor in RMS
-  least_squares.robust_scale = 0;
-  const FittedFrameTransform fitted(support), best(ideal, least_squares);
-  Errors lagrange, ceres, floor, lagrange_truth, ceres_truth;
+  least_squares.robust_scale = least_squares.outlier_scale = 0;
+  FrameFitOptions huber;
+  huber.outlier_scale = 0;
+  const FittedFrameTransform fitted(support), huber_fit(support, huber), best(ideal, least_squares);
   for (size_t j = 0; j < second.size(); ++j) {
     const Eigen::Isometry3d& truth = second[j].second;
     const Eigen::Isometry3d in_common = distortion.At(truth);
@@ -206,29 +214,60 @@ TEST(DirectOdometry, RegistersASecondSequenceThroughSupportViews) {
     l_pose.linear() = svd.matrixU() * svd.matrixV().transpose();
     l_pose.translation() = l.topRightCorner<3, 1>();
     const Eigen::Isometry3d c_pose = fitted.At(double(j)) * own[j];
-    lagrange.Add(l_pose, in_common);
-    ceres.Add(c_pose, in_common);
-    floor.Add(best.At(double(j)) * own[j], in_common);
-    lagrange_truth.Add(l_pose, truth);
-    ceres_truth.Add(c_pose, truth);
+    out.lagrange.Add(l_pose, in_common);
+    out.ceres.Add(c_pose, in_common);
+    out.huber_only.Add(huber_fit.At(double(j)) * own[j], in_common);
+    out.floor.Add(best.At(double(j)) * own[j], in_common);
+    out.lagrange_truth.Add(l_pose, truth);
+    out.ceres_truth.Add(c_pose, truth);
   }
   auto print = [](const char* what, const Errors& e) {
     std::printf("%-34s RMS %.1f mm, worst %.1f mm %.2f°\n", what, e.RmsMm(), e.worst_mm,
                 e.worst_deg);
   };
-  print("Ceres vs common frame:", ceres);
-  print("Lagrange vs common frame:", lagrange);
-  print("best smooth Q vs common frame:", floor);
-  print("Ceres vs ground truth:", ceres_truth);
-  print("Lagrange vs ground truth:", lagrange_truth);
+  print("Ceres vs common frame:", out.ceres);
+  print("Ceres, Huber fit alone:", out.huber_only);
+  print("Lagrange vs common frame:", out.lagrange);
+  print("best smooth Q vs common frame:", out.floor);
+  print("Ceres vs ground truth:", out.ceres_truth);
+  print("Lagrange vs ground truth:", out.lagrange_truth);
+  return out;
+}
+
+// Phase I2 (frames 201–295, after the lamps moved). Measured (RMS / worst): Ceres 2.8 / 6.8 mm,
+// Lagrange 3.2 / 6.6 mm, worst 0.25°; the best smooth Q possible — fitted to the common
+// frame's own poses at every frame — reaches 2.0 / 7.5 mm: the worst cases are the odometries'
+// frame-to-frame jitter (2–3 mm per frame against the keyframe), not the registration. Against
+// the ground truth: RMS 5.5 mm, worst 7.9–8.2 mm.
+TEST(DirectOdometry, RegistersASecondSequenceThroughSupportViews) {
+  const PhaseRegistration r = Register(PhaseI2());
+  EXPECT_GE(r.found.views.size(), 11u);  // of 12
+  for (size_t n = 0; n < r.support.size(); ++n)
+    EXPECT_LT(r.support[n].worst_mm, 6.0) << "support view " << r.found.views[n].index;
   // The sensors issue's budget: 5 mm / 0.5°.
-  EXPECT_LT(ceres.RmsMm(), 5.0);
-  EXPECT_LT(lagrange.RmsMm(), 5.0);
-  EXPECT_LT(ceres.worst_deg, 0.5);
-  EXPECT_LT(lagrange.worst_deg, 0.5);
-  EXPECT_LT(ceres.RmsMm(), floor.RmsMm() + 1.5);  // close to the best any smooth Q can do
-  EXPECT_LT(ceres_truth.worst_mm, 12.0);          // common-frame drift included
-  EXPECT_LT(lagrange_truth.worst_mm, 12.0);
+  EXPECT_LT(r.ceres.RmsMm(), 5.0);
+  EXPECT_LT(r.lagrange.RmsMm(), 5.0);
+  EXPECT_LT(r.ceres.worst_deg, 0.5);
+  EXPECT_LT(r.lagrange.worst_deg, 0.5);
+  EXPECT_LT(r.ceres.RmsMm(), r.floor.RmsMm() + 1.5);  // close to the best any smooth Q can do
+  EXPECT_LT(r.ceres_truth.worst_mm, 12.0);            // common-frame drift included
+  EXPECT_LT(r.lagrange_truth.worst_mm, 12.0);
+}
+
+// Phase I5 (frames 798–892), the lighting that biases support views most: both lamps moved to
+// the far side of the table, so the shadows fall the other way. Several support views align
+// 1–1.5 cm off, alike (sideways in the camera, with a turn that hides it); before the Cauchy
+// refit and the wider RMS bound for support views, I5 could not be registered at all (10 of 12
+// support views refused). ORB finds no match under this lighting, so the start pose is given.
+// Measured (RMS / worst): Ceres 3.7 / 7.2 mm, 0.28°; the Huber fit alone 5.4 / 10.8 mm;
+// Lagrange (three support views, two of them among the biased) 10.9 / 19.1 mm; best smooth Q
+// 2.3 / 5.5 mm.
+TEST(DirectOdometry, RegistersASequenceWhoseLightingBiasesSupportViews) {
+  const PhaseRegistration r = Register(Rendered(797, 95), true);
+  EXPECT_GE(r.found.views.size(), 11u);  // of 12
+  EXPECT_LT(r.ceres.RmsMm(), 5.0);
+  EXPECT_LT(r.ceres.worst_deg, 0.5);
+  EXPECT_LT(r.ceres.RmsMm(), r.huber_only.RmsMm() - 1.0);
 }
 
 // After a blackout (tracking lost) the pose comes back from the keyframes, and tracking goes on.

@@ -40,6 +40,9 @@ TEST(SupportViews, AreLocalizedEveryNthFrameAndAFrameThatDoesNotAlignIsSkipped) 
   EXPECT_EQ(s.views[2].index, 12);
   ASSERT_EQ(s.skipped.size(), 1u);
   EXPECT_EQ(s.skipped[0].rfind("frame 4: ", 0), 0u) << s.skipped[0];
+  // Refused for want of texture: its photometric RMS (the keyframe's own contrast, ~25) is
+  // within the bound for support views under another lighting.
+  EXPECT_NE(s.skipped[0].find("textured 0.000000"), std::string::npos) << s.skipped[0];
   for (const SupportView& v : s.views) {
     const std::size_t j = std::size_t(v.index);
     EXPECT_LT((v.common_from_camera.translation() - truth[j].translation()).norm(), 0.006) << j;
