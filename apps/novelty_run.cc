@@ -26,6 +26,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <opencv2/imgcodecs.hpp>
@@ -38,6 +39,7 @@
 #include "maps/appearance/differencing_map.h"
 #include "maps/eval/attentional_selectivity.h"
 #include "maps/eval/false_color.h"
+#include "maps/eval/findings_report.h"
 #include "maps/eval/first_run.h"
 #include "maps/eval/html_report.h"
 #include "maps/eval/selectivity_findings.h"
@@ -122,13 +124,6 @@ std::map<std::string, cv::Mat> ChangedRegions(const cv::Mat& novelty, const cv::
   return regions;
 }
 
-std::string Fmt(double v) {
-  if (!std::isfinite(v)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
-
 // "2,4" → {2, 4}; each factor must be ≥ 1.
 std::vector<double> ParseFactors(const std::string& list) {
   std::vector<double> factors;
@@ -194,96 +189,6 @@ std::vector<eval::Finding> ThesisFindings(const std::vector<Phase>& phases,
   return findings;
 }
 
-// Frames and the four means; the means blank when no frame showed the region.
-std::vector<std::string> MeanCells(const eval::MeanSelectivity& m) {
-  if (m.frames == 0) return {"0", "", "", "", ""};
-  return {std::to_string(m.frames), Fmt(m.as_surprise), Fmt(m.as_difference), Fmt(m.pas_surprise),
-          Fmt(m.pas_difference)};
-}
-
-std::string HoldsCell(bool holds, int frames) {
-  return frames == 0 ? "no frames" : holds ? "yes" : "no";
-}
-
-const char* HoldsText(bool holds, int frames) {
-  return frames == 0 ? "no frames" : holds ? "holds" : "does NOT hold";
-}
-
-// One row of findings.csv: the finding, its region and frames, the means, whether it holds.
-void WriteFindingRow(std::ostream& csv, const std::string& what, const eval::Finding& f,
-                     const eval::MeanSelectivity& m, bool holds) {
-  csv << '"' << what << "\"," << f.region << "," << f.first << "," << f.last;
-  for (const std::string& cell : MeanCells(m)) csv << "," << cell;
-  csv << "," << HoldsCell(holds, m.frames) << "\n";
-}
-
-// Rows of findings.csv and a table in the report: each finding with its numbers and whether it
-// holds.
-void ReportFindings(std::ostream& csv, const std::vector<eval::SelectivityRow>& rows,
-                    const std::vector<eval::Finding>& findings, eval::HtmlReport& report) {
-  std::vector<std::vector<std::string>> table;
-  for (const eval::Finding& f : findings) {
-    const eval::FindingResult r = eval::Evaluate(rows, f);
-    const std::string frames = std::to_string(f.first) + "–" + std::to_string(f.last);
-    std::vector<std::string> line = {f.what, frames};
-    for (const std::string& cell : MeanCells(r.mean)) line.push_back(cell);
-    line.push_back(HoldsCell(r.holds, r.mean.frames));
-    table.push_back(line);
-    WriteFindingRow(csv, f.what, f, r.mean, r.holds);
-    std::printf("  %-78s %s (AS %s vs %s dB, PAS %s vs %s dB, frames %s)\n", f.what.c_str(),
-                HoldsText(r.holds, r.mean.frames), Fmt(r.mean.as_surprise).c_str(),
-                Fmt(r.mean.as_difference).c_str(), Fmt(r.mean.pas_surprise).c_str(),
-                Fmt(r.mean.pas_difference).c_str(), frames.c_str());
-  }
-  report.Heading("Findings of thesis 4.3, over the first run after each change");
-  report.Paragraph(
-      "Means over the frames of the first run (Q1 to Q2) of each phase that show the region; "
-      "surprise / differencing.");
-  report.Table({"finding", "frames", "frames with region", "AS surprise", "AS differencing",
-                "PAS surprise", "PAS differencing", "holds"},
-               table);
-}
-
-// Fig. 4.13: each finding's region with sparser reference views (--compare-views), as rows of
-// findings.csv and a table; the claim is that surprise's PAS falls less than differencing's.
-void ReportSparser(std::ostream& csv, const std::vector<eval::SelectivityRow>& rows, int views,
-                   const std::vector<std::unique_ptr<SparserMaps>>& sparser,
-                   const std::vector<eval::Finding>& findings, eval::HtmlReport& report) {
-  if (sparser.empty()) return;
-  std::vector<std::vector<std::string>> table;
-  for (const eval::Finding& f : findings) {
-    const eval::MeanSelectivity full = eval::Evaluate(rows, f).mean;
-    table.push_back({f.region, "F", std::to_string(views), Fmt(full.pas_surprise),
-                     Fmt(full.pas_difference), "", ""});
-    for (const auto& s : sparser) {
-      const eval::MeanSelectivity m = eval::Evaluate(s->rows, f).mean;
-      const bool holds = eval::SurpriseLosesLess(full, m);
-      char name_buf[32];
-      std::snprintf(name_buf, sizeof name_buf, "R%g", s->factor);  // the thesis's R2, R4
-      const std::string name = name_buf;
-      table.push_back({f.region, name, std::to_string(s->map.store().size()), Fmt(m.pas_surprise),
-                       Fmt(m.pas_difference),
-                       Fmt(full.pas_surprise - m.pas_surprise) + " / " +
-                           Fmt(full.pas_difference - m.pas_difference),
-                       HoldsCell(holds, m.frames)});
-      WriteFindingRow(
-          csv, f.region + ", " + name + ": surprise loses less PAS than differencing (fig. 4.13)",
-          f, m, holds);
-      std::printf("  %-78s %s (PAS loss %s vs %s dB, %d views)\n",
-                  (f.region + ", " + name + ": surprise loses less PAS (fig. 4.13)").c_str(),
-                  HoldsText(holds, m.frames), Fmt(full.pas_surprise - m.pas_surprise).c_str(),
-                  Fmt(full.pas_difference - m.pas_difference).c_str(), s->map.store().size());
-    }
-  }
-  report.Heading("Fewer reference views (fig. 4.13)");
-  report.Paragraph(
-      "The same frames with reference views spaced N times wider (RN), over each finding's "
-      "first run. The thesis: surprise keeps more of its peak selectivity than differencing.");
-  report.Table({"region", "views", "reference views", "PAS surprise", "PAS differencing",
-                "PAS loss surprise / differencing", "surprise loses less"},
-               table);
-}
-
 void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>& rows,
                  const std::vector<Phase>& phases, const std::vector<eval::Finding>& findings,
                  const std::vector<std::unique_ptr<SparserMaps>>& sparser,
@@ -295,10 +200,12 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
                 frames, seconds, frames / seconds, views);
   report.Paragraph(summary);
   std::ofstream csv(out + "/findings.csv");
-  csv << "finding,region,first_frame,last_frame,frames,AS_surprise,AS_diff,PAS_surprise,PAS_diff,"
-         "holds\n";
-  ReportFindings(csv, rows, findings, report);
-  ReportSparser(csv, rows, views, sparser, findings, report);
+  eval::FindingsReport findings_report(csv, &std::cout);
+  findings_report.AddFindings(rows, findings, report);
+  std::vector<eval::SparserRun> sparser_runs;
+  for (const auto& m : sparser)
+    sparser_runs.push_back({m->factor, m->map.store().size(), &m->rows});
+  findings_report.AddSparser(rows, views, sparser_runs, findings, report);
   std::vector<eval::PlotBand> bands;
   for (const Phase& p : phases) bands.push_back({double(p.first), double(p.last), p.name});
   std::set<std::string> regions;
@@ -323,7 +230,7 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
       const eval::MeanSelectivity m = eval::MeanOver(rows, region, p.first, p.last);
       if (m.frames == 0) continue;
       std::vector<std::string> line = {p.name};
-      for (const std::string& cell : MeanCells(m)) line.push_back(cell);
+      for (const std::string& cell : eval::MeanCells(m)) line.push_back(cell);
       line.push_back(m.as_surprise > m.as_difference ? "surprise" : "differencing");
       table.push_back(line);
     }
@@ -429,8 +336,9 @@ int main(int argc, char** argv) {
                                        eval::AttentionalSelectivity(p.surprise, region),
                                        eval::AttentionalSelectivity(d.difference, region)};
           csv << r.frame << "," << PhaseOf(phases, f.index) << "," << r.region << ","
-              << Fmt(r.surprise.as_db) << "," << Fmt(r.surprise.pas_db) << ","
-              << Fmt(r.difference.as_db) << "," << Fmt(r.difference.pas_db) << "\n";
+              << eval::FormatDb(r.surprise.as_db) << "," << eval::FormatDb(r.surprise.pas_db) << ","
+              << eval::FormatDb(r.difference.as_db) << "," << eval::FormatDb(r.difference.pas_db)
+              << "\n";
           rows.push_back(r);
           for (std::size_t k = 0; k < sparser.size(); ++k) {
             sparser[k]->rows.push_back(
