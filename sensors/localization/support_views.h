@@ -2,9 +2,10 @@
 // both in its own frame (M, its odometry) and in the common frame (S, against the keyframes of
 // the first sequence's odometry). Every `every`-th frame is tried, the first from ORB matches (or
 // a given prior), each later one from the pose the last support view predicts: Q_last · M_j
-// (eq. 6.1, 6.3). A frame that does not align — another lighting, an occlusion — is skipped with
-// its reason, and the next one is tried; registration needs at least three
-// (sequence_registration.h). Denser support views average the localization noise of each
+// (eq. 6.1, 6.3). A frame that does not align — blank, occluded, too far from the prediction — is
+// skipped with its reason, and the next one is tried; registration needs at least three
+// (sequence_registration.h). Another lighting is no reason by itself (DirectOdometryOptions::
+// prior_max_rms); the few views it biases, the registration's Cauchy refit lets go. Denser support views average the localization noise of each
 // (2–4 mm): on I2 → I1, a support view every 8th frame gives Ceres 2.8 mm RMS against the common
 // frame, every 23rd 3.3 mm with one support view 11.7 mm off.
 #pragma once
