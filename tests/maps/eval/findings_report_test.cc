@@ -6,18 +6,10 @@
 #include <limits>
 #include <sstream>
 
+#include "tests/maps/eval/selectivity_row.h"
+
 namespace novelty::eval {
 namespace {
-
-SelectivityRow Row(int frame, const std::string& region, double as_s, double pas_s, double as_d,
-                   double pas_d) {
-  SelectivityRow r;
-  r.frame = frame;
-  r.region = region;
-  r.surprise.as_db = as_s, r.surprise.pas_db = pas_s;
-  r.difference.as_db = as_d, r.difference.pas_db = pas_d;
-  return r;
-}
 
 std::string Saved(const HtmlReport& report) {
   const std::string path = testing::TempDir() + "/findings_report_test.html";
