@@ -93,15 +93,37 @@ class DirectOdometry::Impl {
     return v;
   }
 
+  // Where ORB finds no match (under another lighting too few features match: I5 of the stereo
+  // scenario): the frame aligned photometrically to each kept keyframe, starting from that
+  // keyframe's own pose, and the best that aligns (lowest RMS within prior_max_rms) kept. A view
+  // of a place the keyframes saw starts within the alignment's reach of one of them. One
+  // alignment per kept keyframe: for frames of other sequences only, not after every tracking
+  // loss.
+  std::optional<Eigen::Isometry3d> AlignFromEachKeyframe(const StereoPair& pair,
+                                                         const FrameImages& f) const {
+    std::optional<Eigen::Isometry3d> best;
+    double best_rms = options.prior_max_rms;
+    for (const Keyframe& k : kept) {
+      const AlignmentResult a = AlignPhotometric(k.points, k.px, k.pyramid, Views(pair, f),
+                                                 Eigen::Isometry3d::Identity(), options.alignment);
+      if (!Aligned(a, best_rms)) continue;
+      best_rms = a.rms;
+      best = k.world_from_camera * a.current_from_keyframe.inverse();
+    }
+    return best;
+  }
+
   // The pose of a frame in this odometry's frame without tracking: `prior`, or else ORB + PnP
-  // against the kept keyframes, gives a first pose, refined by photometric alignment to the
-  // kept keyframe nearest to it (ORB alone is centimetres off).
+  // against the kept keyframes (and, when `exhaustive`, failing that AlignFromEachKeyframe),
+  // gives a first pose, refined by photometric alignment to the kept keyframe nearest to it
+  // (ORB alone is centimetres off).
   std::optional<Eigen::Isometry3d> Localize(const StereoPair& pair, const FrameImages& f,
                                             const std::optional<Eigen::Isometry3d>& prior,
-                                            std::string* why) const {
-    const auto guess = prior ? prior : relocalizer.Relocalize(pair, f.grey);
+                                            bool exhaustive, std::string* why) const {
+    auto guess = prior ? prior : relocalizer.Relocalize(pair, f.grey);
+    if (!guess && exhaustive) guess = AlignFromEachKeyframe(pair, f);
     if (!guess) {
-      if (why) *why = "no keyframe matches";
+      if (why) *why = exhaustive ? "no keyframe matches or aligns" : "no keyframe matches";
       return std::nullopt;
     }
     const Keyframe* nearest = nullptr;
@@ -188,7 +210,7 @@ std::optional<DirectOdometryResult> DirectOdometry::Track(const StereoPair& pair
   }
   // The first frame starts at the given pose; after tracking loss the pose is re-localized.
   if (!s.kept.empty()) {
-    const auto relocalized = s.Localize(pair, f, std::nullopt, nullptr);
+    const auto relocalized = s.Localize(pair, f, std::nullopt, false, nullptr);
     if (!relocalized) return fail("tracking lost" + lost + " and no keyframe matches");
     s.pose = *relocalized;
     result.relocalized = true;
@@ -208,7 +230,7 @@ std::optional<Eigen::Isometry3d> DirectOdometry::Localize(
     if (why) *why = StereoPairProblem(pair);
     return std::nullopt;
   }
-  return impl_->Localize(pair, impl_->Prepare(pair), prior, why);
+  return impl_->Localize(pair, impl_->Prepare(pair), prior, true, why);
 }
 
 }  // namespace novelty::sensors

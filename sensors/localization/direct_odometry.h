@@ -75,8 +75,10 @@ class DirectOdometry {
   /// T_world_cam of a frame of another sequence (or a later visit) in this odometry's frame,
   /// against the keyframes taken so far, without changing the tracking state: the support views
   /// of sequence registration (thesis 6.1.1). Starts from `prior` when given (e.g. the pose the
-  /// last support view's registration predicts), else from ORB matches, and is refined by
-  /// photometric alignment to the nearest keyframe. nullopt with the reason if that fails.
+  /// last support view's registration predicts), else from ORB matches, else (ORB finding too
+  /// few under another lighting) from the best photometric alignment to any kept keyframe
+  /// started at that keyframe's pose; then refined by photometric alignment to the nearest
+  /// keyframe. nullopt with the reason if that fails.
   std::optional<Eigen::Isometry3d> Localize(
       const StereoPair& pair, std::string* why,
       const std::optional<Eigen::Isometry3d>& prior = std::nullopt) const;
