@@ -33,12 +33,12 @@ struct FrameFitOptions {
   double rotation_weight = 1.0;
   /// Huber scale (m) of each support view's residual: a support view that aligned wrongly (under
   /// another lighting one can be centimetres off) pulls the fit linearly, not quadratically.
-  /// 0 = plain least squares.
+  /// 0 = plain least squares for this first fit.
   double robust_scale = 0.005;
   /// Then refit from there with a Cauchy loss of this scale (m), whose pull fades with the
   /// distance: under another lighting several support views can be biased alike by 1–1.5 cm
-  /// (phase I5: 5 of 12), too many for the Huber fit, which still pulls linearly. 0 = the Huber
-  /// fit only.
+  /// (phase I5: 5 of 12), too many for the Huber fit, which still pulls linearly. 0 = the first
+  /// fit only (plain least squares needs both at 0).
   double outlier_scale = 0.003;
 };
 
