@@ -145,8 +145,8 @@ class DirectOdometry::Impl {
       if (prior && why) {
         *why = "the frame does not align with the nearest keyframe (" + std::to_string(a.visible) +
                " points visible, min_points " + std::to_string(options.min_points) + "; rms " +
-               std::to_string(a.rms) + ", max_rms " + std::to_string(max_rms) + "; textured " +
-               std::to_string(a.textured_fraction) + ", min_textured_fraction " +
+               std::to_string(a.rms) + ", prior_max_rms " + std::to_string(max_rms) +
+               "; textured " + std::to_string(a.textured_fraction) + ", min_textured_fraction " +
                std::to_string(options.min_textured_fraction) + ")";
       }
       return prior ? std::nullopt : guess;
