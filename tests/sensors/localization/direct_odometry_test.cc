@@ -144,8 +144,9 @@ class CommonFrameDistortion {
 
 // Registration of a second sequence (6.1.1): the phase is localized by its own odometry from
 // the identity; support views of it (every 8th frame) are localized against the keyframes of
-// I1's odometry (the common frame, started at the true pose), the first by ORB matches, the
-// others from the pose the previous support view predicts; eq. 6.1 gives Q at each, and every
+// I1's odometry (the common frame, started at the true pose), the first without a prior (ORB
+// matches, or where they fail alignment from every keyframe's pose), the others from the pose the
+// previous support view predicts; eq. 6.1 gives Q at each, and every
 // pose of the phase is registered by eq. 6.3 with Q interpolated (Lagrange, first, middle and
 // last support view) or fitted (Ceres, all; also with the Huber fit alone).
 //
