@@ -72,5 +72,13 @@ inline I16 GatherBytes(const char* base, I16 offset) {
 #endif
 }
 inline I16 GatherInt(const int32_t* p, I16 index) { return GatherLanes<I16>(p, index); }
+/// p[index[k]] = v[k] per lane (one scatter instruction with AVX-512).
+inline void Scatter(float* p, I16 index, F16 v) {
+#if defined(__AVX512F__)
+  _mm512_i32scatter_ps(p, (__m512i)index, (__m512)v, 4);
+#else
+  for (int k = 0; k < kLanes; ++k) p[index[k]] = v[k];
+#endif
+}
 
 }  // namespace novelty::stats::lanes

@@ -5,8 +5,9 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <optional>
+#include <numeric>
 #include <opencv2/core/utility.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -55,6 +56,26 @@ inline F16 HalfToFloat(I16 bits) {
   return v;
 #endif
 }
+// Stores one value (T = float) or sixteen at `stride` floats apart (interleaved channels).
+inline void ScatterLane(float* p, int, float v) {
+  *p = v;
+}
+inline void ScatterLane(float* p, int stride, F16 v) {
+  stats::lanes::Scatter(p, stats::lanes::AsInt(stats::lanes::Iota()) * stride, v);
+}
+// 255 where `hit`, 0 elsewhere, for one pixel or sixteen; returns how many are hit.
+inline int StoreValid(uint8_t* p, bool hit) {
+  *p = hit ? 255 : 0;
+  return hit;
+}
+inline int StoreValid(uint8_t* p, I16 hit) {
+  int n = 0;
+  for (int k = 0; k < kLanes; ++k) {
+    p[k] = hit[k] ? 255 : 0;
+    n += hit[k] != 0;
+  }
+  return n;
+}
 inline float Pow(float x, float p) { return std::pow(x, p); }
 inline F16 Pow(F16 x, float p) {
   for (int k = 0; k < kLanes; ++k) x[k] = std::pow(x[k], p);
@@ -76,14 +97,10 @@ inline void LoadMap(const cv::Vec2f* map, F16& u, F16& v) {
   v = __builtin_shuffle(a, b, I16{1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31});
 }
 
-// Channels whose accumulator rows the final pass keeps in registers (more are read per pixel).
-constexpr int kMaxPlanarChannels = 8;
-
-// A view's plane as the kernel reads it, in one of three forms:
-//   float:  continuous floats, one gather per channel and bilinear corner;
-//   packed: 8-bit planes of up to four channels as one 32-bit word per pixel (RGB → RGBA), so
-//           one gather per corner fetches every channel — for RGB three times fewer gathers;
-//   half:   half-float planes in place, one gather per two channels (HalfPlane below).
+// A view's plane as the kernel reads it, in place, in one of three forms:
+//   float: continuous floats, one gather per channel and bilinear corner;
+//   bytes: 8-bit planes of 1–4 channels, one 32-bit gather per corner fetching every channel;
+//   half:  half-float planes of 2–8 channels, one gather per two channels (HalfPlane below).
 // Corner(pixel) is what a corner's samples are read from; Value(corner, c) is channel c there.
 struct FloatPlane {
   const float* data;
@@ -98,17 +115,24 @@ struct FloatPlane {
   }
 };
 
-struct PackedPlane {
-  const int32_t* data;
-  int cols, rows, channels;
+// 8-bit pixels of `channels` bytes, read in place: the 32-bit word starting at the pixel's first
+// byte holds all its channels. The last pixels' words would run past the plane, so a word starts
+// at most four bytes before its end and is shifted down to the pixel (`Corner` keeps the shift).
+struct BytePlane {
+  const char* data;
+  int cols, rows, channels, last_word;  // last_word: the plane's size in bytes − 4
   template <class I>
   I Corner(I pixel) const {
-    return GatherWord(data, pixel);
+    const I byte = pixel * channels;
+    const I start = Min(byte, last_word);
+    return GatherBytes(data, start) >> ((byte - start) * 8);  // Value reads the low bytes only
   }
   template <class T, class I>
   T Value(I word, int c) const {
     return ToFloat((word >> (8 * c)) & 0xFF);
   }
+  static int Min(int a, int b) { return std::min(a, b); }
+  static I16 Min(I16 a, int b) { return a < b ? a : I16{} + b; }
 };
 
 // Half-float planes of 2…8 channels, read in place (no float copy of the view): the 32-bit word
@@ -133,57 +157,72 @@ struct HalfPlane {
   }
 };
 
-std::optional<HalfPlane> AsHalfPlane(const cv::Mat& plane) {
-  if (plane.depth() != CV_16F || plane.channels() < 2 ||
-      plane.channels() > HalfPlane::kMaxChannels || !plane.isContinuous())
-    return std::nullopt;
-  return HalfPlane{reinterpret_cast<const char*>(plane.ptr()), plane.cols, plane.rows,
-                   plane.channels()};
+bool AllOfDepth(const std::vector<cv::Mat>& planes, int depth) {
+  return std::all_of(planes.begin(), planes.end(),
+                     [&](const cv::Mat& p) { return p.depth() == depth && p.isContinuous(); });
 }
 
-// Converts to the float form where the plane is not continuous float already.
-FloatPlane AsFloatPlane(const cv::Mat& plane, cv::Mat& scratch) {
-  const cv::Mat* m = &plane;
-  if (plane.depth() != CV_32F || !plane.isContinuous()) {
-    plane.convertTo(scratch, CV_32F);
-    m = &scratch;
+// The views' planes in one form for all (the kernel is compiled per form): bytes or half floats
+// in place when every plane is continuous of that kind, else floats (converted where needed into
+// `scratch`, one per view).
+std::optional<std::vector<BytePlane>> AsBytePlanes(const std::vector<cv::Mat>& planes) {
+  if (!AllOfDepth(planes, CV_8U) || planes[0].channels() > 4) return std::nullopt;
+  std::vector<BytePlane> out;
+  for (const cv::Mat& p : planes) {
+    const std::size_t bytes = p.total() * p.elemSize();
+    if (bytes < 4) return std::nullopt;
+    out.push_back(
+        {reinterpret_cast<const char*>(p.ptr()), p.cols, p.rows, p.channels(), int(bytes - 4)});
   }
-  return {m->ptr<float>(), m->cols, m->rows, m->channels()};
+  return out;
 }
 
-// 8-bit planes of 1–4 channels, padded to four bytes per pixel.
-std::optional<PackedPlane> AsPackedPlane(const cv::Mat& plane, cv::Mat& scratch) {
-  if (plane.depth() != CV_8U || plane.channels() > 4) return std::nullopt;
-  // One pass: the plane's channels into bytes 0…n−1 of each word, zeros after (from index −1).
-  scratch.create(plane.size(), CV_8UC4);
-  std::vector<int> from_to;
-  for (int c = 0; c < 4; ++c) from_to.insert(from_to.end(), {c < plane.channels() ? c : -1, c});
-  cv::mixChannels(&plane, 1, &scratch, 1, from_to.data(), 4);
-  return PackedPlane{reinterpret_cast<const int32_t*>(scratch.ptr()), plane.cols, plane.rows,
-                     plane.channels()};
+std::optional<std::vector<HalfPlane>> AsHalfPlanes(const std::vector<cv::Mat>& planes) {
+  const int channels = planes[0].channels();
+  if (!AllOfDepth(planes, CV_16F) || channels < 2 || channels > HalfPlane::kMaxChannels)
+    return std::nullopt;
+  std::vector<HalfPlane> out;
+  for (const cv::Mat& p : planes)
+    out.push_back({reinterpret_cast<const char*>(p.ptr()), p.cols, p.rows, channels});
+  return out;
 }
 
-// What the kernel reads for one view (all per-pixel inputs are rows of the virtual image).
-template <class Plane>
-struct ViewInputs {
-  const WarpField* warp;
-  Plane plane;
-  float weight;
-};
+std::vector<FloatPlane> AsFloatPlanes(const std::vector<cv::Mat>& planes,
+                                      std::vector<cv::Mat>& scratch) {
+  scratch.resize(planes.size());
+  std::vector<FloatPlane> out;
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    const cv::Mat* m = &planes[k];
+    if (m->depth() != CV_32F || !m->isContinuous()) {
+      m->convertTo(scratch[k], CV_32F);
+      m = &scratch[k];
+    }
+    out.push_back({m->ptr<float>(), m->cols, m->rows, m->channels()});
+  }
+  return out;
+}
 
-// Adds the view's weighted bilinear samples at pixels [x, x + lanes) of row y to the planar
-// accumulators (one CV_32FC1 per channel) and the weight sum. Coordinates are clamped to the
-// source image (the border replicated). T = float for one pixel, F16 for sixteen.
+// The channels one pass of the kernel sums in registers; planes with more take several passes.
+constexpr int kPassChannels = 8;
+
+// One view's weighted bilinear sample at pixels [x, x + lanes) of row y, channels
+// [c0, c0 + n), added to acc[0…n) and its weight to `weight_sum`. `nearest`: the depth limit of
+// depth_tolerance (+inf without). Coordinates are clamped to the source image (the border
+// replicated). T = float for one pixel, F16 for sixteen.
 template <typename T, class Plane>
-inline void AccumulatePixels(const ViewInputs<Plane>& in, const BlendOptions& o,
-                             const cv::Mat& nearest, int y, int x, std::vector<cv::Mat>& acc,
-                             cv::Mat& weight_sum) {
-  const WarpField& w = *in.warp;
-  const Plane& p = in.plane;
-  const T d = LoadLane(w.depth.ptr<float>(y) + x, T{});
-  auto valid = d > 0.0f;
-  if (!nearest.empty()) valid = valid & (d <= LoadLane(nearest.ptr<float>(y) + x, T{}));
-  T weight = T{} + in.weight;
+inline void AddView(const WarpField& w, const Plane& p, float view_weight, const BlendOptions& o,
+                    T nearest, int y, int x, int c0, int n, T* acc, T& weight_sum) {
+  T u, v;
+  LoadMap(w.map.ptr<cv::Vec2f>(y) + x, u, v);
+  // Covered where the map holds source coordinates (uncovered: −1): the depth is read only when
+  // an option needs it, which saves a third of what the kernel streams through.
+  auto valid = u > -0.5f;
+  T d{};
+  if (o.depth_tolerance > 0.0 || o.resolution_power > 0.0) {
+    d = LoadLane(w.depth.ptr<float>(y) + x, T{});
+    valid = valid & (d <= nearest);
+  }
+  T weight = T{} + view_weight;
   if (o.resolution_power > 0.0) {
     weight *= Pow(d / LoadLane(w.source_depth.ptr<float>(y) + x, T{}), float(o.resolution_power));
   }
@@ -192,8 +231,6 @@ inline void AccumulatePixels(const ViewInputs<Plane>& in, const BlendOptions& o,
     weight *= Pow(cos_angle > 1e-6f ? cos_angle : T{} + 1e-6f, float(o.angle_power));
   }
   weight = valid ? weight : T{};
-  T u, v;
-  LoadMap(w.map.ptr<cv::Vec2f>(y) + x, u, v);
   u = Clamp(u, 0.0f, float(p.cols - 1));
   v = Clamp(v, 0.0f, float(p.rows - 1));
   const auto x0 = ToInt(u), y0 = ToInt(v);  // non-negative: truncation is floor
@@ -203,44 +240,68 @@ inline void AccumulatePixels(const ViewInputs<Plane>& in, const BlendOptions& o,
           w01 = weight * (1.0f - fx) * fy, w11 = weight * fx * fy;
   const auto c00 = p.Corner(y0 * p.cols + x0), c10 = p.Corner(y0 * p.cols + x1);
   const auto c01 = p.Corner(y1 * p.cols + x0), c11 = p.Corner(y1 * p.cols + x1);
-  for (int c = 0; c < p.channels; ++c) {
+  for (int i = 0; i < n; ++i) {
+    const int c = c0 + i;
     const T sample = w00 * p.template Value<T>(c00, c) + w10 * p.template Value<T>(c10, c) +
                      w01 * p.template Value<T>(c01, c) + w11 * p.template Value<T>(c11, c);
-    float* a = acc[std::size_t(c)].ptr<float>(y) + x;
-    StoreLane(a, LoadLane(a, T{}) + (valid ? sample : T{}));  // select: a NaN sample stays out
+    acc[i] += valid ? sample : T{};  // select: a NaN sample stays out
   }
-  float* ws = weight_sum.ptr<float>(y) + x;
-  StoreLane(ws, LoadLane(ws, T{}) + weight);
+  weight_sum += weight;
 }
 
-// Adds one view to the accumulators, sixteen pixels at a time.
+// The blend at pixels [x, x + lanes) of row y: per pass of channels, every view's samples summed
+// in registers, then divided by the weight sum and written interleaved; NaN where no view
+// contributed. Returns the pixels covered.
+template <typename T, class Plane>
+inline int BlendPixels(const std::vector<const WarpField*>& warps, const std::vector<Plane>& planes,
+                       const std::vector<float>& weights, const BlendOptions& o, int y, int x,
+                       BlendResult& out) {
+  const std::size_t views = warps.size();
+  T nearest = T{} + std::numeric_limits<float>::infinity();
+  if (o.depth_tolerance > 0.0) {  // only views within the tolerance of the nearest depth
+    for (std::size_t k = 0; k < views; ++k) {
+      const T d = LoadLane(warps[k]->depth.ptr<float>(y) + x, T{});
+      nearest = (d > 0.0f) & (d < nearest) ? d : nearest;
+    }
+    nearest *= float(1.0 + o.depth_tolerance);
+  }
+  const int channels = planes[0].channels;
+  float* row = out.value.ptr<float>(y);
+  T weight_sum{};
+  for (int c0 = 0; c0 < channels; c0 += kPassChannels) {
+    const int n = std::min(kPassChannels, channels - c0);
+    T acc[kPassChannels] = {};
+    weight_sum = T{};
+    for (std::size_t k = 0; k < views; ++k) {
+      AddView(*warps[k], planes[k], weights[k], o, nearest, y, x, c0, n, acc, weight_sum);
+    }
+    // Divide, not multiply by 1/sum: a sum of tiny (denormal) weights has no finite inverse.
+    const auto hit = weight_sum > 0.0f;
+    const T nan = T{} + std::numeric_limits<float>::quiet_NaN();
+    for (int i = 0; i < n; ++i) {
+      ScatterLane(row + std::size_t(x) * channels + c0 + i, channels,
+                  hit ? acc[i] / weight_sum : nan);
+    }
+  }
+  return StoreValid(out.valid.ptr<uint8_t>(y) + x, weight_sum > 0.0f);
+}
+
+// Every pixel, rows on all cores.
 template <class Plane>
-void AccumulateView(const ViewInputs<Plane>& in, const BlendOptions& o, const cv::Mat& nearest,
-                    std::vector<cv::Mat>& acc, cv::Mat& weight_sum) {
-  const int width = weight_sum.cols;
-  cv::parallel_for_(cv::Range(0, weight_sum.rows), [&](const cv::Range& rows) {
+int BlendAll(const std::vector<const WarpField*>& warps, const std::vector<Plane>& planes,
+             const std::vector<float>& weights, const BlendOptions& o, BlendResult& out) {
+  const int width = out.value.cols;
+  std::vector<int> covered(std::size_t(out.value.rows), 0);
+  cv::parallel_for_(cv::Range(0, out.value.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
-      int x = 0;
-      for (; x + kLanes <= width; x += kLanes) {
-        AccumulatePixels<F16>(in, o, nearest, y, x, acc, weight_sum);
-      }
-      for (; x < width; ++x) AccumulatePixels<float>(in, o, nearest, y, x, acc, weight_sum);
+      int x = 0, n = 0;
+      for (; x + kLanes <= width; x += kLanes)
+        n += BlendPixels<F16>(warps, planes, weights, o, y, x, out);
+      for (; x < width; ++x) n += BlendPixels<float>(warps, planes, weights, o, y, x, out);
+      covered[std::size_t(y)] = n;
     }
   });
-}
-
-// Per pixel, the nearest warped depth over all views × (1 + tolerance); +inf where none.
-cv::Mat NearestDepth(const std::vector<WarpField>& warps, double tolerance) {
-  cv::Mat nearest(warps[0].depth.size(), CV_32FC1,
-                  cv::Scalar(std::numeric_limits<float>::infinity()));
-  for (const WarpField& w : warps) {
-    // Uncovered pixels have depth 0: only positive depths count.
-    cv::Mat positive = w.depth > 0.0f;
-    cv::Mat d = cv::min(nearest, w.depth);
-    d.copyTo(nearest, positive);
-  }
-  nearest *= 1.0 + tolerance;
-  return nearest;
+  return std::accumulate(covered.begin(), covered.end(), 0);
 }
 
 }  // namespace
@@ -275,52 +336,23 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
       throw std::invalid_argument("BlendPlanes: unsupported plane depth " + std::to_string(depth));
     }
   }
-  // View by view into planar accumulators (streaming through each warp field once), then one
-  // pass dividing by the weight sum and interleaving the channels.
-  const cv::Mat nearest = o.depth_tolerance > 0.0 ? NearestDepth(warps, o.depth_tolerance)
-                                                  : cv::Mat();
-  std::vector<cv::Mat> acc(static_cast<std::size_t>(channels));
-  for (cv::Mat& a : acc) a = cv::Mat::zeros(size, CV_32FC1);
-  cv::Mat weight_sum = cv::Mat::zeros(size, CV_32FC1);
-  cv::Mat scratch;
-  for (std::size_t k = 0; k < warps.size(); ++k) {
-    const float weight = o.weights.empty() ? 1.0f : float(o.weights[k]);
-    if (const auto packed = AsPackedPlane(planes[k], scratch)) {
-      AccumulateView(ViewInputs<PackedPlane>{&warps[k], *packed, weight}, o, nearest, acc,
-                     weight_sum);
-    } else if (const auto half = AsHalfPlane(planes[k])) {
-      AccumulateView(ViewInputs<HalfPlane>{&warps[k], *half, weight}, o, nearest, acc,
-                     weight_sum);
-    } else {
-      AccumulateView(ViewInputs<FloatPlane>{&warps[k], AsFloatPlane(planes[k], scratch), weight},
-                     o, nearest, acc, weight_sum);
-    }
-  }
   BlendResult result;
   result.value.create(size, CV_32FC(channels));
   result.valid.create(size, CV_8UC1);
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      float* out = result.value.ptr<float>(y);
-      const float* wsum = weight_sum.ptr<float>(y);
-      uint8_t* valid = result.valid.ptr<uint8_t>(y);
-      const float* a[kMaxPlanarChannels];
-      const int n = std::min(channels, kMaxPlanarChannels);
-      for (int c = 0; c < n; ++c) a[c] = acc[std::size_t(c)].ptr<float>(y);
-      for (int x = 0; x < size.width; ++x) {
-        const bool hit = wsum[x] > 0.0f;
-        valid[x] = hit ? 255 : 0;
-        float* o_px = out + std::size_t(x) * channels;
-        // Divide, not multiply by 1/sum: a sum of tiny (denormal) weights has no finite inverse.
-        for (int c = 0; c < n; ++c) o_px[c] = hit ? a[c][x] / wsum[x] : nan;
-        for (int c = n; c < channels; ++c) {
-          o_px[c] = hit ? acc[std::size_t(c)].ptr<float>(y)[x] / wsum[x] : nan;
-        }
-      }
-    }
-  });
-  result.covered = cv::countNonZero(result.valid);
+  std::vector<const WarpField*> fields;
+  std::vector<float> weights;
+  for (std::size_t k = 0; k < warps.size(); ++k) {
+    fields.push_back(&warps[k]);
+    weights.push_back(o.weights.empty() ? 1.0f : float(o.weights[k]));
+  }
+  if (const auto bytes = AsBytePlanes(planes)) {
+    result.covered = BlendAll(fields, *bytes, weights, o, result);
+  } else if (const auto half = AsHalfPlanes(planes)) {
+    result.covered = BlendAll(fields, *half, weights, o, result);
+  } else {
+    std::vector<cv::Mat> scratch;
+    result.covered = BlendAll(fields, AsFloatPlanes(planes, scratch), weights, o, result);
+  }
   return result;
 }
 

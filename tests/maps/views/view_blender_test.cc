@@ -62,14 +62,17 @@ TEST(ViewBlender, MultiChannelPlanesKeepTheirChannels) {
 TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
   // 40 columns: two sixteen-pixel groups and a tail of eight, so both kernel forms run. The map
   // samples between pixels; a plane linear in x and y is reproduced exactly by bilinear
-  // interpolation, clamped at the border (u ≤ 39). 8-bit planes take the packed-word path,
-  // half-float planes the in-place path (2 and 7 channels: whole words, and an odd last one).
+  // interpolation, clamped at the border (u ≤ 39, v ≤ 19: the last pixel is read). 8-bit planes
+  // take the in-place word path (1 and 3 channels: the last pixels' words are shifted), half-float
+  // planes the in-place path (2 and 7 channels: whole words, and an odd last one); 10 float
+  // channels take two passes.
   const int w = 40, h = 20;
   WarpField f = Field(w, h, w, 2.0f);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) f.map.at<cv::Vec2f>(y, x) = cv::Vec2f(x + 0.25f, y * 0.5f + 0.5f);
-  const std::pair<int, int> cases[] = {{CV_8U, 3},  {CV_16F, 2}, {CV_16F, 3},
-                                       {CV_16F, 7}, {CV_32F, 3}, {CV_32F, 7}};
+    for (int x = 0; x < w; ++x) f.map.at<cv::Vec2f>(y, x) = cv::Vec2f(x + 0.25f, y + 0.5f);
+  const std::pair<int, int> cases[] = {{CV_8U, 1},   {CV_8U, 3},  {CV_8U, 4},  {CV_16F, 2},
+                                       {CV_16F, 3},  {CV_16F, 7}, {CV_32F, 3}, {CV_32F, 7},
+                                       {CV_32F, 10}, {CV_16U, 3}};
   for (const auto& [depth, channels] : cases) {
     cv::Mat linear(h, w, CV_32FC(channels));
     for (int y = 0; y < h; ++y)
@@ -83,13 +86,27 @@ TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
         for (int c = 0; c < channels; ++c) {
-          const float u = std::min(x + 0.25f, float(w - 1)), v = y * 0.5f + 0.5f;
+          const float u = std::min(x + 0.25f, float(w - 1)), v = std::min(y + 0.5f, float(h - 1));
           ASSERT_NEAR(r.value.ptr<float>(y)[x * channels + c], 2.0f * u + 3.0f * v + 25.0f * c,
                       1e-3)
               << "depth " << depth << ", " << channels << " channels, at " << x << "," << y
               << " channel " << c;
         }
   }
+}
+
+TEST(ViewBlender, PlanesOfDifferentDepthsOrLayoutsBlendAlike) {
+  // One 8-bit view, one float view, one 8-bit view cut from a larger image (not continuous): the
+  // kernel reads all three as floats.
+  const std::vector<WarpField> warps = {Field(20, 3, 20, 1.0f), Field(20, 3, 20, 1.0f),
+                                        Field(20, 3, 20, 1.0f)};
+  const cv::Mat larger(5, 30, CV_8UC3, cv::Scalar(40, 50, 60));
+  const std::vector<cv::Mat> planes = {cv::Mat(3, 20, CV_8UC3, cv::Scalar(10, 20, 30)),
+                                       cv::Mat(3, 20, CV_32FC3, cv::Scalar(31, 41, 51)),
+                                       larger(cv::Rect(2, 1, 20, 3))};
+  const BlendResult r = BlendPlanes(warps, planes);
+  ASSERT_EQ(r.covered, 60);
+  for (int x : {0, 17, 19}) EXPECT_EQ(r.value.at<cv::Vec3f>(2, x), cv::Vec3f(27, 37, 47)) << x;
 }
 
 TEST(ViewBlender, MismatchedInputIsRejected) {
