@@ -72,6 +72,33 @@ inline I16 GatherBytes(const char* base, I16 offset) {
 #endif
 }
 inline I16 GatherInt(const int32_t* p, I16 index) { return GatherLanes<I16>(p, index); }
+/// p[k] where mask[k] (-1), 0 elsewhere; masked-out lanes are not read (may lie past the end).
+inline F16 LoadMasked(const float* p, I16 mask) {
+#if defined(__AVX512F__)
+  return (F16)_mm512_maskz_loadu_ps(_mm512_cmpneq_epi32_mask((__m512i)mask, __m512i{}), p);
+#else
+  F16 v{};
+  for (int k = 0; k < kLanes; ++k)
+    if (mask[k]) v[k] = p[k];
+  return v;
+#endif
+}
+/// p[k] = v[k] where mask[k]; other lanes are neither read nor written.
+inline void StoreMasked(float* p, F16 v, I16 mask) {
+#if defined(__AVX512F__)
+  _mm512_mask_storeu_ps(p, _mm512_cmpneq_epi32_mask((__m512i)mask, __m512i{}), (__m512)v);
+#else
+  for (int k = 0; k < kLanes; ++k)
+    if (mask[k]) p[k] = v[k];
+#endif
+}
+/// Pairs (a[k], b[k]) interleaved into p[2k], p[2k+1] where mask[k] (e.g. CV_32FC2 pixels).
+inline void StoreMaskedPairs(float* p, F16 a, F16 b, I16 mask) {
+  const I16 lo{0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23};
+  const I16 spread_lo{0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7};
+  StoreMasked(p, __builtin_shuffle(a, b, lo), __builtin_shuffle(mask, spread_lo));
+  StoreMasked(p + kLanes, __builtin_shuffle(a, b, lo + 8), __builtin_shuffle(mask, spread_lo + 8));
+}
 /// p[index[k]] = v[k] per lane (one scatter instruction with AVX-512).
 inline void Scatter(float* p, I16 index, F16 v) {
 #if defined(__AVX512F__)

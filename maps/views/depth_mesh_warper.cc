@@ -111,18 +111,26 @@ void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, co
   });
 }
 
-// What the rasteriser keeps per virtual pixel, packed so that one z-test and write touch one
-// 16-byte slot: inverse depth (the z-buffer, 0 = empty — nearer is larger, so no division per
-// pixel), the source depth and the source coordinates.
-struct alignas(16) Texel {
-  float inv_z, source_depth, u, v;
-};
-
-// One thread's target.
-struct TargetView {
-  Texel* texels;
+// What the rasteriser keeps per virtual pixel, in planes so that a span of sixteen pixels is
+// z-tested and written with a few vector instructions: inverse depth (the z-buffer, 0 = empty —
+// nearer is larger, so no division per pixel), the source depth and the source coordinates. The
+// first thread's target is the warp field itself (inverse depth in its depth plane, converted by
+// Finalise), so a view warped on one thread is never copied.
+struct Target {
+  float* inv_z;
+  float* source_depth;
+  float* uv;  // (u, v) interleaved, as WarpField::map
   int width, height;
 };
+
+// z-test and write of one pixel.
+inline void WritePixel(const Target& t, std::size_t j, float iz, float zs, float u, float v) {
+  if (iz <= t.inv_z[j]) return;  // z-test on inverse depth
+  t.inv_z[j] = iz;
+  t.source_depth[j] = zs;
+  t.uv[2 * j] = u;
+  t.uv[2 * j + 1] = v;
+}
 
 // Rasterises one triangle with vertices a, b, c (source pixel coordinates sa, sb, sc) into the
 // pixels [x0, x1] × [y0, y1] (already clipped to the image). Pixel centres at integer
@@ -131,7 +139,7 @@ inline __attribute__((always_inline)) void Rasterise(const Vertex& a, const Vert
                                                      const Vertex& c, const cv::Vec2f& sa,
                                                      const cv::Vec2f& sb, const cv::Vec2f& sc,
                                                      int x0, int x1, int y0, int y1,
-                                                     const TargetView& t) {
+                                                     const Target& t) {
   const float area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
   if (std::abs(area) < 1e-12f) return;
   const float inv_area = 1.0f / area;
@@ -144,10 +152,11 @@ inline __attribute__((always_inline)) void Rasterise(const Vertex& a, const Vert
       const float wa = 1.0f - wb - wc;
       if (wa < -1e-5f || wb < -1e-5f || wc < -1e-5f) continue;
       const float iz = wa * a.inv_z + wb * b.inv_z + wc * c.inv_z;
-      Texel& out = t.texels[std::size_t(y) * t.width + x];
-      if (iz <= out.inv_z) continue;  // z-test on inverse depth
+      const std::size_t j = std::size_t(y) * t.width + x;
+      if (iz <= t.inv_z[j]) continue;  // z-test first: most pixels fail it or are outside
       const cv::Vec2f s = wa * sa + wb * sb + wc * sc;
-      out = {iz, wa * a.source_depth + wb * b.source_depth + wc * c.source_depth, s[0], s[1]};
+      WritePixel(t, j, iz, wa * a.source_depth + wb * b.source_depth + wc * c.source_depth, s[0],
+                 s[1]);
     }
   }
 }
@@ -177,7 +186,7 @@ cv::Mat ViewAngles(const cv::Mat& depth, const PinholeCamera& cam, const Eigen::
 }
 
 // The general case: one quad (source pixels (u, r)…(u+1, r+1)) as two triangles.
-void RasteriseQuad(const Vertices& v, int w, int u, int r, float max_ratio, const TargetView& t) {
+void RasteriseQuad(const Vertices& v, int w, int u, int r, float max_ratio, const Target& t) {
   const std::size_t i = std::size_t(r) * w + u;
   const Vertex p00 = v[i], p10 = v[i + 1], p01 = v[i + w], p11 = v[i + w + 1];
   // The quad's pixel-centre bounding box, clipped to the image.
@@ -260,16 +269,14 @@ inline LaneHits Evaluate(const QuadLanes& q, F16 px, F16 py, I16 in_box) {
 }
 
 // z-test and write of one lane's hit at texel j; (su, sv) offsets from source pixel (u, r).
-inline void Write(const LaneHits& h, int k, std::size_t j, float u, float r, const TargetView& t) {
-  Texel& out = t.texels[j];
-  if (h.iz[k] <= out.inv_z) return;  // z-test on inverse depth
-  out = {h.iz[k], h.zs[k], u + h.su[k], r + h.sv[k]};
+inline void Write(const LaneHits& h, int k, std::size_t j, float u, float r, const Target& t) {
+  WritePixel(t, j, h.iz[k], h.zs[k], u + h.su[k], r + h.sv[k]);
 }
 
 // One quad whose box holds more than 2×2 pixel centres (magnified, or stretched): the box in
 // tiles of 4×4 pixels, each tile one 16-lane evaluation.
-void RasteriseQuadTiled(const Vertices& v, int w, int u, int r, float max_ratio,
-                        const TargetView& t, int x0, int x1, int y0, int y1) {
+void RasteriseQuadTiled(const Vertices& v, int w, int u, int r, float max_ratio, const Target& t,
+                        int x0, int x1, int y0, int y1) {
   const std::size_t i = std::size_t(r) * w + u;
   const std::size_t c[4] = {i, i + 1, i + w, i + w + 1};  // p00, p10, p01, p11
   F16 x[4], y[4], iz[4], z[4];
@@ -300,7 +307,7 @@ void RasteriseQuadTiled(const Vertices& v, int w, int u, int r, float max_ratio,
 // pixel-centre bounding box holds at most 2×2 pixel centres; for those lanes the four candidate
 // pixels are decided with SIMD arithmetic — the same formulas as Rasterise — and only the z-test
 // and write are scalar. Lanes whose box holds more pixels go through RasteriseQuadTiled.
-void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, const TargetView& t) {
+void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, const Target& t) {
   const std::size_t base = std::size_t(r) * w;
   const F16 zero = F16{}, one = zero + 1.0f;
   const F16 x_max = zero + float(t.width - 1), y_max = zero + float(t.height - 1);
@@ -370,7 +377,7 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
 // with a corner behind the near plane, or seen edge-on (not convex on screen), is drawn quad by
 // quad instead.
 void RasteriseBlock(const Vertices& v, int w, int u0, int r0, int size, float max_ratio,
-                    const TargetView& t) {
+                    const Target& t) {
   const std::size_t i = std::size_t(r0) * w + u0, down = std::size_t(size) * w;
   // Corners in order around the block: p00, p10, p11, p01.
   const std::size_t c[4] = {i, i + size, i + down + size, i + down};
@@ -423,23 +430,23 @@ void RasteriseBlock(const Vertices& v, int w, int u0, int r0, int size, float ma
     }
     const int px0 = std::max(0, int(std::ceil(xl - kEdge)));
     const int px1 = std::min(t.width - 1, int(std::floor(xr + kEdge)));
-    Texel* row = t.texels + std::size_t(py) * t.width;
+    const std::size_t row = std::size_t(py) * t.width;
     F16 at_row[4];
     for (int k = 0; k < 4; ++k) at_row[k] = F16{} + (attr[k][0] + gy[k] * (fy - y[0]));
-    // Sixteen pixels of the span at a time: the attributes and divisions in lanes, the z-test
-    // and write per pixel.
+    // Sixteen pixels of the span at a time, z-test and write included (masked: the span's end
+    // and the pixels that hold a nearer surface are left alone).
     for (int px = px0; px <= px1; px += kLanes) {
       const F16 fx = lane + (float(px) - x[0]);
       const F16 iz = at_row[0] + gx[0] * fx, a = at_row[1] + gx[1] * fx;
       const F16 inv_a = (F16{} + 1.0f) / a;
       const F16 us = (at_row[2] + gx[2] * fx) * inv_a, vs = (at_row[3] + gx[3] * fx) * inv_a;
       const F16 zs = a / iz;
-      const int n = std::min(kLanes, px1 - px + 1);
-      for (int k = 0; k < n; ++k) {
-        Texel& out = row[px + k];
-        if (iz[k] <= out.inv_z) continue;  // z-test on inverse depth
-        out = {iz[k], zs[k], us[k], vs[k]};
-      }
+      const std::size_t j = row + std::size_t(px);
+      const I16 in_span = lane < float(px1 - px + 1);
+      const I16 nearer = in_span & (iz > LoadMasked(t.inv_z + j, in_span));
+      StoreMasked(t.inv_z + j, iz, nearer);
+      StoreMasked(t.source_depth + j, zs, nearer);
+      StoreMaskedPairs(t.uv + 2 * j, us, vs, nearer);
     }
   }
 }
@@ -475,44 +482,74 @@ cv::Mat PlanarBlocksFor(const cv::Mat& depth, const WarpOptions& options) {
   return FindPlanarBlocks(depth, options.planar_block, options.planar_tolerance);
 }
 
+// The buffers of a target other than the field (threads after the first of a split view).
+struct TargetBuffers {
+  std::vector<float> inv_z, source_depth, uv;
+  Target Clear(int width, int height) {
+    const std::size_t n = std::size_t(width) * height;
+    inv_z.assign(n, 0.0f);
+    source_depth.resize(n);
+    uv.resize(2 * n);
+    return {inv_z.data(), source_depth.data(), uv.data(), width, height};
+  }
+};
+
 struct DepthMeshWarper::Scratch {
   Vertices vertices;
-  std::vector<std::vector<Texel>> targets;  // one per thread
+  std::vector<TargetBuffers> extra;  // threads 1… of a view split between threads
 };
 
 namespace {
 
-// The field from the threads' targets: per virtual pixel the nearest surface any thread drew.
-void Finalise(const std::vector<std::vector<Texel>>& targets, int width, int height, int threads,
-              WarpField& field) {
+// The field as the first target: its depth plane holds the z-buffer until Finalise.
+Target FieldTarget(WarpField& field, int width, int height) {
   field.depth.create(height, width, CV_32FC1);
   field.source_depth.create(height, width, CV_32FC1);
   field.map.create(height, width, CV_32FC2);
-  std::vector<int> covered(std::size_t(height), 0);
-  ParallelBlocks(height, threads, [&](int y0, int y1) {
+  field.depth.setTo(0.0f);
+  return {field.depth.ptr<float>(), field.source_depth.ptr<float>(), field.map.ptr<float>(), width,
+          height};
+}
+
+// Per virtual pixel, the nearest surface of the other targets into the first.
+void Merge(const std::vector<Target>& targets, int threads) {
+  const Target& t = targets[0];
+  ParallelBlocks(t.height, threads, [&](int y0, int y1) {
+    for (std::size_t j = std::size_t(y0) * t.width; j < std::size_t(y1) * t.width; ++j) {
+      for (std::size_t k = 1; k < targets.size(); ++k) {
+        const Target& o = targets[k];
+        WritePixel(t, j, o.inv_z[j], o.source_depth[j], o.uv[2 * j], o.uv[2 * j + 1]);
+      }
+    }
+  });
+}
+
+// The z-buffer becomes the field's depth (0 where uncovered, not 1/0), and uncovered pixels get
+// the field's markers (map −1, source depth 0). Returns the covered pixels.
+int Finalise(const Target& t, int threads) {
+  std::vector<int> covered(std::size_t(t.height), 0);
+  ParallelBlocks(t.height, threads, [&](int y0, int y1) {
+    const F16 zero{}, one = zero + 1.0f;
     for (int y = y0; y < y1; ++y) {
-      float* depth = field.depth.ptr<float>(y);
-      float* source_depth = field.source_depth.ptr<float>(y);
-      cv::Vec2f* map = field.map.ptr<cv::Vec2f>(y);
-      const std::size_t row = std::size_t(y) * width;
+      const std::size_t row = std::size_t(y) * t.width;
       int n = 0;
-      for (int x = 0; x < width; ++x) {
-        const Texel* best = &targets[0][row + x];
-        for (std::size_t k = 1; k < targets.size(); ++k) {
-          const Texel& other = targets[k][row + x];
-          if (other.inv_z > best->inv_z) best = &other;
-        }
-        const bool hit = best->inv_z > 0.0f;
-        depth[x] = hit ? 1.0f / best->inv_z : 0.0f;  // 0, not 1/0
-        source_depth[x] = hit ? best->source_depth : 0.0f;
-        map[x] = hit ? cv::Vec2f(best->u, best->v) : cv::Vec2f(-1.0f, -1.0f);
-        n += hit;
+      for (int x = 0; x < t.width; x += kLanes) {
+        const std::size_t j = row + std::size_t(x);
+        const I16 in_row = stats::lanes::Iota() < float(t.width - x);
+        const F16 iz = LoadMasked(t.inv_z + j, in_row);
+        const I16 hit = iz > zero, miss = in_row & ~hit;
+        StoreMasked(t.inv_z + j, one / iz, in_row & hit);
+        StoreMasked(t.inv_z + j, zero, miss);
+        StoreMasked(t.source_depth + j, zero, miss);
+        StoreMaskedPairs(t.uv + 2 * j, zero - 1.0f, zero - 1.0f, miss);
+        for (int k = 0; k < kLanes; ++k) n += hit[k] != 0;
       }
       covered[std::size_t(y)] = n;
     }
   });
-  field.covered = 0;
-  for (int n : covered) field.covered += n;
+  int total = 0;
+  for (int n : covered) total += n;
+  return total;
 }
 
 }  // namespace
@@ -592,17 +629,16 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
                               src.width, v);
   }
 
-  // Threads take blocks of source rows, each with its own buffers, merged by depth afterwards.
+  // Threads take blocks of source rows, each with its own target, merged by depth afterwards.
   const int n_threads = std::max(1, std::min(src.height - 1, threads));
-  std::vector<std::vector<Texel>>& targets = scratch.targets;
-  targets.resize(std::size_t(n_threads));
+  scratch.extra.resize(std::size_t(n_threads - 1));
+  std::vector<Target> targets = {FieldTarget(field, dst.width, dst.height)};
+  for (TargetBuffers& b : scratch.extra) targets.push_back(b.Clear(dst.width, dst.height));
   const float max_ratio = float(1.0 + o.max_relative_depth_jump);
   const int w = src.width;
   ParallelBlocks(n_threads, n_threads, [&](int t0, int t1) {
     for (int ti = t0; ti < t1; ++ti) {
-      std::vector<Texel>& target = targets[std::size_t(ti)];
-      target.assign(std::size_t(dst.width) * dst.height, Texel{0.0f, 0.0f, 0.0f, 0.0f});
-      const TargetView view{target.data(), dst.width, dst.height};
+      const Target& view = targets[std::size_t(ti)];
       const int r_begin = (src.height - 1) * ti / n_threads;
       const int r_end = (src.height - 1) * (ti + 1) / n_threads;
       for (const cv::Point& b : blocks) {
@@ -621,7 +657,8 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
       }
     }
   });
-  Finalise(targets, dst.width, dst.height, threads, field);
+  if (n_threads > 1) Merge(targets, threads);
+  field.covered = Finalise(targets[0], threads);
   if (o.compute_view_angles) field.cos_angle = ViewAngles(field.depth, dst, T_vs.translation());
 }
 

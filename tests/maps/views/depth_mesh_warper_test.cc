@@ -182,12 +182,15 @@ TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
   std::vector<WarpField> fields;
   many.WarpMany(sources, kCam, virt, fields);
   ASSERT_EQ(fields.size(), 3u);
+  WarpOptions split;  // each view alone split between three threads, merged by depth
+  split.threads = 3;
   for (int k = 0; k < 3; ++k) {
-    const WarpField one = WarpView(kCam, poses[k], depths[k], kCam, virt);
+    const WarpField one = WarpView(kCam, poses[k], depths[k], kCam, virt, split);
     EXPECT_GT(one.covered, kCam.width * kCam.height / 3);
     EXPECT_EQ(fields[k].covered, one.covered) << k;
     EXPECT_EQ(cv::norm(fields[k].depth, one.depth, cv::NORM_INF), 0.0) << k;
     EXPECT_EQ(cv::norm(fields[k].map, one.map, cv::NORM_INF), 0.0) << k;
+    EXPECT_EQ(cv::norm(fields[k].source_depth, one.source_depth, cv::NORM_INF), 0.0) << k;
   }
   // A bad view among them is reported as Warp reports it.
   cv::Mat wrong(10, 10, CV_32FC1, cv::Scalar(1));
