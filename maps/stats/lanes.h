@@ -72,6 +72,16 @@ inline I16 GatherBytes(const char* base, I16 offset) {
 #endif
 }
 inline I16 GatherInt(const int32_t* p, I16 index) { return GatherLanes<I16>(p, index); }
+/// Whether any lane of a mask is set.
+inline bool Any(I16 mask) {
+#if defined(__AVX512F__)
+  return _mm512_test_epi32_mask((__m512i)mask, (__m512i)mask) != 0;
+#else
+  bool any = false;
+  for (int k = 0; k < kLanes; ++k) any |= mask[k] != 0;
+  return any;
+#endif
+}
 /// p[k] where mask[k] (-1), 0 elsewhere; masked-out lanes are not read (may lie past the end).
 inline F16 LoadMasked(const float* p, I16 mask) {
 #if defined(__AVX512F__)

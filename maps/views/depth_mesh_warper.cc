@@ -316,6 +316,9 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
   // Quads u … w−2; the last group's lanes past w−2 are masked (the vertex arrays are padded).
   for (int u = 0; u + 1 < w; u += kLanes) {
     const std::size_t i = base + u;
+    I16 skip;
+    std::memcpy(&skip, &v.skip[i], sizeof skip);
+    if (!stats::lanes::Any(skip == 0)) continue;            // sixteen quads inside planar blocks
     const std::size_t c[4] = {i, i + 1, i + w, i + w + 1};  // p00, p10, p01, p11
     F16 x[4], y[4], iz[4];
     I16 ok[4];
@@ -325,8 +328,6 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
       iz[n] = Load(&v.inv_z[c[n]]);
       ok[n] = iz[n] != zero;
     }
-    I16 skip;
-    std::memcpy(&skip, &v.skip[i], sizeof skip);
     ok[0] &= (lane + float(u) < float(w - 1)) & (skip == 0);
     // The box; an unusable vertex takes p00's place (its triangles are not drawn).
     F16 bx[4] = {x[0]}, by[4] = {y[0]};
@@ -341,9 +342,7 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
     const F16 nx = qx1 - qx0 + one, ny = qy1 - qy0 + one;
     const I16 any = ok[0] & ok[3] & (ok[1] | ok[2]) & (nx >= one) & (ny >= one);
     const I16 small = any & (nx <= one + one) & (ny <= one + one);
-    bool any_lane = false;
-    for (int k = 0; k < kLanes; ++k) any_lane |= any[k] != 0;
-    if (!any_lane) continue;
+    if (!stats::lanes::Any(any)) continue;
     F16 z[4];
     for (int n = 0; n < 4; ++n) z[n] = Load(&v.source_depth[c[n]]);
     const QuadLanes q = MakeQuadLanes(x, y, iz, z, small, max_ratio);
