@@ -416,16 +416,24 @@ void RasteriseBlock(const Vertices& v, int w, int u0, int r0, int size, float ma
   const int y0 = std::max(0, int(std::ceil(*std::min_element(y, y + 4))));
   const int y1 = std::min(t.height - 1, int(std::floor(*std::max_element(y, y + 4))));
   constexpr float kEdge = 1e-4f;  // pixel centres on an edge belong to both neighbours
+  // Each row's span is where it crosses the edges: the block is convex, so the span starts at the
+  // rightmost crossing of its left edges and ends at the leftmost of its right edges. Per edge the
+  // crossing's step per row (no division per row) and its side (that of the block's centre).
+  float slope[4], left[4];
+  const float mx = 0.25f * (x[0] + x[1] + x[2] + x[3]), my = 0.25f * (y[0] + y[1] + y[2] + y[3]);
+  for (int n = 0; n < 4; ++n) {
+    const int m = (n + 1) % 4;
+    slope[n] = y[m] == y[n] ? 0.0f : (x[m] - x[n]) / (y[m] - y[n]);
+    left[n] = y[m] == y[n] ? -1.0f : float(x[n] + (my - y[n]) * slope[n] < mx);  // −1: level
+  }
   const F16 lane = stats::lanes::Iota();
   for (int py = y0; py <= y1; ++py) {
     const float fy = float(py);
-    float xl = 1e30f, xr = -1e30f;
+    float xl = -1e30f, xr = 1e30f;
     for (int n = 0; n < 4; ++n) {
-      const int m = (n + 1) % 4;
-      if ((fy < y[n] && fy < y[m]) || (fy > y[n] && fy > y[m])) continue;
-      const float ex = y[m] == y[n] ? x[n] : x[n] + (fy - y[n]) * (x[m] - x[n]) / (y[m] - y[n]);
-      xl = std::min(xl, std::min(ex, y[m] == y[n] ? x[m] : ex));
-      xr = std::max(xr, std::max(ex, y[m] == y[n] ? x[m] : ex));
+      const float ex = x[n] + (fy - y[n]) * slope[n];
+      if (left[n] > 0.5f) xl = std::max(xl, ex);
+      if (left[n] == 0.0f) xr = std::min(xr, ex);
     }
     const int px0 = std::max(0, int(std::ceil(xl - kEdge)));
     const int px1 = std::min(t.width - 1, int(std::floor(xr + kEdge)));
