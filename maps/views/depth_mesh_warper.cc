@@ -70,7 +70,7 @@ struct Projection {
     const T py = z * (ay * fu + ry) + ty;
     const T pz = z * (az * fu + rz) + tz;
     const auto ok = (z > 0.0f) & (z < 1e30f) & (pz > near_z);
-    const T iz = ok ? 1.0f / pz : T{};
+    const T iz = ok ? Reciprocal(pz) : T{};
     Put(X, ok ? fx * px * iz + cx : T{} - 1.0f);
     Put(Y, ok ? fy * py * iz + cy : T{} - 1.0f);
     Put(IZ, iz);
@@ -445,9 +445,9 @@ void RasteriseBlock(const Vertices& v, int w, int u0, int r0, int size, float ma
     for (int px = px0; px <= px1; px += kLanes) {
       const F16 fx = lane + (float(px) - x[0]);
       const F16 iz = at_row[0] + gx[0] * fx, a = at_row[1] + gx[1] * fx;
-      const F16 inv_a = (F16{} + 1.0f) / a;
+      const F16 inv_a = Reciprocal(a);
       const F16 us = (at_row[2] + gx[2] * fx) * inv_a, vs = (at_row[3] + gx[3] * fx) * inv_a;
-      const F16 zs = a / iz;
+      const F16 zs = a * Reciprocal(iz);
       const std::size_t j = row + std::size_t(px);
       const I16 in_span = lane < float(px1 - px + 1);
       const I16 nearer = in_span & (iz > LoadMasked(t.inv_z + j, in_span));
@@ -536,7 +536,7 @@ void Merge(const std::vector<Target>& targets, int threads) {
 int Finalise(const Target& t, int threads) {
   std::vector<int> covered(std::size_t(t.height), 0);
   ParallelBlocks(t.height, threads, [&](int y0, int y1) {
-    const F16 zero{}, one = zero + 1.0f;
+    const F16 zero{};
     for (int y = y0; y < y1; ++y) {
       const std::size_t row = std::size_t(y) * t.width;
       int n = 0;
@@ -545,7 +545,7 @@ int Finalise(const Target& t, int threads) {
         const I16 in_row = stats::lanes::Iota() < float(t.width - x);
         const F16 iz = LoadMasked(t.inv_z + j, in_row);
         const I16 hit = iz > zero, miss = in_row & ~hit;
-        StoreMasked(t.inv_z + j, one / iz, in_row & hit);
+        StoreMasked(t.inv_z + j, Reciprocal(iz), in_row & hit);
         StoreMasked(t.inv_z + j, zero, miss);
         StoreMasked(t.source_depth + j, zero, miss);
         StoreMaskedPairs(t.uv + 2 * j, zero - 1.0f, zero - 1.0f, miss);
