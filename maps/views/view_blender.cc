@@ -12,6 +12,7 @@
 #include <string>
 
 #include "maps/stats/lanes.h"
+#include "maps/views/row_windows.h"
 
 namespace novelty::views {
 
@@ -42,6 +43,14 @@ inline int GatherBytes(const char* base, int offset) {
 }
 inline I16 GatherBytes(const char* base, I16 offset) {
   return stats::lanes::GatherBytes(base, offset);
+}
+inline float AsFloatBits(int bits) {
+  float f;
+  std::memcpy(&f, &bits, 4);
+  return f;
+}
+inline F16 AsFloatBits(I16 bits) {
+  return (F16)bits;
 }
 // IEEE half floats (in the low 16 bits) to float.
 inline float HalfToFloat(int bits) {
@@ -97,65 +106,101 @@ inline void LoadMap(const cv::Vec2f* map, F16& u, F16& v) {
   v = __builtin_shuffle(a, b, I16{1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31});
 }
 
-// A view's plane as the kernel reads it, in place, in one of three forms:
-//   float: continuous floats, one gather per channel and bilinear corner;
-//   bytes: 8-bit planes of 1–4 channels, one 32-bit gather per corner fetching every channel;
-//   half:  half-float planes of 2–8 channels, one gather per two channels (HalfPlane below).
-// Corner(pixel) is what a corner's samples are read from; Value(corner, c) is channel c there.
-struct FloatPlane {
-  const float* data;
-  int cols, rows, channels;
-  template <class I>
-  I Corner(I pixel) const {
-    return pixel * channels;
-  }
-  template <class T, class I>
-  T Value(I corner, int c) const {
-    return Gather(data, corner + c);
-  }
-};
+// The channels one pass of the kernel sums in registers; planes with more take several passes.
+constexpr int kPassChannels = 8;
 
-// 8-bit pixels of `channels` bytes, read in place: the 32-bit word starting at the pixel's first
-// byte holds all its channels. The last pixels' words would run past the plane, so a word starts
-// at most four bytes before its end and is shifted down to the pixel (`Corner` keeps the shift).
-struct BytePlane {
+// Where a plane's 32-bit words come from: Word(x_byte, y) is the word at byte x_byte of row y.
+// Gathered from memory (one pixel or sixteen)...
+struct GatherReader {
   const char* data;
-  int cols, rows, channels, last_word;  // last_word: the plane's size in bytes − 4
+  int row_bytes, last_word;  // last_word: the plane's size in bytes − 4
   template <class I>
-  I Corner(I pixel) const {
-    const I byte = pixel * channels;
+  I Word(I x_byte, I y) const {
+    // An 8-bit pixel's word runs past the pixel, and the last one's past the plane: a word
+    // starts at most four bytes before the plane's end and is shifted down to its byte.
+    const I byte = y * row_bytes + x_byte;
     const I start = Min(byte, last_word);
-    return GatherBytes(data, start) >> ((byte - start) * 8);  // Value reads the low bytes only
-  }
-  template <class T, class I>
-  T Value(I word, int c) const {
-    return ToFloat((word >> (8 * c)) & 0xFF);
+    return GatherBytes(data, start) >> ((byte - start) * 8);  // Values read the low bytes only
   }
   static int Min(int a, int b) { return std::min(a, b); }
   static I16 Min(I16 a, int b) { return a < b ? a : I16{} + b; }
 };
 
-// Half-float planes of 2…8 channels, read in place (no float copy of the view): the 32-bit word
-// at channel 2w holds channels 2w and 2w+1; with an odd count the last word starts one channel
-// earlier, so every read stays inside the pixel. One gather per two channels and corner.
-struct HalfPlane {
-  static constexpr int kMaxChannels = 8;
-  const char* data;  // pixel p starts at byte 2·channels·p
-  int cols, rows, channels;
-  int First(int word) const { return std::min(2 * word, channels - 2); }
-  template <class I>
-  std::array<I, kMaxChannels / 2> Corner(I pixel) const {
-    std::array<I, kMaxChannels / 2> words{};
-    const I byte = pixel * (2 * channels);
-    for (int w = 0; w < (channels + 1) / 2; ++w) words[w] = GatherBytes(data, byte + 2 * First(w));
+// ... or from RowWindows holding the source rows that sixteen pixels read (row_windows.h).
+struct WindowReader {
+  const RowWindows& windows;
+  int row0, first;  // the windows' first row and first byte
+  I16 Word(I16 x_byte, I16 y) const { return windows.Read(y - row0, x_byte - first); }
+};
+
+// A view's plane as the kernel reads it, in place, in one of three forms; Corner(reader, x, y,
+// c0, n) reads the words of channels [c0, c0 + n) at pixel (x, y), Value(words, c0, c) is
+// channel c among them. Every word read lies inside its pixel but an 8-bit pixel's, which runs
+// at most three bytes past it (last_word: the largest offset of a word in a pixel).
+//   float: continuous floats, a word per channel;
+//   bytes: 8-bit planes of 1–4 channels, one word holding every channel;
+//   half:  half-float planes of 2–8 channels, a word per two channels (the last word of an odd
+//          count starts one channel earlier, so it stays inside the pixel).
+struct PlaneLayout {
+  const char* data;
+  int cols, rows, channels, pixel_bytes;
+  int RowBytes() const { return cols * pixel_bytes; }
+  std::size_t TotalBytes() const { return std::size_t(rows) * RowBytes(); }
+  GatherReader Gatherer() const { return {data, RowBytes(), int(TotalBytes()) - 4}; }
+};
+
+struct FloatPlane : PlaneLayout {
+  int LastWord() const { return 4 * (channels - 1); }
+  template <class R, class I>
+  std::array<I, kPassChannels> Corner(const R& r, I x, I y, int c0, int n) const {
+    std::array<I, kPassChannels> words{};
+    const I byte = x * pixel_bytes;
+    for (int i = 0; i < n; ++i) words[std::size_t(i)] = r.Word(byte + 4 * (c0 + i), y);
     return words;
   }
   template <class T, class W>
-  T Value(const W& words, int c) const {
+  T Value(const W& words, int c0, int c) const {
+    return AsFloatBits(words[std::size_t(c - c0)]);
+  }
+};
+
+struct BytePlane : PlaneLayout {
+  int LastWord() const { return 0; }
+  template <class R, class I>
+  std::array<I, 1> Corner(const R& r, I x, I y, int, int) const {
+    return {r.Word(x * pixel_bytes, y)};
+  }
+  template <class T, class W>
+  T Value(const W& words, int, int c) const {
+    return ToFloat((words[0] >> (8 * c)) & 0xFF);
+  }
+};
+
+struct HalfPlane : PlaneLayout {
+  static constexpr int kMaxChannels = 8;
+  int First(int word) const { return std::min(2 * word, channels - 2); }
+  int LastWord() const { return 2 * (channels - 2); }
+  template <class R, class I>
+  std::array<I, kMaxChannels / 2> Corner(const R& r, I x, I y, int, int) const {
+    std::array<I, kMaxChannels / 2> words{};
+    const I byte = x * pixel_bytes;
+    for (int w = 0; w < (channels + 1) / 2; ++w) words[w] = r.Word(byte + 2 * First(w), y);
+    return words;
+  }
+  template <class T, class W>
+  T Value(const W& words, int, int c) const {
     const auto word = words[std::size_t(c / 2)];
     return HalfToFloat(c == First(c / 2) ? word : word >> 16);
   }
 };
+
+template <class Plane>
+Plane MakePlane(const cv::Mat& m) {
+  Plane p;
+  static_cast<PlaneLayout&>(p) = {reinterpret_cast<const char*>(m.ptr()), m.cols, m.rows,
+                                  m.channels(), int(m.elemSize())};
+  return p;
+}
 
 bool AllOfDepth(const std::vector<cv::Mat>& planes, int depth) {
   return std::all_of(planes.begin(), planes.end(),
@@ -169,10 +214,8 @@ std::optional<std::vector<BytePlane>> AsBytePlanes(const std::vector<cv::Mat>& p
   if (!AllOfDepth(planes, CV_8U) || planes[0].channels() > 4) return std::nullopt;
   std::vector<BytePlane> out;
   for (const cv::Mat& p : planes) {
-    const std::size_t bytes = p.total() * p.elemSize();
-    if (bytes < 4) return std::nullopt;
-    out.push_back(
-        {reinterpret_cast<const char*>(p.ptr()), p.cols, p.rows, p.channels(), int(bytes - 4)});
+    if (p.total() * p.elemSize() < 4) return std::nullopt;
+    out.push_back(MakePlane<BytePlane>(p));
   }
   return out;
 }
@@ -182,8 +225,7 @@ std::optional<std::vector<HalfPlane>> AsHalfPlanes(const std::vector<cv::Mat>& p
   if (!AllOfDepth(planes, CV_16F) || channels < 2 || channels > HalfPlane::kMaxChannels)
     return std::nullopt;
   std::vector<HalfPlane> out;
-  for (const cv::Mat& p : planes)
-    out.push_back({reinterpret_cast<const char*>(p.ptr()), p.cols, p.rows, channels});
+  for (const cv::Mat& p : planes) out.push_back(MakePlane<HalfPlane>(p));
   return out;
 }
 
@@ -197,13 +239,58 @@ std::vector<FloatPlane> AsFloatPlanes(const std::vector<cv::Mat>& planes,
       m->convertTo(scratch[k], CV_32F);
       m = &scratch[k];
     }
-    out.push_back({m->ptr<float>(), m->cols, m->rows, m->channels()});
+    out.push_back(MakePlane<FloatPlane>(*m));
   }
   return out;
 }
 
-// The channels one pass of the kernel sums in registers; planes with more take several passes.
-constexpr int kPassChannels = 8;
+// The source pixels of a bilinear sample per lane: columns x0, x1, rows y0, y1.
+template <class I>
+struct Corners {
+  I x0, x1, y0, y1;
+};
+
+// Adds channels [c0, c0 + n) of the weighted bilinear samples at `at` to acc[0…n), read by `r`.
+template <class Plane, class R, class T, class I, class M>
+inline void Sample(const Plane& p, const R& r, const Corners<I>& at, T w00, T w10, T w01, T w11,
+                   M valid, int c0, int n, T* acc) {
+  const auto c00 = p.Corner(r, at.x0, at.y0, c0, n), c10 = p.Corner(r, at.x1, at.y0, c0, n);
+  const auto c01 = p.Corner(r, at.x0, at.y1, c0, n), c11 = p.Corner(r, at.x1, at.y1, c0, n);
+  for (int i = 0; i < n; ++i) {
+    const int c = c0 + i;
+    const T sample = w00 * p.template Value<T>(c00, c0, c) + w10 * p.template Value<T>(c10, c0, c) +
+                     w01 * p.template Value<T>(c01, c0, c) + w11 * p.template Value<T>(c11, c0, c);
+    acc[i] += valid ? sample : T{};  // select: a NaN sample stays out
+  }
+}
+
+// The rows and bytes that sixteen lanes' covered samples read, if RowWindows can hold them
+// (rows = 0: it cannot — a magnified, shrunk or turned view, whose lanes then gather).
+struct WindowSpan {
+  int row0 = 0, rows = 0, first = 0;
+  int x_min = 0;
+  // Uncovered lanes read where the first covered lane reads (their weight is 0).
+  Corners<I16> Inside(I16 valid, const Corners<I16>& at) const {
+    const I16 x = I16{} + x_min, y = I16{} + row0;
+    return {valid ? at.x0 : x, valid ? at.x1 : x, valid ? at.y0 : y, valid ? at.y1 : y};
+  }
+};
+
+template <class Plane>
+inline WindowSpan SpanOf(const Plane& p, I16 valid, const Corners<I16>& at) {
+  WindowSpan s;
+  const int x_min = stats::lanes::MinLane(at.x0, valid),
+            x_max = stats::lanes::MaxLane(at.x1, valid);
+  const int y_min = stats::lanes::MinLane(at.y0, valid),
+            y_max = stats::lanes::MaxLane(at.y1, valid);
+  const int last_read = (x_max - x_min) * p.pixel_bytes + p.LastWord();
+  if (y_max - y_min >= RowWindows::kMaxRows || last_read > RowWindows::kBytes - 4) return s;
+  s.row0 = y_min;
+  s.rows = y_max - y_min + 1;
+  s.first = x_min * p.pixel_bytes;
+  s.x_min = x_min;
+  return s;
+}
 
 // One view's weighted bilinear sample at pixels [x, x + lanes) of row y, channels
 // [c0, c0 + n), added to acc[0…n) and its weight to `weight_sum`. `nearest`: the depth limit of
@@ -240,15 +327,21 @@ inline void AddView(const WarpField& w, const Plane& p, float view_weight, const
   const T fx = u - ToFloat(x0), fy = v - ToFloat(y0);
   const T w00 = weight * (1.0f - fx) * (1.0f - fy), w10 = weight * fx * (1.0f - fy),
           w01 = weight * (1.0f - fx) * fy, w11 = weight * fx * fy;
-  const auto c00 = p.Corner(y0 * p.cols + x0), c10 = p.Corner(y0 * p.cols + x1);
-  const auto c01 = p.Corner(y1 * p.cols + x0), c11 = p.Corner(y1 * p.cols + x1);
-  for (int i = 0; i < n; ++i) {
-    const int c = c0 + i;
-    const T sample = w00 * p.template Value<T>(c00, c) + w10 * p.template Value<T>(c10, c) +
-                     w01 * p.template Value<T>(c01, c) + w11 * p.template Value<T>(c11, c);
-    acc[i] += valid ? sample : T{};  // select: a NaN sample stays out
-  }
   weight_sum += weight;
+  const Corners<std::remove_const_t<decltype(x0)>> at{x0, x1, y0, y1};
+  if constexpr (std::is_same_v<T, F16> && RowWindows::kAvailable) {
+    if (!stats::lanes::Any(valid)) return;
+    const WindowSpan span = SpanOf(p, valid, at);
+    if (span.rows > 0) {
+      const RowWindows windows(p.data, p.TotalBytes(), std::size_t(p.RowBytes()), span.row0,
+                               span.rows, span.first);
+      const Corners<I16> inside = span.Inside(valid, at);
+      Sample(p, WindowReader{windows, span.row0, span.first}, inside, w00, w10, w01, w11, valid, c0,
+             n, acc);
+      return;
+    }
+  }
+  Sample(p, p.Gatherer(), at, w00, w10, w01, w11, valid, c0, n, acc);
 }
 
 // The blend at pixels [x, x + lanes) of row y: per pass of channels, every view's samples summed
