@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "maps/appearance/interleave.h"
 #include "maps/color/ycbcr.h"
 
 namespace novelty::appearance {
@@ -52,20 +53,9 @@ struct FrameRows {
 
 // Working planes of one tile, reused for the tiles one task processes.
 struct TileWork {
-  cv::Mat ycbcr, prior_float, merged7, merged3, expected, beta_sum;
+  cv::Mat ycbcr, merged3, expected, beta_sum;
   std::vector<cv::Mat> x, ab_sigma, tau, posterior;
 };
-
-// Rows of an interleaved prediction as float planes: split in place when float, converted into
-// `scratch` first when half floats (a static camera reads its view's stored planes directly).
-void SplitAsFloat(const cv::Mat& rows, cv::Mat& scratch, std::vector<cv::Mat>& planes) {
-  if (rows.depth() == CV_32F) {
-    cv::split(rows, planes);
-    return;
-  }
-  rows.convertTo(scratch, CV_32F);
-  cv::split(scratch, planes);
-}
 
 // Rows [r0, r1): prior planes from the prediction, update and surprise (eq. 4.8-4.21; α is shared
 // by the three channels), and the rows of every product and of the posterior to be stored.
@@ -73,9 +63,10 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
                  TileWork& t) {
   const cv::Range rows(r0, r1);
   color::RgbToYCbCr(f.rgb.rowRange(rows), t.ycbcr);
-  cv::split(t.ycbcr, t.x);
-  SplitAsFloat(f.prior.value[0].rowRange(rows), t.prior_float, t.ab_sigma);
-  SplitAsFloat(f.prior.value[1].rowRange(rows), t.prior_float, t.tau);
+  SplitToFloat(t.ycbcr, t.x);
+  // Half floats (a static camera reads its view's stored planes in place) or blended floats.
+  SplitToFloat(f.prior.value[0].rowRange(rows), t.ab_sigma);
+  SplitToFloat(f.prior.value[1].rowRange(rows), t.tau);
   cv::Mat* const p0[kChannels] = {&t.ab_sigma[0], &t.ab_sigma[1], &t.ab_sigma[2], &t.ab_sigma[3],
                                   &t.tau[0],      &t.tau[1],      &t.tau[2],      &t.ab_sigma[4],
                                   &t.ab_sigma[5], &t.ab_sigma[6]};
@@ -99,7 +90,8 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   stats::UpdateAndAccumulateSurprise(channels, surprise.ptr<float>(), surprise.total(), options);
 
   // Products: the prior's τ in RGB, its Σβ; NaN or black where not covered.
-  cv::merge(std::vector<cv::Mat>{*p0[kTau], *p0[kTau + 1], *p0[kTau + 2]}, t.merged3);
+  t.merged3.create(r1 - r0, t.ycbcr.cols, CV_32FC3);
+  MergeInto({*p0[kTau], *p0[kTau + 1], *p0[kTau + 2]}, t.merged3);
   color::YCbCrToRgb(t.merged3, t.expected);
   cv::Mat expected_rgb = f.expected_rgb.rowRange(rows), uncertainty = f.uncertainty.rowRange(rows);
   t.expected.convertTo(expected_rgb, CV_8U);
@@ -111,13 +103,12 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
     uncertainty.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
   }
   // The posterior as the store keeps it.
-  cv::merge(std::vector<cv::Mat>{p1[kAlpha], p1[kBeta], p1[kBeta + 1], p1[kBeta + 2], p1[kSigma],
-                                 p1[kSigma + 1], p1[kSigma + 2]},
-            t.merged7);
   cv::Mat stored_ab_sigma = f.stored_ab_sigma.rowRange(rows);
-  t.merged7.convertTo(stored_ab_sigma, stored_ab_sigma.depth());
+  MergeInto({p1[kAlpha], p1[kBeta], p1[kBeta + 1], p1[kBeta + 2], p1[kSigma], p1[kSigma + 1],
+             p1[kSigma + 2]},
+            stored_ab_sigma);
   cv::Mat stored_tau = f.stored_tau.rowRange(rows);
-  cv::merge(std::vector<cv::Mat>{p1[kTau], p1[kTau + 1], p1[kTau + 2]}, stored_tau);
+  MergeInto({p1[kTau], p1[kTau + 1], p1[kTau + 2]}, stored_tau);
 }
 
 }  // namespace

@@ -72,6 +72,31 @@ inline I16 GatherBytes(const char* base, I16 offset) {
 #endif
 }
 inline I16 GatherInt(const int32_t* p, I16 index) { return GatherLanes<I16>(p, index); }
+/// An IEEE half float (the low 16 bits of `bits`) as float, exactly.
+inline float HalfToFloat(uint32_t bits) {
+  const uint32_t sign = (bits & 0x8000u) << 16, exponent = (bits >> 10) & 0x1Fu,
+                 mantissa = bits & 0x3FFu;
+  uint32_t out = sign | ((exponent + 112) << 23) | (mantissa << 13);  // normal numbers
+  if (exponent == 31) out = sign | 0x7F800000u | (mantissa << 13);    // inf, NaN
+  if (exponent == 0) {                                                // zero, subnormal
+    const float f = float(mantissa) * (1.0f / 16777216.0f);           // mantissa · 2^−24
+    std::memcpy(&out, &f, 4);
+    out |= sign;
+  }
+  float f;
+  std::memcpy(&f, &out, 4);
+  return f;
+}
+/// Per lane, as the scalar form (one conversion instruction with AVX-512).
+inline F16 HalfToFloat(I16 bits) {
+#if defined(__AVX512F__)
+  return (F16)_mm512_cvtph_ps(_mm512_cvtepi32_epi16((__m512i)bits));
+#else
+  F16 v;
+  for (int k = 0; k < kLanes; ++k) v[k] = HalfToFloat(uint32_t(bits[k]));
+  return v;
+#endif
+}
 /// 1/x to within about one float ulp: AVX-512's 14-bit estimate and one Newton step, several
 /// times cheaper than a division (exact division elsewhere).
 inline float Reciprocal(float x) {

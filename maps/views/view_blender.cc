@@ -52,18 +52,12 @@ inline float AsFloatBits(int bits) {
 inline F16 AsFloatBits(I16 bits) {
   return (F16)bits;
 }
-// IEEE half floats (in the low 16 bits) to float.
+// IEEE half floats (in the low 16 bits) to float (lanes.h).
 inline float HalfToFloat(int bits) {
-  return float(cv::float16_t::fromBits(static_cast<ushort>(bits & 0xFFFF)));
+  return stats::lanes::HalfToFloat(uint32_t(bits));
 }
 inline F16 HalfToFloat(I16 bits) {
-#if defined(__AVX512F__)
-  return (F16)_mm512_cvtph_ps(_mm512_cvtepi32_epi16((__m512i)bits));
-#else
-  F16 v;
-  for (int k = 0; k < kLanes; ++k) v[k] = HalfToFloat(bits[k]);
-  return v;
-#endif
+  return stats::lanes::HalfToFloat(bits);
 }
 // Stores one value (T = float) or sixteen at `stride` floats apart (interleaved channels).
 inline void ScatterLane(float* p, int, float v) {
