@@ -110,28 +110,25 @@ inline F16 Reciprocal(F16 x) {
   return 1.0f / x;
 #endif
 }
-/// The smallest / largest lane of v among those set in `mask` (at least one).
-inline int MinLane(I16 v, I16 mask) {
+/// The smallest (kLargest false) or largest lane of v among those set in `mask` (at least one).
+template <bool kLargest>
+inline int ExtremeLane(I16 v, I16 mask) {
 #if defined(__AVX512F__)
-  return _mm512_mask_reduce_min_epi32(_mm512_cmpneq_epi32_mask((__m512i)mask, __m512i{}),
-                                      (__m512i)v);
+  const __mmask16 m = _mm512_cmpneq_epi32_mask((__m512i)mask, __m512i{});
+  if constexpr (kLargest) return _mm512_mask_reduce_max_epi32(m, (__m512i)v);
+  return _mm512_mask_reduce_min_epi32(m, (__m512i)v);
 #else
-  int m = INT32_MAX;
+  int e = kLargest ? INT32_MIN : INT32_MAX;
   for (int k = 0; k < kLanes; ++k)
-    if (mask[k]) m = v[k] < m ? v[k] : m;
-  return m;
+    if (mask[k] && (kLargest ? v[k] > e : v[k] < e)) e = v[k];
+  return e;
 #endif
 }
+inline int MinLane(I16 v, I16 mask) {
+  return ExtremeLane<false>(v, mask);
+}
 inline int MaxLane(I16 v, I16 mask) {
-#if defined(__AVX512F__)
-  return _mm512_mask_reduce_max_epi32(_mm512_cmpneq_epi32_mask((__m512i)mask, __m512i{}),
-                                      (__m512i)v);
-#else
-  int m = INT32_MIN;
-  for (int k = 0; k < kLanes; ++k)
-    if (mask[k]) m = v[k] > m ? v[k] : m;
-  return m;
-#endif
+  return ExtremeLane<true>(v, mask);
 }
 /// Whether any lane of a mask is set.
 inline bool Any(I16 mask) {
