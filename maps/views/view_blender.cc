@@ -130,7 +130,7 @@ struct WindowReader {
 // A view's plane as the kernel reads it, in place, in one of three forms; Corner(reader, x, y,
 // c0, n) reads the words of channels [c0, c0 + n) at pixel (x, y), Value(words, c0, c) is
 // channel c among them. Every word read lies inside its pixel but an 8-bit pixel's, which runs
-// at most three bytes past it (last_word: the largest offset of a word in a pixel).
+// at most three bytes past it (LastWordOffset(): where the last word of a pixel starts).
 //   float: continuous floats, a word per channel;
 //   bytes: 8-bit planes of 1–4 channels, one word holding every channel;
 //   half:  half-float planes of 2–8 channels, a word per two channels (the last word of an odd
@@ -144,7 +144,7 @@ struct PlaneLayout {
 };
 
 struct FloatPlane : PlaneLayout {
-  int LastWord() const { return 4 * (channels - 1); }
+  int LastWordOffset() const { return 4 * (channels - 1); }
   template <class R, class I>
   std::array<I, kPassChannels> Corner(const R& r, I x, I y, int c0, int n) const {
     std::array<I, kPassChannels> words{};
@@ -159,7 +159,7 @@ struct FloatPlane : PlaneLayout {
 };
 
 struct BytePlane : PlaneLayout {
-  int LastWord() const { return 0; }
+  int LastWordOffset() const { return 0; }
   template <class R, class I>
   std::array<I, 1> Corner(const R& r, I x, I y, int, int) const {
     return {r.Word(x * pixel_bytes, y)};
@@ -173,7 +173,7 @@ struct BytePlane : PlaneLayout {
 struct HalfPlane : PlaneLayout {
   static constexpr int kMaxChannels = 8;
   int First(int word) const { return std::min(2 * word, channels - 2); }
-  int LastWord() const { return 2 * (channels - 2); }
+  int LastWordOffset() const { return 2 * (channels - 2); }
   template <class R, class I>
   std::array<I, kMaxChannels / 2> Corner(const R& r, I x, I y, int, int) const {
     std::array<I, kMaxChannels / 2> words{};
@@ -277,7 +277,7 @@ inline WindowSpan SpanOf(const Plane& p, I16 valid, const Corners<I16>& at) {
             x_max = stats::lanes::MaxLane(at.x1, valid);
   const int y_min = stats::lanes::MinLane(at.y0, valid),
             y_max = stats::lanes::MaxLane(at.y1, valid);
-  const int last_read = (x_max - x_min) * p.pixel_bytes + p.LastWord();
+  const int last_read = (x_max - x_min) * p.pixel_bytes + p.LastWordOffset();
   if (y_max - y_min >= RowWindows::kMaxRows || last_read > RowWindows::kBytes - 4) return s;
   s.row0 = y_min;
   s.rows = y_max - y_min + 1;
