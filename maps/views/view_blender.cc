@@ -25,17 +25,15 @@ using stats::lanes::kLanes;
 // Scalar (one pixel) and vector (sixteen) forms of the few operations the sampling kernel needs,
 // so that one kernel serves the row's body and its tail.
 inline float LoadLane(const float* p, float) { return *p; }
-inline F16 LoadLane(const float* p, F16) { return stats::lanes::Load(p); }
-inline void StoreLane(float* p, float v) { *p = v; }
-inline void StoreLane(float* p, F16 v) { stats::lanes::Store(p, v); }
+inline F16 LoadLane(const float* p, F16) {
+  return stats::lanes::Load(p);
+}
 inline int ToInt(float x) { return int(x); }
 inline I16 ToInt(F16 x) { return stats::lanes::AsInt(x); }
 inline float ToFloat(int x) { return float(x); }
-inline F16 ToFloat(I16 x) { return stats::lanes::AsFloat(x); }
-inline float Gather(const float* p, int i) { return p[i]; }
-inline F16 Gather(const float* p, I16 i) { return stats::lanes::Gather(p, i); }
-inline int GatherWord(const int32_t* p, int i) { return p[i]; }
-inline I16 GatherWord(const int32_t* p, I16 i) { return stats::lanes::GatherInt(p, i); }
+inline F16 ToFloat(I16 x) {
+  return stats::lanes::AsFloat(x);
+}
 inline int GatherBytes(const char* base, int offset) {
   int v;
   std::memcpy(&v, base + offset, 4);
