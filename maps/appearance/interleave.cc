@@ -1,5 +1,6 @@
 #include "maps/appearance/interleave.h"
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -18,11 +19,7 @@ inline float ToFloat(uchar v) {
   return float(v);
 }
 inline float ToFloat(uint16_t bits) {
-#if defined(__F16C__)
-  return _cvtsh_ss(bits);
-#else
   return stats::lanes::HalfToFloat(uint32_t(bits));
-#endif
 }
 inline float ToFloat(float v) {
   return v;
@@ -73,7 +70,7 @@ auto MergeRowFor(int channels) {
 template <class In>
 void SplitRows(const cv::Mat& rows, std::vector<cv::Mat>& planes) {
   const auto split_row = SplitRowFor<In>(rows.channels());
-  std::vector<float*> out(planes.size());
+  std::array<float*, kMaxChannels> out;
   for (int y = 0; y < rows.rows; ++y) {
     for (std::size_t c = 0; c < planes.size(); ++c) out[c] = planes[c].ptr<float>(y);
     split_row(rows.ptr<In>(y), rows.channels(), rows.cols, out.data());
@@ -119,7 +116,8 @@ void SplitToFloat(const cv::Mat& rows, std::vector<cv::Mat>& planes) {
 
 void MergeInto(const std::vector<cv::Mat>& planes, cv::Mat& out) {
   const int channels = out.channels();
-  bool ok = (out.depth() == CV_16F || out.depth() == CV_32F) && int(planes.size()) == channels;
+  bool ok = (out.depth() == CV_16F || out.depth() == CV_32F) && channels <= kMaxChannels &&
+            int(planes.size()) == channels;
   for (const cv::Mat& p : planes) ok = ok && p.type() == CV_32FC1 && p.size() == out.size();
   if (!ok) {
     throw std::invalid_argument(
@@ -128,7 +126,7 @@ void MergeInto(const std::vector<cv::Mat>& planes, cv::Mat& out) {
         std::to_string(planes.size()) + " planes for OpenCV type " + std::to_string(out.type()));
   }
   const auto merge_row = MergeRowFor(channels);
-  std::vector<const float*> in(planes.size());
+  std::array<const float*, kMaxChannels> in;
   std::vector<float> row_floats(out.depth() == CV_16F ? std::size_t(out.cols) * channels : 0);
   for (int y = 0; y < out.rows; ++y) {
     for (std::size_t c = 0; c < planes.size(); ++c) in[c] = planes[c].ptr<float>(y);

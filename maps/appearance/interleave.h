@@ -15,8 +15,8 @@ namespace novelty::appearance {
 void SplitToFloat(const cv::Mat& rows, std::vector<cv::Mat>& planes);
 
 /// `planes` (CV_32FC1, of out's size, one per channel of `out`) → `out`, which the caller
-/// created as CV_16F (rounded to nearest, as convertTo) or CV_32F; `out` may be a view into a
-/// larger image. Throws std::invalid_argument when they disagree.
+/// created as CV_16F (rounded to nearest, as convertTo) or CV_32F of 1–32 channels; `out` may be a
+/// view into a larger image. Throws std::invalid_argument when they disagree.
 void MergeInto(const std::vector<cv::Mat>& planes, cv::Mat& out);
 
 }  // namespace novelty::appearance

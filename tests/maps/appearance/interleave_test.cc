@@ -58,6 +58,9 @@ TEST(Interleave, BadInputIsRejected) {
   cv::Mat three(2, 2, CV_32FC3), bytes(2, 2, CV_8UC2);
   EXPECT_THROW(MergeInto(planes, three), std::invalid_argument);
   EXPECT_THROW(MergeInto(planes, bytes), std::invalid_argument);
+  const std::vector<cv::Mat> many(40, cv::Mat(2, 2, CV_32FC1, cv::Scalar(1)));
+  cv::Mat forty(2, 2, CV_32FC(40));
+  EXPECT_THROW(MergeInto(many, forty), std::invalid_argument);  // more channels than it handles
 }
 
 }  // namespace
