@@ -321,8 +321,10 @@ inline void AddView(const WarpField& w, const Plane& p, float view_weight, const
           w01 = weight * (1.0f - fx) * fy, w11 = weight * fx * fy;
   weight_sum += weight;
   const Corners<std::remove_const_t<decltype(x0)>> at{x0, x1, y0, y1};
+  if constexpr (std::is_same_v<T, F16>) {
+    if (!stats::lanes::Any(valid)) return;  // sixteen uncovered pixels: nothing to read
+  }
   if constexpr (std::is_same_v<T, F16> && RowWindows::kAvailable) {
-    if (!stats::lanes::Any(valid)) return;
     const WindowSpan span = SpanOf(p, valid, at);
     if (span.rows > 0) {
       const RowWindows windows(p.data, p.TotalBytes(), std::size_t(p.RowBytes()), span.row0,
