@@ -118,7 +118,7 @@ void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, co
 // Finalise), so a view warped on one thread is never copied.
 struct Target {
   float* inv_z;
-  float* source_depth;
+  float* source_depth;  // null: not asked for (WarpOptions::compute_source_depth)
   float* uv;  // (u, v) interleaved, as WarpField::map
   int width, height;
 };
@@ -127,7 +127,7 @@ struct Target {
 inline void WritePixel(const Target& t, std::size_t j, float iz, float zs, float u, float v) {
   if (iz <= t.inv_z[j]) return;  // z-test on inverse depth
   t.inv_z[j] = iz;
-  t.source_depth[j] = zs;
+  if (t.source_depth) t.source_depth[j] = zs;
   t.uv[2 * j] = u;
   t.uv[2 * j + 1] = v;
 }
@@ -447,12 +447,11 @@ void RasteriseBlock(const Vertices& v, int w, int u0, int r0, int size, float ma
       const F16 iz = at_row[0] + gx[0] * fx, a = at_row[1] + gx[1] * fx;
       const F16 inv_a = Reciprocal(a);
       const F16 us = (at_row[2] + gx[2] * fx) * inv_a, vs = (at_row[3] + gx[3] * fx) * inv_a;
-      const F16 zs = a * Reciprocal(iz);
       const std::size_t j = row + std::size_t(px);
       const I16 in_span = lane < float(px1 - px + 1);
       const I16 nearer = in_span & (iz > LoadMasked(t.inv_z + j, in_span));
       StoreMasked(t.inv_z + j, iz, nearer);
-      StoreMasked(t.source_depth + j, zs, nearer);
+      if (t.source_depth) StoreMasked(t.source_depth + j, a * Reciprocal(iz), nearer);
       StoreMaskedPairs(t.uv + 2 * j, us, vs, nearer);
     }
   }
@@ -492,12 +491,13 @@ cv::Mat PlanarBlocksFor(const cv::Mat& depth, const WarpOptions& options) {
 // The buffers of a target other than the field (threads after the first of a split view).
 struct TargetBuffers {
   std::vector<float> inv_z, source_depth, uv;
-  Target Clear(int width, int height) {
+  Target Clear(int width, int height, bool with_source_depth) {
     const std::size_t n = std::size_t(width) * height;
     inv_z.assign(n, 0.0f);
-    source_depth.resize(n);
+    source_depth.resize(with_source_depth ? n : 0);
     uv.resize(2 * n);
-    return {inv_z.data(), source_depth.data(), uv.data(), width, height};
+    return {inv_z.data(), with_source_depth ? source_depth.data() : nullptr, uv.data(), width,
+            height};
   }
 };
 
@@ -509,13 +509,17 @@ struct DepthMeshWarper::Scratch {
 namespace {
 
 // The field as the first target: its depth plane holds the z-buffer until Finalise.
-Target FieldTarget(WarpField& field, int width, int height) {
+Target FieldTarget(WarpField& field, int width, int height, bool with_source_depth) {
   field.depth.create(height, width, CV_32FC1);
-  field.source_depth.create(height, width, CV_32FC1);
   field.map.create(height, width, CV_32FC2);
   field.depth.setTo(0.0f);
-  return {field.depth.ptr<float>(), field.source_depth.ptr<float>(), field.map.ptr<float>(), width,
-          height};
+  if (with_source_depth) {
+    field.source_depth.create(height, width, CV_32FC1);
+  } else {
+    field.source_depth.release();
+  }
+  return {field.depth.ptr<float>(), with_source_depth ? field.source_depth.ptr<float>() : nullptr,
+          field.map.ptr<float>(), width, height};
 }
 
 // Per virtual pixel, the nearest surface of the other targets into the first.
@@ -525,7 +529,8 @@ void Merge(const std::vector<Target>& targets, int threads) {
     for (std::size_t j = std::size_t(y0) * t.width; j < std::size_t(y1) * t.width; ++j) {
       for (std::size_t k = 1; k < targets.size(); ++k) {
         const Target& o = targets[k];
-        WritePixel(t, j, o.inv_z[j], o.source_depth[j], o.uv[2 * j], o.uv[2 * j + 1]);
+        WritePixel(t, j, o.inv_z[j], o.source_depth ? o.source_depth[j] : 0.0f, o.uv[2 * j],
+                   o.uv[2 * j + 1]);
       }
     }
   });
@@ -547,7 +552,7 @@ int Finalise(const Target& t, int threads) {
         const I16 hit = iz > zero, miss = in_row & ~hit;
         StoreMasked(t.inv_z + j, Reciprocal(iz), in_row & hit);
         StoreMasked(t.inv_z + j, zero, miss);
-        StoreMasked(t.source_depth + j, zero, miss);
+        if (t.source_depth) StoreMasked(t.source_depth + j, zero, miss);
         StoreMaskedPairs(t.uv + 2 * j, zero - 1.0f, zero - 1.0f, miss);
         for (int k = 0; k < kLanes; ++k) n += hit[k] != 0;
       }
@@ -639,8 +644,10 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   // Threads take blocks of source rows, each with its own target, merged by depth afterwards.
   const int n_threads = std::max(1, std::min(src.height - 1, threads));
   scratch.extra.resize(std::size_t(n_threads - 1));
-  std::vector<Target> targets = {FieldTarget(field, dst.width, dst.height)};
-  for (TargetBuffers& b : scratch.extra) targets.push_back(b.Clear(dst.width, dst.height));
+  std::vector<Target> targets = {FieldTarget(field, dst.width, dst.height, o.compute_source_depth)};
+  for (TargetBuffers& b : scratch.extra) {
+    targets.push_back(b.Clear(dst.width, dst.height, o.compute_source_depth));
+  }
   const float max_ratio = float(1.0 + o.max_relative_depth_jump);
   const int w = src.width;
   ParallelBlocks(n_threads, n_threads, [&](int t0, int t1) {

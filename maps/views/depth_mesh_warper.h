@@ -29,6 +29,9 @@ struct WarpOptions {
   int threads = 0;
   /// Also fill WarpField::cos_angle (for view-dependent blending weights).
   bool compute_view_angles = false;
+  /// Also fill WarpField::source_depth (for BlendOptions::resolution_power). Off by default: it
+  /// is 4 bytes per pixel written at every warp that only that blending weight reads.
+  bool compute_source_depth = false;
   /// Blocks of this many × this many quads whose depths lie on one plane (within
   /// `planar_tolerance`, relative depth; planar_blocks.h) are drawn as one convex quadrilateral
   /// with perspective-correct source coordinates instead of 2·size² small triangles: walls, floors
@@ -47,8 +50,8 @@ struct WarpOptions {
 struct WarpField {
   cv::Mat map;    ///< CV_32FC2: source (u, v) for each virtual pixel; (-1, -1) where uncovered
   cv::Mat depth;  ///< CV_32FC1: depth along the virtual camera's +Z; 0 where uncovered
-  cv::Mat source_depth;  ///< CV_32FC1: the same surface's depth in the source view (its
-                         ///< resolution there: far sources are blurrier); 0 where uncovered
+  cv::Mat source_depth;  ///< CV_32FC1 (if asked): the same surface's depth in the source view
+                         ///< (its resolution there: far sources are blurrier); 0 uncovered
   cv::Mat cos_angle;     ///< CV_32FC1 (if asked): cosine of the angle at the surface point between
                          ///< the rays to the virtual and to the source camera centre; 0 uncovered
   int covered = 0;       ///< number of covered virtual pixels

@@ -419,6 +419,10 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
           "BlendPlanes: angle_power needs warps computed with "
           "compute_view_angles");
     }
+    if (o.resolution_power > 0.0 && warps[k].source_depth.empty()) {
+      throw std::invalid_argument(
+          "BlendPlanes: resolution_power needs warps computed with compute_source_depth");
+    }
     const int depth = planes[k].depth();
     if (depth != CV_8U && depth != CV_16U && depth != CV_16S && depth != CV_16F &&
         depth != CV_32F && depth != CV_64F) {

@@ -26,7 +26,8 @@ struct BlendOptions {
   double depth_tolerance = 0.0;
   /// > 0: each contribution is weighted per pixel by (z_virtual / z_source)^power, favouring views
   /// that saw the surface from nearer — at higher resolution — than the virtual camera does, over
-  /// distant views whose texture is magnified and blurred. 0 = no such weighting (the thesis).
+  /// distant views whose texture is magnified and blurred (needs WarpOptions::
+  /// compute_source_depth). 0 = no such weighting (the thesis).
   double resolution_power = 0.0;
   /// > 0: each contribution is also weighted by cos(angle)^power between the rays from the
   /// surface point to the virtual and to the source camera (needs WarpOptions::

@@ -53,6 +53,31 @@ TEST(DepthMeshWarper, SidewaysMoveShiftsAFrontoParallelPlaneByTheDisparity) {
   EXPECT_GT(checked, 100);
 }
 
+TEST(DepthMeshWarper, SourceDepthOnlyWhenAsked) {
+  // Virtual camera 0.5 m nearer a plane at 2 m: depth 1.5 there, 2 in the source view.
+  const Eigen::Isometry3d nearer = LookAt({0.5, 0, 0}, {1.5, 0, 0});
+  EXPECT_TRUE(WarpView(kCam, Forward(), Constant(2.0f), kCam, nearer).source_depth.empty());
+  WarpOptions o;
+  o.compute_source_depth = true;
+  const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam, nearer, o);
+  ASSERT_EQ(w.source_depth.size(), w.depth.size());
+  int covered = 0;
+  for (int y = 0; y < kCam.height; ++y) {
+    for (int x = 0; x < kCam.width; ++x) {
+      const float d = w.depth.at<float>(y, x), zs = w.source_depth.at<float>(y, x);
+      if (d == 0.0f) {
+        ASSERT_EQ(zs, 0.0f);
+        continue;
+      }
+      ASSERT_NEAR(d, 1.5f, 1e-4);
+      ASSERT_NEAR(zs, 2.0f, 1e-4);
+      ++covered;
+    }
+  }
+  EXPECT_EQ(covered, w.covered);
+  EXPECT_GT(covered, kCam.width * kCam.height / 2);
+}
+
 TEST(DepthMeshWarper, DepthDiscontinuitiesAreNotBridged) {
   // Left half at 1 m, right half at 3 m; a sideways virtual camera opens a gap between them.
   cv::Mat depth = Constant(3.0f);
@@ -176,6 +201,7 @@ TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
   const Eigen::Isometry3d virt = LookAt({0.05, 0.08, 0.02}, {1.0, 0.05, 0.0});
   WarpOptions two;
   two.threads = 2;
+  two.compute_source_depth = true;
   DepthMeshWarper many(two);
   std::vector<SourceView> sources;
   for (int k = 0; k < 3; ++k) sources.push_back({&kCam, &poses[k], &depths[k]});
@@ -184,6 +210,7 @@ TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
   ASSERT_EQ(fields.size(), 3u);
   WarpOptions split;  // each view alone split between three threads, merged by depth
   split.threads = 3;
+  split.compute_source_depth = true;
   for (int k = 0; k < 3; ++k) {
     const WarpField one = WarpView(kCam, poses[k], depths[k], kCam, virt, split);
     EXPECT_GT(one.covered, kCam.width * kCam.height / 3);

@@ -115,6 +115,14 @@ TEST(ViewBlender, MismatchedInputIsRejected) {
   BlendOptions o;
   o.weights = {1.0, 2.0};
   EXPECT_THROW(BlendPlanes(warps, {cv::Mat(2, 4, CV_8UC1)}, o), std::invalid_argument);
+  // resolution_power needs the source depth, which a warp fills only when asked.
+  std::vector<WarpField> no_source_depth = {Field(4, 2, 4, 1.0f)};
+  no_source_depth[0].source_depth.release();
+  BlendOptions resolution;
+  resolution.resolution_power = 1.0;
+  EXPECT_THROW(BlendPlanes(no_source_depth, {cv::Mat(2, 4, CV_8UC1)}, resolution),
+               std::invalid_argument);
+  EXPECT_NO_THROW(BlendPlanes(warps, {cv::Mat(2, 4, CV_8UC1)}, resolution));
 }
 
 }  // namespace
