@@ -171,6 +171,16 @@ inline void StoreMaskedPairs(float* p, F16 a, F16 b, I16 mask) {
   StoreMasked(p, __builtin_shuffle(a, b, lo), __builtin_shuffle(mask, spread_lo));
   StoreMasked(p + kLanes, __builtin_shuffle(a, b, lo + 8), __builtin_shuffle(mask, spread_lo + 8));
 }
+/// The inverse of StoreMaskedPairs: a[k] = p[2k], b[k] = p[2k+1] where mask[k], 0 elsewhere
+/// (masked-out pairs are not read).
+inline void LoadMaskedPairs(const float* p, I16 mask, F16& a, F16& b) {
+  const I16 spread_lo{0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7};
+  const F16 lo = LoadMasked(p, __builtin_shuffle(mask, spread_lo));
+  const F16 hi = LoadMasked(p + kLanes, __builtin_shuffle(mask, spread_lo + 8));
+  const I16 even{0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30};
+  a = __builtin_shuffle(lo, hi, even);
+  b = __builtin_shuffle(lo, hi, even + 1);
+}
 /// p[index[k]] = v[k] per lane (one scatter instruction with AVX-512).
 inline void Scatter(float* p, I16 index, F16 v) {
 #if defined(__AVX512F__)

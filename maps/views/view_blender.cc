@@ -93,9 +93,7 @@ inline void LoadMap(const cv::Vec2f* map, float& u, float& v) {
   v = (*map)[1];
 }
 inline void LoadMap(const cv::Vec2f* map, F16& u, F16& v) {
-  const F16 a = stats::lanes::Load(&(*map)[0]), b = stats::lanes::Load(&(*map)[0] + kLanes);
-  u = __builtin_shuffle(a, b, I16{0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30});
-  v = __builtin_shuffle(a, b, I16{1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31});
+  stats::lanes::LoadMaskedPairs(&(*map)[0], I16{} - 1, u, v);
 }
 
 // The channels one pass of the kernel sums in registers; planes with more take several passes.

@@ -49,5 +49,26 @@ TEST(Lanes, GatherIotaMinMaxAndStore) {
   EXPECT_EQ(AsFloat(a > b)[3], 0.0f);
 }
 
+TEST(Lanes, MaskedPairsLoadAndStoreOnlyTheirLanes) {
+  // 2·16 interleaved floats and a mask of every third lane: the masked-out pairs read as 0 and
+  // are not overwritten; the buffer ends right after the last pair a lane may touch.
+  std::vector<float> uv(2 * kLanes);
+  for (int i = 0; i < 2 * kLanes; ++i) uv[std::size_t(i)] = float(i);
+  I16 mask{};
+  for (int k = 0; k < kLanes; k += 3) mask[k] = -1;
+  F16 u, v;
+  LoadMaskedPairs(uv.data(), mask, u, v);
+  for (int k = 0; k < kLanes; ++k) {
+    EXPECT_EQ(u[k], mask[k] ? float(2 * k) : 0.0f) << k;
+    EXPECT_EQ(v[k], mask[k] ? float(2 * k + 1) : 0.0f) << k;
+  }
+  std::vector<float> out(2 * kLanes, -1.0f);
+  StoreMaskedPairs(out.data(), u + 100.0f, v + 100.0f, mask);
+  for (int k = 0; k < kLanes; ++k) {
+    EXPECT_EQ(out[std::size_t(2 * k)], mask[k] ? float(2 * k) + 100.0f : -1.0f) << k;
+    EXPECT_EQ(out[std::size_t(2 * k + 1)], mask[k] ? float(2 * k + 1) + 100.0f : -1.0f) << k;
+  }
+}
+
 }  // namespace
 }  // namespace novelty::stats::lanes
