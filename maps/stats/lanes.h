@@ -144,6 +144,34 @@ inline bool Any(I16 mask) {
   return any;
 #endif
 }
+/// How many lanes of a mask are set.
+inline int Count(I16 mask) {
+#if defined(__AVX512F__)
+  return __builtin_popcount(_mm512_test_epi32_mask((__m512i)mask, (__m512i)mask));
+#else
+  int n = 0;
+  for (int k = 0; k < kLanes; ++k) n += mask[k] != 0;
+  return n;
+#endif
+}
+/// p[k] = 255 where mask[k], 0 elsewhere (sixteen bytes: an 8-bit validity mask).
+inline void StoreMaskBytes(uint8_t* p, I16 mask) {
+#if defined(__AVX512F__)
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(p), _mm512_cvtepi32_epi8((__m512i)mask));
+#else
+  for (int k = 0; k < kLanes; ++k) p[k] = mask[k] ? 255 : 0;
+#endif
+}
+/// Sixteen signed bytes, one per lane.
+inline I16 LoadBytes(const int8_t* p) {
+#if defined(__AVX512F__)
+  return (I16)_mm512_cvtepi8_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)));
+#else
+  I16 v;
+  for (int k = 0; k < kLanes; ++k) v[k] = p[k];
+  return v;
+#endif
+}
 /// p[k] where mask[k] (-1), 0 elsewhere; masked-out lanes are not read (may lie past the end).
 inline F16 LoadMasked(const float* p, I16 mask) {
 #if defined(__AVX512F__)

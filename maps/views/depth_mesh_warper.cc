@@ -32,8 +32,9 @@ struct Vertex {
 // All source vertices, structure of arrays (contiguous loads for the vectorised rasteriser).
 struct Vertices {
   std::vector<float> x, y, inv_z, source_depth;
-  // Per quad (indexed by its top-left vertex): -1 where a planar block draws it, else 0.
-  std::vector<int32_t> skip;
+  // Per quad (indexed by its top-left vertex): -1 where a planar block draws it, else 0. Bytes:
+  // cleared at every warp, and a quarter of ints' traffic.
+  std::vector<int8_t> skip;
   // n vertices, and padding that SIMD loads past the last one may read (never drawn: 1/z = 0).
   void Resize(std::size_t n) {
     x.resize(n + kPadding);
@@ -316,8 +317,7 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
   // Quads u … w−2; the last group's lanes past w−2 are masked (the vertex arrays are padded).
   for (int u = 0; u + 1 < w; u += kLanes) {
     const std::size_t i = base + u;
-    I16 skip;
-    std::memcpy(&skip, &v.skip[i], sizeof skip);
+    const I16 skip = stats::lanes::LoadBytes(&v.skip[i]);
     if (!stats::lanes::Any(skip == 0)) continue;            // sixteen quads inside planar blocks
     const std::size_t c[4] = {i, i + 1, i + w, i + w + 1};  // p00, p10, p01, p11
     F16 x[4], y[4], iz[4];
@@ -473,7 +473,7 @@ std::vector<cv::Point> MarkPlanarBlocks(const cv::Mat& flags, int size, int w, V
       const int qu0 = planar(bx - 1, by) ? 0 : 1, qu1 = planar(bx + 1, by) ? size : size - 1;
       const int qr0 = planar(bx, by - 1) ? 0 : 1, qr1 = planar(bx, by + 1) ? size : size - 1;
       for (int r = qr0; r < qr1; ++r) {
-        int32_t* skip = &v.skip[std::size_t(r0 + r) * w + u0];
+        int8_t* skip = &v.skip[std::size_t(r0 + r) * w + u0];
         std::fill(skip + qu0, skip + qu1, -1);
       }
     }
@@ -512,7 +512,8 @@ namespace {
 Target FieldTarget(WarpField& field, int width, int height, bool with_source_depth) {
   field.depth.create(height, width, CV_32FC1);
   field.map.create(height, width, CV_32FC2);
-  field.depth.setTo(0.0f);
+  // Cleared with memset: Mat::setTo copies a pattern block by block, 5 % of a warp.
+  std::memset(field.depth.data, 0, field.depth.total() * field.depth.elemSize());
   if (with_source_depth) {
     field.source_depth.create(height, width, CV_32FC1);
   } else {
@@ -565,7 +566,7 @@ int Finalise(const Target& t, int threads) {
         StoreMasked(t.inv_z + j, zero, miss);
         if (t.source_depth) StoreMasked(t.source_depth + j, zero, miss);
         StoreMaskedPairs(t.uv + 2 * j, zero - 1.0f, zero - 1.0f, miss);
-        for (int k = 0; k < kLanes; ++k) n += hit[k] != 0;
+        n += stats::lanes::Count(hit);
       }
       covered[std::size_t(y)] = n;
     }

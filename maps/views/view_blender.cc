@@ -70,12 +70,8 @@ inline int StoreValid(uint8_t* p, bool hit) {
   return hit;
 }
 inline int StoreValid(uint8_t* p, I16 hit) {
-  int n = 0;
-  for (int k = 0; k < kLanes; ++k) {
-    p[k] = hit[k] ? 255 : 0;
-    n += hit[k] != 0;
-  }
-  return n;
+  stats::lanes::StoreMaskBytes(p, hit);
+  return stats::lanes::Count(hit);
 }
 inline float Pow(float x, float p) { return std::pow(x, p); }
 inline F16 Pow(F16 x, float p) {

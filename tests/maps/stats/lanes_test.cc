@@ -70,5 +70,22 @@ TEST(Lanes, MaskedPairsLoadAndStoreOnlyTheirLanes) {
   }
 }
 
+TEST(Lanes, MaskCountAndBytes) {
+  I16 mask{};
+  for (int k = 1; k < kLanes; k += 4) mask[k] = -1;  // lanes 1, 5, 9, 13
+  EXPECT_EQ(Count(mask), 4);
+  EXPECT_EQ(Count(I16{}), 0);
+  EXPECT_EQ(Count(I16{} - 1), kLanes);
+  uint8_t bytes[kLanes + 1];
+  bytes[kLanes] = 7;  // past the sixteen: untouched
+  StoreMaskBytes(bytes, mask);
+  for (int k = 0; k < kLanes; ++k) EXPECT_EQ(bytes[k], mask[k] ? 255 : 0) << k;
+  EXPECT_EQ(bytes[kLanes], 7);
+  int8_t signed_bytes[kLanes];
+  for (int k = 0; k < kLanes; ++k) signed_bytes[k] = int8_t(k * 17 - 128);
+  const I16 widened = LoadBytes(signed_bytes);
+  for (int k = 0; k < kLanes; ++k) EXPECT_EQ(widened[k], k * 17 - 128) << k;
+}
+
 }  // namespace
 }  // namespace novelty::stats::lanes
