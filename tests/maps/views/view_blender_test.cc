@@ -36,6 +36,32 @@ TEST(ViewBlender, AveragesValidContributionsAndMarksUncoveredPixels) {
   EXPECT_EQ(r.covered, 6 * 4);
 }
 
+TEST(ViewBlender, MultiChannelViewsAverageWhereTheyCover) {
+  // 20 columns (a sixteen-pixel group and a tail); the first view covers 18, the second 5. Seven
+  // half-float and three float channels, as the appearance map's parameter planes.
+  const std::vector<WarpField> warps = {Field(20, 3, 18, 2.0f), Field(20, 3, 5, 2.0f)};
+  for (const int type : {CV_16FC(7), CV_32FC3}) {
+    std::vector<cv::Mat> planes;
+    for (const float value : {10.0f, 30.0f}) {  // (cv::Scalar fills at most 4 channels)
+      cv::Mat plane;
+      cv::Mat(3, 20 * CV_MAT_CN(type), CV_32FC1, cv::Scalar(value))
+          .reshape(CV_MAT_CN(type))
+          .convertTo(plane, CV_MAT_DEPTH(type));
+      planes.push_back(plane);
+    }
+    const BlendResult r = BlendPlanes(warps, planes);
+    ASSERT_EQ(r.covered, 18 * 3);
+    for (int c = 0; c < r.value.channels(); ++c) {
+      EXPECT_FLOAT_EQ(r.value.ptr<float>(2)[4 * r.value.channels() + c], 20.0f) << c;
+      EXPECT_FLOAT_EQ(r.value.ptr<float>(2)[5 * r.value.channels() + c], 10.0f) << c;
+      EXPECT_FLOAT_EQ(r.value.ptr<float>(2)[17 * r.value.channels() + c], 10.0f) << c;
+      EXPECT_TRUE(std::isnan(r.value.ptr<float>(1)[18 * r.value.channels() + c])) << c;
+    }
+    EXPECT_EQ(r.valid.at<uint8_t>(0, 17), 255);
+    EXPECT_EQ(r.valid.at<uint8_t>(0, 18), 0);
+  }
+}
+
 TEST(ViewBlender, WeightsAndDepthToleranceChangeTheMix) {
   const std::vector<cv::Mat> planes = {cv::Mat(2, 4, CV_32FC1, cv::Scalar(10)),
                                        cv::Mat(2, 4, CV_32FC1, cv::Scalar(30))};
@@ -64,15 +90,16 @@ TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
   // samples between pixels; a plane linear in x and y is reproduced exactly by bilinear
   // interpolation, clamped at the border (u ≤ 39, v ≤ 19: the last pixel is read). 8-bit planes
   // take the in-place word path (1 and 3 channels: the last pixels' words are shifted), half-float
-  // planes the in-place path (2 and 7 channels: whole words, and an odd last one); 10 float
-  // channels take two passes.
+  // planes the in-place path (2 and 7 channels: whole words, and an odd last one); with AVX-512,
+  // half and float planes of 2–8 channels are read a pixel at a time (8: every bit of the channel
+  // mask); 10 float channels take two passes.
   const int w = 40, h = 20;
   WarpField f = Field(w, h, w, 2.0f);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) f.map.at<cv::Vec2f>(y, x) = cv::Vec2f(x + 0.25f, y + 0.5f);
-  const std::pair<int, int> cases[] = {{CV_8U, 1},   {CV_8U, 3},  {CV_8U, 4},  {CV_16F, 2},
-                                       {CV_16F, 3},  {CV_16F, 7}, {CV_32F, 3}, {CV_32F, 7},
-                                       {CV_32F, 10}, {CV_16U, 3}};
+  const std::pair<int, int> cases[] = {
+      {CV_8U, 1},  {CV_8U, 3},  {CV_8U, 4},  {CV_16F, 2},  {CV_16F, 3}, {CV_16F, 7}, {CV_16F, 8},
+      {CV_32F, 2}, {CV_32F, 3}, {CV_32F, 7}, {CV_32F, 8}, {CV_32F, 10}, {CV_16U, 3}};
   for (const auto& [depth, channels] : cases) {
     cv::Mat linear(h, w, CV_32FC(channels));
     for (int y = 0; y < h; ++y)

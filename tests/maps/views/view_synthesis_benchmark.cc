@@ -113,6 +113,30 @@ void BM_BlendSevenViews(benchmark::State& state) {
 }
 BENCHMARK(BM_BlendSevenViews)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Blending the appearance map's parameter planes (appearance_map.h) from seven precomputed
+// warps: per view α, β×3, σ×3 as CV_16FC(7) and τ×3 as CV_32FC3.
+void BM_BlendParameterPlanes(benchmark::State& state) {
+  static const Views v = MakeViews();
+  views::DepthMeshWarper warper;
+  std::vector<views::WarpField> warps(7);
+  std::vector<cv::Mat> ab_sigma, tau;
+  cv::RNG rng(1);
+  for (int j = 0; j < 7; ++j) {
+    warper.Warp(v.camera, v.poses[j], v.depths[j], v.camera, v.virtual_pose, warps[j]);
+    cv::Mat params(v.camera.height, v.camera.width, CV_32FC(7)), half;
+    rng.fill(params, cv::RNG::UNIFORM, 1.0, 10.0);
+    params.convertTo(half, CV_16F);
+    ab_sigma.push_back(half);
+    tau.push_back(cv::Mat(v.camera.height, v.camera.width, CV_32FC3));
+    rng.fill(tau.back(), cv::RNG::UNIFORM, 0.0, 255.0);
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(views::BlendPlanes(warps, ab_sigma).value.data);
+    benchmark::DoNotOptimize(views::BlendPlanes(warps, tau).value.data);
+  }
+}
+BENCHMARK(BM_BlendParameterPlanes)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // Each reference view warped alone (the views differ in how far they are from the virtual one).
 void BM_WarpEachView(benchmark::State& state) {
   static const Views v = MakeViews();
