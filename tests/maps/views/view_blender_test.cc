@@ -98,7 +98,7 @@ TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) f.map.at<cv::Vec2f>(y, x) = cv::Vec2f(x + 0.25f, y + 0.5f);
   const std::pair<int, int> cases[] = {
-      {CV_8U, 1},  {CV_8U, 3},  {CV_8U, 4},  {CV_16F, 2},  {CV_16F, 3}, {CV_16F, 7}, {CV_16F, 8},
+      {CV_8U, 1},  {CV_8U, 3},  {CV_8U, 4},  {CV_16F, 2}, {CV_16F, 3},  {CV_16F, 7}, {CV_16F, 8},
       {CV_32F, 2}, {CV_32F, 3}, {CV_32F, 7}, {CV_32F, 8}, {CV_32F, 10}, {CV_16U, 3}};
   for (const auto& [depth, channels] : cases) {
     cv::Mat linear(h, w, CV_32FC(channels));
