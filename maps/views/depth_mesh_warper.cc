@@ -368,20 +368,21 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
   }
 }
 
-// A planar block of size × size quads with top-left vertex (u0, r0), drawn as the convex
+// A planar block of quads (b: top-left vertex, width × height quads), drawn as the convex
 // quadrilateral between its corners, row span by row span. On a plane 1/z is affine on screen,
 // and so is A/z for any A linear in 3-D: the source depth z_s and z_s·u_s, z_s·v_s
 // (u_s = (fx·X_s + cx·Z_s)/Z_s). Interpolating those and dividing gives exact source coordinates
 // across the block, where interpolating u_s itself would bend straight texture lines. A block
 // with a corner behind the near plane, or seen edge-on (not convex on screen), is drawn quad by
 // quad instead.
-void RasteriseBlock(const Vertices& v, int w, int u0, int r0, int size, float max_ratio,
+void RasteriseBlock(const Vertices& v, int w, const cv::Rect& block, float max_ratio,
                     const Target& t) {
-  const std::size_t i = std::size_t(r0) * w + u0, down = std::size_t(size) * w;
+  const int u0 = block.x, r0 = block.y, u1 = u0 + block.width, r1 = r0 + block.height;
+  const std::size_t i = std::size_t(r0) * w + u0, down = std::size_t(block.height) * w;
   // Corners in order around the block: p00, p10, p11, p01.
-  const std::size_t c[4] = {i, i + size, i + down + size, i + down};
-  const float cu[4] = {float(u0), float(u0 + size), float(u0 + size), float(u0)};
-  const float cr[4] = {float(r0), float(r0), float(r0 + size), float(r0 + size)};
+  const std::size_t c[4] = {i, i + block.width, i + down + block.width, i + down};
+  const float cu[4] = {float(u0), float(u1), float(u1), float(u0)};
+  const float cr[4] = {float(r0), float(r0), float(r1), float(r1)};
   float x[4], y[4], attr[4][4];  // attr: 1/z, z_s/z, z_s·u_s/z, z_s·v_s/z
   bool usable = true;
   for (int n = 0; n < 4; ++n) {
@@ -400,8 +401,8 @@ void RasteriseBlock(const Vertices& v, int w, int u0, int r0, int size, float ma
     turn = cross;
   }
   if (!usable) {
-    for (int r = r0; r < r0 + size; ++r)
-      for (int u = u0; u < u0 + size; ++u) RasteriseQuad(v, w, u, r, max_ratio, t);
+    for (int r = r0; r < r1; ++r)
+      for (int u = u0; u < u1; ++u) RasteriseQuad(v, w, u, r, max_ratio, t);
     return;
   }
   // Gradients of each attribute on screen from p00, p10 and p01 (one plane).
@@ -458,22 +459,23 @@ void RasteriseBlock(const Vertices& v, int w, int u0, int r0, int size, float ma
 }
 
 // Marks the quads the planar blocks draw (Vertices::skip) — all of a block's, except its outer
-// row or column towards a neighbour that is not a planar block — and returns the blocks' top-left
-// vertices (u0, r0).
-std::vector<cv::Point> MarkPlanarBlocks(const cv::Mat& flags, int size, int w, Vertices& v) {
-  std::vector<cv::Point> blocks;
-  auto planar = [&](int bx, int by) {
-    return bx >= 0 && by >= 0 && bx < flags.cols && by < flags.rows && flags.at<uchar>(by, bx);
+// row or column towards a neighbour that is not a planar block (at the image's border there is
+// none: no crack can open there) — and returns the blocks (planar_blocks.h's PlanarBlockRect).
+std::vector<cv::Rect> MarkPlanarBlocks(const cv::Mat& flags, int size, int w, int h, Vertices& v) {
+  std::vector<cv::Rect> blocks;
+  // Whether a neighbour's quads are drawn apart from its block: it exists and is not planar.
+  auto apart = [&](int bx, int by) {
+    return bx >= 0 && by >= 0 && bx < flags.cols && by < flags.rows && !flags.at<uchar>(by, bx);
   };
   for (int by = 0; by < flags.rows; ++by) {
     for (int bx = 0; bx < flags.cols; ++bx) {
-      if (!planar(bx, by)) continue;
-      const int u0 = bx * size, r0 = by * size;
-      blocks.push_back({u0, r0});
-      const int qu0 = planar(bx - 1, by) ? 0 : 1, qu1 = planar(bx + 1, by) ? size : size - 1;
-      const int qr0 = planar(bx, by - 1) ? 0 : 1, qr1 = planar(bx, by + 1) ? size : size - 1;
+      if (!flags.at<uchar>(by, bx)) continue;
+      const cv::Rect b = PlanarBlockRect(bx, by, w, h, size);
+      blocks.push_back(b);
+      const int qu0 = apart(bx - 1, by) ? 1 : 0, qu1 = b.width - (apart(bx + 1, by) ? 1 : 0);
+      const int qr0 = apart(bx, by - 1) ? 1 : 0, qr1 = b.height - (apart(bx, by + 1) ? 1 : 0);
       for (int r = qr0; r < qr1; ++r) {
-        int8_t* skip = &v.skip[std::size_t(r0 + r) * w + u0];
+        int8_t* skip = &v.skip[std::size_t(b.y + r) * w + b.x];
         std::fill(skip + qu0, skip + qu1, -1);
       }
     }
@@ -645,14 +647,14 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   const Eigen::Isometry3d T_vs = T_world_dst.inverse() * T_world_src;
   Vertices& v = scratch.vertices;
   ProjectVertices(src, T_vs, depth, dst, o.near_plane, threads, v);
-  std::vector<cv::Point> blocks;
+  std::vector<cv::Rect> blocks;
   if (o.planar_block > 0) {
     // The caller's flags if they fit this block size (a grid of another size: found anew).
-    const cv::Size grid((src.width - 1) / o.planar_block, (src.height - 1) / o.planar_block);
+    const cv::Size grid = PlanarGrid(src.width, src.height, o.planar_block);
     const bool kept =
         planar_blocks && planar_blocks->type() == CV_8UC1 && planar_blocks->size() == grid;
     blocks = MarkPlanarBlocks(kept ? *planar_blocks : PlanarBlocksFor(depth, o), o.planar_block,
-                              src.width, v);
+                              src.width, src.height, v);
   }
 
   // Threads take blocks of source rows, each with its own target, merged by depth afterwards.
@@ -669,10 +671,8 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
       const Target& view = targets[std::size_t(ti)];
       const int r_begin = (src.height - 1) * ti / n_threads;
       const int r_end = (src.height - 1) * (ti + 1) / n_threads;
-      for (const cv::Point& b : blocks) {
-        if (b.y >= r_begin && b.y < r_end) {
-          RasteriseBlock(v, w, b.x, b.y, o.planar_block, max_ratio, view);
-        }
+      for (const cv::Rect& b : blocks) {
+        if (b.y >= r_begin && b.y < r_end) RasteriseBlock(v, w, b, max_ratio, view);
       }
       for (int r = r_begin; r < r_end; ++r) {
         if (o.vectorised) {

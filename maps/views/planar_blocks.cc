@@ -8,17 +8,19 @@
 namespace novelty::views {
 namespace {
 
-bool IsPlanar(const cv::Mat& depth, int u0, int v0, int size, float tolerance) {
-  const float z00 = depth.at<float>(v0, u0), z10 = depth.at<float>(v0, u0 + size);
-  const float z01 = depth.at<float>(v0 + size, u0);
+bool IsPlanar(const cv::Mat& depth, const cv::Rect& block, float tolerance) {
+  const int u0 = block.x, v0 = block.y, u1 = block.x + block.width, v1 = block.y + block.height;
+  const float z00 = depth.at<float>(v0, u0), z10 = depth.at<float>(v0, u1);
+  const float z01 = depth.at<float>(v1, u0);
   if (!(z00 > 0.0f && z10 > 0.0f && z01 > 0.0f)) return false;
   // ŵ(u, v) = w00 + du·(u − u0) + dv·(v − v0)
   const float w00 = 1.0f / z00;
-  const float du = (1.0f / z10 - w00) / float(size), dv = (1.0f / z01 - w00) / float(size);
-  for (int y = 0; y <= size; ++y) {
+  const float du = (1.0f / z10 - w00) / float(block.width);
+  const float dv = (1.0f / z01 - w00) / float(block.height);
+  for (int y = 0; y <= block.height; ++y) {
     const float* z = depth.ptr<float>(v0 + y) + u0;
     const float row = w00 + dv * float(y);
-    for (int x = 0; x <= size; ++x) {
+    for (int x = 0; x <= block.width; ++x) {
       // Written so that NaN, infinite or non-positive depths fail.
       if (!(z[x] > 0.0f && std::abs(z[x] * (row + du * float(x)) - 1.0f) <= tolerance))
         return false;
@@ -29,17 +31,27 @@ bool IsPlanar(const cv::Mat& depth, int u0, int v0, int size, float tolerance) {
 
 }  // namespace
 
+cv::Size PlanarGrid(int cols, int rows, int size) {
+  return {std::max(0, (cols - 1 + size - 1) / size), std::max(0, (rows - 1 + size - 1) / size)};
+}
+
+cv::Rect PlanarBlockRect(int bx, int by, int cols, int rows, int size) {
+  const int u0 = bx * size, v0 = by * size;
+  return {u0, v0, std::min(size, cols - 1 - u0), std::min(size, rows - 1 - v0)};
+}
+
 cv::Mat FindPlanarBlocks(const cv::Mat& depth, int size, double tolerance) {
   if (depth.type() != CV_32FC1)
     throw std::invalid_argument("FindPlanarBlocks: depth must be CV_32FC1");
   if (size < 1)
     throw std::invalid_argument("FindPlanarBlocks: block size must be at least 1, got " +
                                 std::to_string(size));
-  const int bx = std::max(0, (depth.cols - 1) / size), by = std::max(0, (depth.rows - 1) / size);
-  cv::Mat flags(by, bx, CV_8UC1, cv::Scalar(0));
-  for (int y = 0; y < by; ++y)
-    for (int x = 0; x < bx; ++x)
-      if (IsPlanar(depth, x * size, y * size, size, float(tolerance))) flags.at<uchar>(y, x) = 255;
+  const cv::Size grid = PlanarGrid(depth.cols, depth.rows, size);
+  cv::Mat flags(grid, CV_8UC1, cv::Scalar(0));
+  for (int y = 0; y < grid.height; ++y)
+    for (int x = 0; x < grid.width; ++x)
+      if (IsPlanar(depth, PlanarBlockRect(x, y, depth.cols, depth.rows, size), float(tolerance)))
+        flags.at<uchar>(y, x) = 255;
   return flags;
 }
 

@@ -12,11 +12,19 @@ namespace novelty::views {
 
 /// Flags (CV_8UC1, 255 = planar) for blocks of `size`×`size` quads, i.e. (size+1)² pixels sharing
 /// their border rows and columns with the neighbours: block (bx, by) covers pixels
-/// [bx·size, bx·size + size] × [by·size, by·size + size]. The grid is
-/// ⌊(rows−1)/size⌋ × ⌊(cols−1)/size⌋; remaining pixels belong to no block. A block is planar when
-/// every depth is finite and positive and |z·ŵ − 1| ≤ `tolerance` for the affine inverse depth ŵ
-/// through the corners (u0, v0), (u0+size, v0), (u0, v0+size) — the relative depth error.
+/// [bx·size, bx·size + size] × [by·size, by·size + size], clipped to the image — the last block
+/// column and row are narrower where size does not divide cols−1 or rows−1 (PlanarBlockRect). The
+/// grid is PlanarGrid(cols, rows, size). A block is planar when every depth is finite and positive
+/// and |z·ŵ − 1| ≤ `tolerance` for the affine inverse depth ŵ through the corners (u0, v0),
+/// (u1, v0), (u0, v1) — the relative depth error.
 /// Throws std::invalid_argument unless depth is CV_32FC1 and size ≥ 1.
 cv::Mat FindPlanarBlocks(const cv::Mat& depth, int size, double tolerance);
+
+/// The block grid of an image of cols × rows pixels: ⌈(cols−1)/size⌉ × ⌈(rows−1)/size⌉ blocks.
+cv::Size PlanarGrid(int cols, int rows, int size);
+
+/// The quads of block (bx, by): x, y = its top-left pixel, width × height quads (size × size but
+/// at the image's right and bottom edges).
+cv::Rect PlanarBlockRect(int bx, int by, int cols, int rows, int size);
 
 }  // namespace novelty::views

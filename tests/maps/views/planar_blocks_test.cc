@@ -24,6 +24,22 @@ TEST(PlanarBlocks, EveryBlockOfATiltedPlaneIsPlanar) {
   EXPECT_EQ(cv::countNonZero(flags), 20 * 15);
 }
 
+TEST(PlanarBlocks, TheLastColumnAndRowOfBlocksAreNarrower) {
+  // 165 × 125 pixels: 164 = 20·8 + 4 quads across, 124 = 15·8 + 4 down; the last block column
+  // and row are 4 quads wide and planar alike.
+  EXPECT_EQ(PlanarGrid(165, 125, 8), cv::Size(21, 16));
+  EXPECT_EQ(PlanarBlockRect(20, 15, 165, 125, 8), cv::Rect(160, 120, 4, 4));
+  EXPECT_EQ(PlanarBlockRect(3, 15, 165, 125, 8), cv::Rect(24, 120, 8, 4));
+  cv::Mat depth = TiltedPlane(165, 125);
+  cv::Mat flags = FindPlanarBlocks(depth, 8, 0.002);
+  ASSERT_EQ(flags.size(), cv::Size(21, 16));
+  EXPECT_EQ(cv::countNonZero(flags), 21 * 16);
+  depth.at<float>(122, 162) *= 1.01f;  // inside the corner block only
+  flags = FindPlanarBlocks(depth, 8, 0.002);
+  EXPECT_EQ(flags.at<uchar>(15, 20), 0);
+  EXPECT_EQ(cv::countNonZero(flags), 21 * 16 - 1);
+}
+
 TEST(PlanarBlocks, ACurvedSurfaceHasNone) {
   // A bowl, curved alike everywhere: inverse depth 0.5 + k·r². At a block's centre it lies
   // 2·16·k off the affine function through the corners, ≥ 0.29 % of it for k = 5e-4.
@@ -60,7 +76,9 @@ TEST(PlanarBlocks, TheToleranceIsARelativeDepthError) {
 TEST(PlanarBlocks, BadInputIsRejected) {
   EXPECT_THROW(FindPlanarBlocks(cv::Mat(9, 9, CV_8UC1), 8, 0.002), std::invalid_argument);
   EXPECT_THROW(FindPlanarBlocks(TiltedPlane(9, 9), 0, 0.002), std::invalid_argument);
-  EXPECT_EQ(FindPlanarBlocks(TiltedPlane(5, 5), 8, 0.002).total(), 0u);  // smaller than a block
+  // Smaller than a block: one block of what there is; a single pixel or row: no quad, no block.
+  EXPECT_EQ(cv::countNonZero(FindPlanarBlocks(TiltedPlane(5, 5), 8, 0.002)), 1);
+  EXPECT_EQ(FindPlanarBlocks(TiltedPlane(5, 1), 8, 0.002).total(), 0u);
 }
 
 }  // namespace
