@@ -368,7 +368,7 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
   }
 }
 
-// A planar block of quads (b: top-left vertex, width × height quads), drawn as the convex
+// A planar block or run of blocks (top-left vertex, width × height quads), drawn as the convex
 // quadrilateral between its corners, row span by row span. On a plane 1/z is affine on screen,
 // and so is A/z for any A linear in 3-D: the source depth z_s and z_s·u_s, z_s·v_s
 // (u_s = (fx·X_s + cx·Z_s)/Z_s). Interpolating those and dividing gives exact source coordinates
@@ -460,18 +460,30 @@ void RasteriseBlock(const Vertices& v, int w, const cv::Rect& block, float max_r
 
 // Marks the quads the planar blocks draw (Vertices::skip) — all of a block's, except its outer
 // row or column towards a neighbour that is not a planar block (at the image's border there is
-// none: no crack can open there) — and returns the blocks (planar_blocks.h's PlanarBlockRect).
+// none: no crack can open there) — and returns what to draw: the runs of blocks on one plane
+// (planar_blocks.h), each one rectangle of quads.
 std::vector<cv::Rect> MarkPlanarBlocks(const cv::Mat& flags, int size, int w, int h, Vertices& v) {
-  std::vector<cv::Rect> blocks;
+  std::vector<cv::Rect> runs;
   // Whether a neighbour's quads are drawn apart from its block: it exists and is not planar.
   auto apart = [&](int bx, int by) {
-    return bx >= 0 && by >= 0 && bx < flags.cols && by < flags.rows && !flags.at<uchar>(by, bx);
+    return bx >= 0 && by >= 0 && bx < flags.cols && by < flags.rows &&
+           flags.at<uchar>(by, bx) == kNotPlanar;
   };
   for (int by = 0; by < flags.rows; ++by) {
+    bool open = false;  // the last run continues into the next block
     for (int bx = 0; bx < flags.cols; ++bx) {
-      if (!flags.at<uchar>(by, bx)) continue;
+      const uchar flag = flags.at<uchar>(by, bx);
+      if (flag == kNotPlanar) {
+        open = false;
+        continue;
+      }
       const cv::Rect b = PlanarBlockRect(bx, by, w, h, size);
-      blocks.push_back(b);
+      if (open) {
+        runs.back() |= b;
+      } else {
+        runs.push_back(b);
+      }
+      open = flag == kPlanarRunContinues;
       const int qu0 = apart(bx - 1, by) ? 1 : 0, qu1 = b.width - (apart(bx + 1, by) ? 1 : 0);
       const int qr0 = apart(bx, by - 1) ? 1 : 0, qr1 = b.height - (apart(bx, by + 1) ? 1 : 0);
       for (int r = qr0; r < qr1; ++r) {
@@ -480,7 +492,7 @@ std::vector<cv::Rect> MarkPlanarBlocks(const cv::Mat& flags, int size, int w, in
       }
     }
   }
-  return blocks;
+  return runs;
 }
 
 }  // namespace

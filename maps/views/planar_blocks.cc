@@ -29,6 +29,21 @@ bool IsPlanar(const cv::Mat& depth, const cv::Rect& block, float tolerance) {
   return true;
 }
 
+// Planar blocks [x0, x1) of block row y joined into runs: all of them if their union is planar,
+// else each half on its own.
+void JoinRuns(const cv::Mat& depth, int size, float tolerance, int y, int x0, int x1, uchar* row) {
+  if (x1 - x0 < 2) return;
+  const cv::Rect first = PlanarBlockRect(x0, y, depth.cols, depth.rows, size);
+  const cv::Rect last = PlanarBlockRect(x1 - 1, y, depth.cols, depth.rows, size);
+  if (IsPlanar(depth, first | last, tolerance)) {
+    std::fill(row + x0, row + x1 - 1, kPlanarRunContinues);
+    return;
+  }
+  const int mid = (x0 + x1) / 2;
+  JoinRuns(depth, size, tolerance, y, x0, mid, row);
+  JoinRuns(depth, size, tolerance, y, mid, x1, row);
+}
+
 }  // namespace
 
 cv::Size PlanarGrid(int cols, int rows, int size) {
@@ -47,11 +62,20 @@ cv::Mat FindPlanarBlocks(const cv::Mat& depth, int size, double tolerance) {
     throw std::invalid_argument("FindPlanarBlocks: block size must be at least 1, got " +
                                 std::to_string(size));
   const cv::Size grid = PlanarGrid(depth.cols, depth.rows, size);
-  cv::Mat flags(grid, CV_8UC1, cv::Scalar(0));
-  for (int y = 0; y < grid.height; ++y)
-    for (int x = 0; x < grid.width; ++x)
+  cv::Mat flags(grid, CV_8UC1, cv::Scalar(kNotPlanar));
+  for (int y = 0; y < grid.height; ++y) {
+    uchar* row = flags.ptr<uchar>(y);
+    for (int x = 0; x < grid.width; ++x) {
       if (IsPlanar(depth, PlanarBlockRect(x, y, depth.cols, depth.rows, size), float(tolerance)))
-        flags.at<uchar>(y, x) = 255;
+        row[x] = kPlanar;
+    }
+    for (int x = 0; x < grid.width;) {  // each sequence of planar blocks into runs
+      int end = x;
+      while (end < grid.width && row[end] == kPlanar) ++end;
+      JoinRuns(depth, size, float(tolerance), y, x, end, row);
+      x = std::max(end, x + 1);
+    }
+  }
   return flags;
 }
 

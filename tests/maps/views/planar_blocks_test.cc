@@ -22,6 +22,29 @@ TEST(PlanarBlocks, EveryBlockOfATiltedPlaneIsPlanar) {
   ASSERT_EQ(flags.cols, 20);  // ⌊160 / 8⌋
   ASSERT_EQ(flags.rows, 15);
   EXPECT_EQ(cv::countNonZero(flags), 20 * 15);
+  // One plane: each block row is one run.
+  for (int by = 0; by < flags.rows; ++by) {
+    for (int bx = 0; bx < 19; ++bx) EXPECT_EQ(flags.at<uchar>(by, bx), kPlanarRunContinues);
+    EXPECT_EQ(flags.at<uchar>(by, 19), kPlanar);
+  }
+}
+
+TEST(PlanarBlocks, RunsStopWhereThePlaneChanges) {
+  // Two planes meeting in a crease at u = 80, a block boundary: every block is planar, and each
+  // block row splits into two runs there.
+  cv::Mat depth(121, 161, CV_32FC1);
+  for (int v = 0; v < depth.rows; ++v)
+    for (int u = 0; u < depth.cols; ++u)
+      depth.at<float>(v, u) = 1.0f / (0.4f + 0.001f * float(std::min(u, 80)) +
+                                      0.003f * float(std::max(u - 80, 0)) + 0.0006f * float(v));
+  const cv::Mat flags = FindPlanarBlocks(depth, 8, 0.002);
+  EXPECT_EQ(cv::countNonZero(flags), 20 * 15);
+  for (int by = 0; by < flags.rows; ++by) {
+    EXPECT_EQ(flags.at<uchar>(by, 0), kPlanarRunContinues);
+    EXPECT_EQ(flags.at<uchar>(by, 9), kPlanar);
+    EXPECT_EQ(flags.at<uchar>(by, 10), kPlanarRunContinues);
+    EXPECT_EQ(flags.at<uchar>(by, 19), kPlanar);
+  }
 }
 
 TEST(PlanarBlocks, TheLastColumnAndRowOfBlocksAreNarrower) {
@@ -57,12 +80,15 @@ TEST(PlanarBlocks, BlocksAcrossAStepOrWithoutDepthAreNot) {
   depth.at<float>(20, 130) = 0.0f;                                      // block (16, 2)
   const cv::Mat flags = FindPlanarBlocks(depth, 8, 0.002);
   for (int by = 0; by < flags.rows; ++by) {
-    EXPECT_EQ(flags.at<uchar>(by, 5), 0) << by;   // crosses the step
-    EXPECT_EQ(flags.at<uchar>(by, 4), 255) << by;  // left of it, its right column at u = 40
-    EXPECT_EQ(flags.at<uchar>(by, 6), 255) << by;  // right of it, the scaled plane (still one)
+    EXPECT_EQ(flags.at<uchar>(by, 5), kNotPlanar) << by;  // crosses the step
+    // Left of it (its right column at u = 40) a run ends; right of it, on the scaled plane
+    // (still one), another begins.
+    EXPECT_EQ(flags.at<uchar>(by, 4), kPlanar) << by;
+    EXPECT_EQ(flags.at<uchar>(by, 6), kPlanarRunContinues) << by;
   }
-  EXPECT_EQ(flags.at<uchar>(12, 1), 0);
-  EXPECT_EQ(flags.at<uchar>(2, 16), 0);
+  EXPECT_EQ(flags.at<uchar>(12, 1), kNotPlanar);
+  EXPECT_EQ(flags.at<uchar>(12, 0), kPlanar);  // a run of one before the hole
+  EXPECT_EQ(flags.at<uchar>(2, 16), kNotPlanar);
   EXPECT_EQ(cv::countNonZero(flags), 20 * 15 - 15 - 2);
 }
 
