@@ -1,6 +1,7 @@
 #include "maps/views/depth_mesh_warper.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -615,10 +616,12 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
     }
     return;
   }
-  // Whole views per thread: no thread waits for another or merges its z-buffer. (Splitting the
+  // Whole views per thread: no thread waits for another or merges its z-buffer. Each takes the
+  // next view not yet taken, so a thread that drew cheap views draws more of them. (Splitting the
   // view left over — seven on two cores — between the threads instead was no faster: the
   // merge and the extra synchronisation cost what the idle core loses.)
   const int workers = std::min(threads, int(sources.size()));
+  std::atomic<std::size_t> next{0};
   while (int(worker_scratch_.size()) < workers) {
     worker_scratch_.push_back(std::make_unique<Scratch>());
   }
@@ -626,7 +629,7 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
   ParallelBlocks(workers, workers, [&](int w0, int w1) {
     for (int w = w0; w < w1; ++w) {
       try {
-        for (std::size_t k = std::size_t(w); k < sources.size(); k += std::size_t(workers)) {
+        for (std::size_t k = next++; k < sources.size(); k = next++) {
           WarpWith(*worker_scratch_[std::size_t(w)], 1, *sources[k].camera, *sources[k].T_world_cam,
                    *sources[k].depth, sources[k].planar_blocks, dst, T_world_dst, fields[k]);
         }
