@@ -82,36 +82,69 @@ struct Projection {
   static void Put(float* p, F16 v) { Store(p, v); }
 };
 
-// Projects every source pixel into the virtual camera, sixteen at a time.
-void ProjectVertices(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, const cv::Mat& depth,
-                     const PinholeCamera& dst, double near_plane, int threads, Vertices& v) {
-  v.Resize(static_cast<std::size_t>(src.width) * src.height);
-  const Eigen::Matrix3f R = T_vs.linear().cast<float>();
-  const Eigen::Vector3f t = T_vs.translation().cast<float>();
-  // R · K⁻¹ (u, v, 1) is affine in u and v: a·u + b·v + c.
-  const Eigen::Vector3f a = R.col(0) / float(src.fx), b = R.col(1) / float(src.fy);
-  const Eigen::Vector3f c = R.col(2) - a * float(src.cx) - b * float(src.cy);
-  const Projection project{a.x(),          a.y(),          a.z(),          t.x(),
-                           t.y(),          t.z(),          float(dst.fx),  float(dst.fy),
-                           float(dst.cx),  float(dst.cy),  float(near_plane)};
-  const F16 lane_u = stats::lanes::Iota();
-  ParallelBlocks(src.height, ThreadCount(threads), [&](int r0, int r1) {
-    for (int r = r0; r < r1; ++r) {
-      const float* d = depth.ptr<float>(r);
-      const std::size_t base = std::size_t(r) * src.width;
-      const Eigen::Vector3f row = b * float(r) + c;
-      int u = 0;
-      for (; u + kLanes <= src.width; u += kLanes) {
-        project(Load(d + u), lane_u + float(u), row.x(), row.y(), row.z(), &v.x[base + u],
-                &v.y[base + u], &v.inv_z[base + u], &v.source_depth[base + u]);
-      }
-      for (; u < src.width; ++u) {
-        project(d[u], float(u), row.x(), row.y(), row.z(), &v.x[base + u], &v.y[base + u],
-                &v.inv_z[base + u], &v.source_depth[base + u]);
-      }
+// Projects source pixels into the virtual camera, sixteen at a time, a row at a time.
+class VertexProjector {
+ public:
+  VertexProjector(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, const cv::Mat& depth,
+                  const PinholeCamera& dst, double near_plane, Vertices& v)
+      : depth_(depth), v_(v), width_(src.width) {
+    const Eigen::Matrix3f R = T_vs.linear().cast<float>();
+    const Eigen::Vector3f t = T_vs.translation().cast<float>();
+    // R · K⁻¹ (u, v, 1) is affine in u and v: a·u + b·v + c.
+    const Eigen::Vector3f a = R.col(0) / float(src.fx);
+    b_ = R.col(1) / float(src.fy);
+    c_ = R.col(2) - a * float(src.cx) - b_ * float(src.cy);
+    project_ = {a.x(),
+                a.y(),
+                a.z(),
+                t.x(),
+                t.y(),
+                t.z(),
+                float(dst.fx),
+                float(dst.fy),
+                float(dst.cx),
+                float(dst.cy),
+                float(near_plane)};
+  }
+
+  // Row r: every vertex (all), or only the groups of sixteen that a quad drawn on its own uses
+  // (Vertices::skip of the quads in rows r − 1 and r, columns u − 1 … u + 15). Planar runs read
+  // only their corners, which lie on block rows, where the caller asks for all.
+  void Row(int r, bool all) const {
+    const float* d = depth_.ptr<float>(r);
+    const std::size_t base = std::size_t(r) * width_;
+    const Eigen::Vector3f row = b_ * float(r) + c_;
+    const F16 lane_u = stats::lanes::Iota();
+    int u = 0;
+    for (; u + kLanes <= width_; u += kLanes) {
+      if (!all && !Needed(r, u)) continue;
+      project_(Load(d + u), lane_u + float(u), row.x(), row.y(), row.z(), &v_.x[base + u],
+               &v_.y[base + u], &v_.inv_z[base + u], &v_.source_depth[base + u]);
     }
-  });
-}
+    for (; u < width_; ++u) {
+      project_(d[u], float(u), row.x(), row.y(), row.z(), &v_.x[base + u], &v_.y[base + u],
+               &v_.inv_z[base + u], &v_.source_depth[base + u]);
+    }
+  }
+
+ private:
+  bool Needed(int r, int u) const {
+    for (const int qr : {r - 1, r}) {
+      if (qr < 0) continue;
+      const int8_t* skip = &v_.skip[std::size_t(qr) * width_ + u];  // padded past the end
+      if (stats::lanes::Any(stats::lanes::LoadBytes(skip) == 0) || (u > 0 && skip[-1] == 0) ||
+          skip[kLanes] == 0)
+        return true;
+    }
+    return false;
+  }
+
+  const cv::Mat& depth_;
+  Vertices& v_;
+  int width_;
+  Eigen::Vector3f b_, c_;
+  Projection project_;
+};
 
 // What the rasteriser keeps per virtual pixel, in planes so that a span of sixteen pixels is
 // z-tested and written with a few vector instructions: inverse depth (the z-buffer, 0 = empty —
@@ -376,36 +409,51 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
 // across the block, where interpolating u_s itself would bend straight texture lines. A block
 // with a corner behind the near plane, or seen edge-on (not convex on screen), is drawn quad by
 // quad instead.
-void RasteriseBlock(const Vertices& v, int w, const cv::Rect& block, float max_ratio,
-                    const Target& t) {
+// A block's corners on screen in order around it (p00, p10, p11, p01) with their attributes
+// 1/z, z_s/z, z_s·u_s/z, z_s·v_s/z, and whether the block can be drawn as one polygon: every
+// corner in front of the near plane, and convex with some area on screen.
+struct BlockCorners {
+  float x[4], y[4], attr[4][4];
+  bool usable = true;
+};
+
+BlockCorners CornersOf(const Vertices& v, int w, const cv::Rect& block) {
   const int u0 = block.x, r0 = block.y, u1 = u0 + block.width, r1 = r0 + block.height;
   const std::size_t i = std::size_t(r0) * w + u0, down = std::size_t(block.height) * w;
-  // Corners in order around the block: p00, p10, p11, p01.
   const std::size_t c[4] = {i, i + block.width, i + down + block.width, i + down};
   const float cu[4] = {float(u0), float(u1), float(u1), float(u0)};
   const float cr[4] = {float(r0), float(r0), float(r1), float(r1)};
-  float x[4], y[4], attr[4][4];  // attr: 1/z, z_s/z, z_s·u_s/z, z_s·v_s/z
-  bool usable = true;
+  BlockCorners k;
   for (int n = 0; n < 4; ++n) {
-    x[n] = v.x[c[n]], y[n] = v.y[c[n]];
-    attr[0][n] = v.inv_z[c[n]];
-    attr[1][n] = attr[0][n] * v.source_depth[c[n]];
-    attr[2][n] = attr[1][n] * cu[n];
-    attr[3][n] = attr[1][n] * cr[n];
-    usable &= attr[0][n] != 0.0f;
+    k.x[n] = v.x[c[n]], k.y[n] = v.y[c[n]];
+    k.attr[0][n] = v.inv_z[c[n]];
+    k.attr[1][n] = k.attr[0][n] * v.source_depth[c[n]];
+    k.attr[2][n] = k.attr[1][n] * cu[n];
+    k.attr[3][n] = k.attr[1][n] * cr[n];
+    k.usable &= k.attr[0][n] != 0.0f;
   }
   float turn = 0.0f;  // the corners must turn one way (convex) and span an area
-  for (int n = 0; n < 4 && usable; ++n) {
+  for (int n = 0; n < 4 && k.usable; ++n) {
     const int a = (n + 1) % 4, b = (n + 2) % 4;
-    const float cross = (x[a] - x[n]) * (y[b] - y[a]) - (y[a] - y[n]) * (x[b] - x[a]);
-    usable = std::abs(cross) > 1e-3f && (n == 0 || (cross > 0) == (turn > 0));
+    const float cross =
+        (k.x[a] - k.x[n]) * (k.y[b] - k.y[a]) - (k.y[a] - k.y[n]) * (k.x[b] - k.x[a]);
+    k.usable = std::abs(cross) > 1e-3f && (n == 0 || (cross > 0) == (turn > 0));
     turn = cross;
   }
-  if (!usable) {
-    for (int r = r0; r < r1; ++r)
-      for (int u = u0; u < u1; ++u) RasteriseQuad(v, w, u, r, max_ratio, t);
+  return k;
+}
+
+void RasteriseBlock(const Vertices& v, int w, const cv::Rect& block, float max_ratio,
+                    const Target& t) {
+  const BlockCorners corners = CornersOf(v, w, block);
+  if (!corners.usable) {  // (its vertices were all projected: WarpWith)
+    for (int r = block.y; r < block.y + block.height; ++r)
+      for (int u = block.x; u < block.x + block.width; ++u) RasteriseQuad(v, w, u, r, max_ratio, t);
     return;
   }
+  const float(&x)[4] = corners.x;
+  const float(&y)[4] = corners.y;
+  const float(&attr)[4][4] = corners.attr;
   // Gradients of each attribute on screen from p00, p10 and p01 (one plane).
   const float e1x = x[1] - x[0], e1y = y[1] - y[0], e2x = x[3] - x[0], e2y = y[3] - y[0];
   const float inv_det = 1.0f / (e1x * e2y - e1y * e2x);
@@ -494,6 +542,30 @@ std::vector<cv::Rect> MarkPlanarBlocks(const cv::Mat& flags, int size, int w, in
     }
   }
   return runs;
+}
+
+// Quads with a vertex without depth (0, negative or not finite: no surface there) are never drawn;
+// they are marked in Vertices::skip like the planar blocks' quads, so that neither they nor
+// their vertices cost anything further.
+void SkipQuadsWithoutDepth(const cv::Mat& depth, Vertices& v) {
+  const int w = depth.cols;
+  const F16 lane = stats::lanes::Iota();
+  for (int r = 0; r + 1 < depth.rows; ++r) {
+    const float *d0 = depth.ptr<float>(r), *d1 = depth.ptr<float>(r + 1);
+    for (int u = 0; u + 1 < w; u += kLanes) {
+      const I16 quads = lane < float(w - 1 - u);  // quads u … w − 2 of this group
+      I16 with_depth = quads;
+      for (const float* p : {d0 + u, d0 + u + 1, d1 + u, d1 + u + 1}) {
+        const F16 z = LoadMasked(p, quads);
+        with_depth &= (z > 0.0f) & (z < 1e30f);
+      }
+      const I16 without = quads & ~with_depth;
+      if (!stats::lanes::Any(without)) continue;
+      int8_t* skip = &v.skip[std::size_t(r) * w + u];  // (bytes past the row: unchanged)
+      stats::lanes::StoreMaskBytes(reinterpret_cast<uint8_t*>(skip),
+                                   (stats::lanes::LoadBytes(skip) != 0) | without);
+    }
+  }
 }
 
 }  // namespace
@@ -661,7 +733,7 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   }
   const Eigen::Isometry3d T_vs = T_world_dst.inverse() * T_world_src;
   Vertices& v = scratch.vertices;
-  ProjectVertices(src, T_vs, depth, dst, o.near_plane, threads, v);
+  v.Resize(std::size_t(src.width) * src.height);
   std::vector<cv::Rect> blocks;
   if (o.planar_block > 0) {
     // The caller's flags if they fit this block size (a grid of another size: found anew).
@@ -670,6 +742,20 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
         planar_blocks && planar_blocks->type() == CV_8UC1 && planar_blocks->size() == grid;
     blocks = MarkPlanarBlocks(kept ? *planar_blocks : PlanarBlocksFor(depth, o), o.planar_block,
                               src.width, src.height, v);
+  }
+  SkipQuadsWithoutDepth(depth, v);
+  // Only the vertices something draws from: block rows (the runs' corners) whole, other rows where
+  // a quad is drawn on its own; a run that cannot be one polygon is drawn quad by quad, so its
+  // rows are projected whole as well.
+  const VertexProjector project(src, T_vs, depth, dst, o.near_plane, v);
+  const int block_size = std::max(1, o.planar_block);
+  ParallelBlocks(src.height, threads, [&](int r0, int r1) {
+    for (int r = r0; r < r1; ++r)
+      project.Row(r, !blocks.empty() && (r % block_size == 0 || r == src.height - 1));
+  });
+  for (const cv::Rect& b : blocks) {
+    if (CornersOf(v, src.width, b).usable) continue;
+    for (int r = b.y + 1; r < b.y + b.height; ++r) project.Row(r, true);
   }
 
   // Threads take blocks of source rows, each with its own target, merged by depth afterwards.

@@ -185,6 +185,28 @@ TEST(DepthMeshWarper, PlanarFlagsKeptByTheCallerAreUsed) {
   EXPECT_EQ(cv::norm(warp(&other_grid, 8).map, blocks.map, cv::NORM_INF), 0.0);
 }
 
+TEST(DepthMeshWarper, RunsReachingBehindTheCameraAreDrawnQuadByQuad) {
+  // A tilted plane 2.2–2.6 m ahead, seen by a virtual camera standing 2 m ahead and looking
+  // sideways along it: each block row is one run, which reaches behind the virtual camera and so
+  // cannot be drawn as one polygon. Its quads in front must come out as without blocks.
+  cv::Mat depth(kCam.height, kCam.width, CV_32FC1);
+  for (int y = 0; y < depth.rows; ++y)
+    for (int x = 0; x < depth.cols; ++x) depth.at<float>(y, x) = 1.0f / (0.4f + 0.0004f * x);
+  ASSERT_EQ(cv::countNonZero(FindPlanarBlocks(depth, 8, 0.002)),
+            PlanarGrid(kCam.width, kCam.height, 8).area());
+  const Eigen::Isometry3d virt = LookAt({2.0, 0.0, 0.0}, {2.3, 1.5, 0.0});
+  WarpOptions quads;
+  quads.planar_block = 0;
+  const WarpField a = WarpView(kCam, Forward(), depth, kCam, virt);
+  const WarpField b = WarpView(kCam, Forward(), depth, kCam, virt, quads);
+  EXPECT_GT(b.covered, kCam.width * kCam.height / 10);
+  EXPECT_NEAR(a.covered, b.covered, 3);
+  for (int i = 0; i < kCam.width * kCam.height; ++i) {
+    if (a.depth.at<float>(i) == 0.0f || b.depth.at<float>(i) == 0.0f) continue;
+    ASSERT_LT(cv::norm(a.map.at<cv::Vec2f>(i) - b.map.at<cv::Vec2f>(i)), 0.01) << i;
+  }
+}
+
 TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
   // Three views of a wavy surface; whole views per thread must give exactly the fields of
   // warping each view alone (the same rasteriser, only the work split differs).
