@@ -214,8 +214,7 @@ int main(int argc, char** argv) {
     bo.depth_tolerance = tolerance.getValue();
     bo.resolution_power = power.getValue();
     bo.angle_power = angle.getValue();
-    wo.compute_view_angles = bo.angle_power > 0.0;
-    wo.compute_source_depth = bo.resolution_power > 0.0;
+    wo = views::WarpOptionsFor(bo, wo);
     views::DepthMeshWarper warper(wo);
     if (rawlog.isSet()) {
       if (!truth.isSet()) throw std::invalid_argument("--rawlog needs --groundtruth DIR");

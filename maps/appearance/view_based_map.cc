@@ -22,7 +22,7 @@ bool SamePose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
 }  // namespace
 
 ViewBasedMap::ViewBasedMap(const ViewBasedMapOptions& options)
-    : options_(options), warper_(options.warp) {}
+    : options_(options), warper_(views::WarpOptionsFor(options.blend, options.warp)) {}
 
 ViewBasedMap::Prediction ViewBasedMap::Predict(
     const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,

@@ -590,23 +590,35 @@ struct TargetBuffers {
 
 struct DepthMeshWarper::Scratch {
   Vertices vertices;
+  // The first target's z-buffer (inverse depth): all zeros between warps — Finalise clears what
+  // it reads — so no warp clears it whole, and it stays in the cache of the core that warps.
+  std::vector<float> zbuffer;
+  bool zbuffer_dirty = false;        // a warp stopped between drawing and Finalise
   std::vector<TargetBuffers> extra;  // threads 1… of a view split between threads
 };
 
 namespace {
 
-// The field as the first target: its depth plane holds the z-buffer until Finalise.
-Target FieldTarget(WarpField& field, int width, int height, bool with_source_depth) {
-  field.depth.create(height, width, CV_32FC1);
+// The first target: the scratch's z-buffer (cleared whole only after a warp that did not finish)
+// and the field's planes (its depth, if asked, is written by Finalise).
+Target FieldTarget(WarpField& field, std::vector<float>& zbuffer, bool& zbuffer_dirty, int width,
+                   int height, const WarpOptions& o) {
+  const std::size_t n = std::size_t(width) * height;
+  if (zbuffer.size() != n || zbuffer_dirty) zbuffer.assign(n, 0.0f);
+  zbuffer_dirty = true;
   field.map.create(height, width, CV_32FC2);
-  // Cleared with memset: Mat::setTo copies a pattern block by block, 5 % of a warp.
-  std::memset(field.depth.data, 0, field.depth.total() * field.depth.elemSize());
+  if (o.compute_depth) {
+    field.depth.create(height, width, CV_32FC1);
+  } else {
+    field.depth.release();
+  }
+  const bool with_source_depth = o.compute_source_depth;
   if (with_source_depth) {
     field.source_depth.create(height, width, CV_32FC1);
   } else {
     field.source_depth.release();
   }
-  return {field.depth.ptr<float>(), with_source_depth ? field.source_depth.ptr<float>() : nullptr,
+  return {zbuffer.data(), with_source_depth ? field.source_depth.ptr<float>() : nullptr,
           field.map.ptr<float>(), width, height};
 }
 
@@ -635,9 +647,9 @@ void Merge(const std::vector<Target>& targets, int threads) {
   });
 }
 
-// The z-buffer becomes the field's depth (0 where uncovered, not 1/0), and uncovered pixels get
-// the field's markers (map −1, source depth 0). Returns the covered pixels.
-int Finalise(const Target& t, int threads) {
+// The z-buffer becomes `depth` if asked (0 where uncovered, not 1/0) and is cleared again;
+// uncovered pixels get the field's markers (map −1, source depth 0). Returns the covered pixels.
+int Finalise(const Target& t, float* depth, int threads) {
   std::vector<int> covered(std::size_t(t.height), 0);
   ParallelBlocks(t.height, threads, [&](int y0, int y1) {
     const F16 zero{};
@@ -649,8 +661,8 @@ int Finalise(const Target& t, int threads) {
         const I16 in_row = stats::lanes::Iota() < float(t.width - x);
         const F16 iz = LoadMasked(t.inv_z + j, in_row);
         const I16 hit = iz > zero, miss = in_row & ~hit;
-        StoreMasked(t.inv_z + j, Reciprocal(iz), in_row & hit);
-        StoreMasked(t.inv_z + j, zero, miss);
+        if (depth) StoreMasked(depth + j, hit ? Reciprocal(iz) : zero, in_row);
+        StoreMasked(t.inv_z + j, zero, hit);  // the z-buffer clean for the next warp
         if (t.source_depth) StoreMasked(t.source_depth + j, zero, miss);
         StoreMaskedPairs(t.uv + 2 * j, zero - 1.0f, zero - 1.0f, miss);
         n += stats::lanes::Count(hit);
@@ -725,6 +737,9 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   if (!IsRigid(T_world_src) || !IsRigid(T_world_dst)) {
     throw std::invalid_argument("WarpView: a camera pose is not a rigid transform");
   }
+  if (o.compute_view_angles && !o.compute_depth) {
+    throw std::invalid_argument("WarpView: compute_view_angles needs compute_depth");
+  }
   if (depth.type() != CV_32FC1 || depth.cols != src.width || depth.rows != src.height) {
     throw std::invalid_argument(
         "WarpView: source depth must be CV_32FC1 of the source camera's "
@@ -761,7 +776,8 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   // Threads take blocks of source rows, each with its own target, merged by depth afterwards.
   const int n_threads = std::max(1, std::min(src.height - 1, threads));
   scratch.extra.resize(std::size_t(n_threads - 1));
-  std::vector<Target> targets = {FieldTarget(field, dst.width, dst.height, o.compute_source_depth)};
+  std::vector<Target> targets = {
+      FieldTarget(field, scratch.zbuffer, scratch.zbuffer_dirty, dst.width, dst.height, o)};
   for (TargetBuffers& b : scratch.extra) {
     targets.push_back(b.Clear(dst.width, dst.height, o.compute_source_depth));
   }
@@ -787,7 +803,9 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
     }
   });
   if (n_threads > 1) Merge(targets, threads);
-  field.covered = Finalise(targets[0], threads);
+  field.covered =
+      Finalise(targets[0], o.compute_depth ? field.depth.ptr<float>() : nullptr, threads);
+  scratch.zbuffer_dirty = false;
   if (o.compute_view_angles) field.cos_angle = ViewAngles(field.depth, dst, T_vs.translation());
 }
 

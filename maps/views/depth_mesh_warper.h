@@ -29,6 +29,10 @@ struct WarpOptions {
   int threads = 0;
   /// Also fill WarpField::cos_angle (for view-dependent blending weights).
   bool compute_view_angles = false;
+  /// Fill WarpField::depth (BlendOptions::depth_tolerance and resolution_power read it; see
+  /// WarpOptionsFor in view_blender.h). Without it the field holds the map and `covered` only,
+  /// and the warp writes no depth plane at all (the z-buffer stays in the warper).
+  bool compute_depth = true;
   /// Also fill WarpField::source_depth (for BlendOptions::resolution_power). Off by default: it
   /// is 4 bytes per pixel written at every warp that only that blending weight reads.
   bool compute_source_depth = false;
@@ -49,7 +53,7 @@ struct WarpOptions {
 
 struct WarpField {
   cv::Mat map;    ///< CV_32FC2: source (u, v) for each virtual pixel; (-1, -1) where uncovered
-  cv::Mat depth;  ///< CV_32FC1: depth along the virtual camera's +Z; 0 where uncovered
+  cv::Mat depth;  ///< CV_32FC1 (if asked): depth along the virtual camera's +Z; 0 uncovered
   cv::Mat source_depth;  ///< CV_32FC1 (if asked): the same surface's depth in the source view
                          ///< (its resolution there: far sources are blurrier); 0 uncovered
   cv::Mat cos_angle;     ///< CV_32FC1 (if asked): cosine of the angle at the surface point between

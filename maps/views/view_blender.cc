@@ -503,6 +503,14 @@ int BlendAll(const std::vector<const WarpField*>& warps, const std::vector<Plane
 
 }  // namespace
 
+WarpOptions WarpOptionsFor(const BlendOptions& blend, WarpOptions warp) {
+  warp.compute_source_depth = blend.resolution_power > 0.0;
+  warp.compute_view_angles = blend.angle_power > 0.0;
+  warp.compute_depth = blend.depth_tolerance > 0.0 || warp.compute_source_depth ||
+                       warp.compute_view_angles;  // (the view angles are found from the depth)
+  return warp;
+}
+
 BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
                         const BlendOptions& o) {
   if (warps.empty() || warps.size() != planes.size()) {
@@ -515,10 +523,11 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
                                 " weights for " + std::to_string(warps.size()) + " views");
   }
   const int channels = planes[0].channels();
-  const cv::Size size = warps[0].depth.size();
+  const cv::Size size = warps[0].map.size();
+  const bool reads_depth = o.depth_tolerance > 0.0 || o.resolution_power > 0.0;
   for (std::size_t k = 0; k < warps.size(); ++k) {
-    if (planes[k].channels() != channels || warps[k].depth.size() != size ||
-        warps[k].map.size() != size) {
+    if (planes[k].channels() != channels || warps[k].map.size() != size ||
+        (reads_depth && warps[k].depth.size() != size)) {
       throw std::invalid_argument("BlendPlanes: view " + std::to_string(k) +
                                   " disagrees in channels or virtual size");
     }
@@ -526,6 +535,11 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
       throw std::invalid_argument(
           "BlendPlanes: angle_power needs warps computed with "
           "compute_view_angles");
+    }
+    if (reads_depth && warps[k].depth.empty()) {
+      throw std::invalid_argument(
+          "BlendPlanes: depth_tolerance and resolution_power need warps computed with "
+          "compute_depth");
     }
     if (o.resolution_power > 0.0 && warps[k].source_depth.empty()) {
       throw std::invalid_argument(

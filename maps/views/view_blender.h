@@ -42,6 +42,11 @@ struct BlendResult {
   int covered = 0;
 };
 
+/// `warp` with what blending with `blend` reads switched on — the depth for depth_tolerance and
+/// resolution_power, the source depth for resolution_power, the view angles for angle_power — and
+/// the depth switched off when nothing reads it (a warp then writes the map only).
+WarpOptions WarpOptionsFor(const BlendOptions& blend, WarpOptions warp);
+
 /// planes[k] is view k's plane (any depth, n channels, the source camera's size). Throws
 /// std::invalid_argument when counts, sizes or channel counts disagree.
 BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,

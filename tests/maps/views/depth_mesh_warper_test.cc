@@ -207,6 +207,45 @@ TEST(DepthMeshWarper, RunsReachingBehindTheCameraAreDrawnQuadByQuad) {
   }
 }
 
+TEST(DepthMeshWarper, AReusedWarperGivesFreshFieldsWithOrWithoutDepth) {
+  // One warper, two views in turn (its z-buffer is cleared by each warp's end, not its start):
+  // every field equals a fresh warper's. Without compute_depth the map is the same and there is
+  // no depth plane.
+  cv::Mat wavy(kCam.height, kCam.width, CV_32FC1);
+  for (int y = 0; y < wavy.rows; ++y)
+    for (int x = 0; x < wavy.cols; ++x)
+      wavy.at<float>(y, x) = 2.0f + 0.3f * std::sin(x * 0.13f) * std::cos(y * 0.05f);
+  const cv::Mat flat = Constant(1.5f);
+  const Eigen::Isometry3d virt = LookAt({0.05, -0.1, 0.05}, {1.0, 0.0, 0.1});
+  const WarpField fresh_wavy = WarpView(kCam, Forward(), wavy, kCam, virt);
+  const WarpField fresh_flat = WarpView(kCam, Forward(0.2), flat, kCam, virt);
+  DepthMeshWarper reused;
+  WarpOptions no_depth;
+  no_depth.compute_depth = false;
+  DepthMeshWarper map_only(no_depth);
+  const Eigen::Isometry3d poses[2] = {Forward(), Forward(0.2)};
+  const cv::Mat* depths[2] = {&wavy, &flat};
+  const WarpField* fresh_fields[2] = {&fresh_wavy, &fresh_flat};
+  for (int round = 0; round < 4; ++round) {
+    const cv::Mat& depth = *depths[round % 2];
+    const Eigen::Isometry3d& pose = poses[round % 2];
+    const WarpField& fresh = *fresh_fields[round % 2];
+    {
+      WarpField w, m;
+      reused.Warp(kCam, pose, depth, kCam, virt, w);
+      EXPECT_EQ(w.covered, fresh.covered);
+      EXPECT_EQ(cv::norm(w.depth, fresh.depth, cv::NORM_INF), 0.0);
+      EXPECT_EQ(cv::norm(w.map, fresh.map, cv::NORM_INF), 0.0);
+      map_only.Warp(kCam, pose, depth, kCam, virt, m);
+      EXPECT_TRUE(m.depth.empty());
+      EXPECT_EQ(m.covered, fresh.covered);
+      EXPECT_EQ(cv::norm(m.map, fresh.map, cv::NORM_INF), 0.0);
+    }
+  }
+  no_depth.compute_view_angles = true;  // found from the depth: refused without it
+  EXPECT_THROW(WarpView(kCam, Forward(), flat, kCam, virt, no_depth), std::invalid_argument);
+}
+
 TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
   // Three views of a wavy surface; whole views per thread must give exactly the fields of
   // warping each view alone (the same rasteriser, only the work split differs).

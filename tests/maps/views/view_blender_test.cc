@@ -150,6 +150,36 @@ TEST(ViewBlender, MismatchedInputIsRejected) {
   EXPECT_THROW(BlendPlanes(no_source_depth, {cv::Mat(2, 4, CV_8UC1)}, resolution),
                std::invalid_argument);
   EXPECT_NO_THROW(BlendPlanes(warps, {cv::Mat(2, 4, CV_8UC1)}, resolution));
+  // depth_tolerance needs the depth, which a warp fills only when asked; the plain average not.
+  std::vector<WarpField> map_only = {Field(4, 2, 4, 1.0f)};
+  map_only[0].depth.release();
+  map_only[0].source_depth.release();
+  BlendOptions tolerant;
+  tolerant.depth_tolerance = 0.05;
+  EXPECT_THROW(BlendPlanes(map_only, {cv::Mat(2, 4, CV_8UC1)}, tolerant), std::invalid_argument);
+  EXPECT_EQ(BlendPlanes(map_only, {cv::Mat(2, 4, CV_8UC1, cv::Scalar(7))}).value.at<float>(1, 3),
+            7.0f);
+}
+
+TEST(ViewBlender, WarpOptionsForAskForWhatTheBlendReads) {
+  WarpOptions base;
+  base.planar_block = 4;  // kept
+  const WarpOptions plain = WarpOptionsFor(BlendOptions{}, base);
+  EXPECT_FALSE(plain.compute_depth);
+  EXPECT_FALSE(plain.compute_source_depth);
+  EXPECT_FALSE(plain.compute_view_angles);
+  EXPECT_EQ(plain.planar_block, 4);
+  BlendOptions b;
+  b.depth_tolerance = 0.03;
+  EXPECT_TRUE(WarpOptionsFor(b, base).compute_depth);
+  b = BlendOptions{};
+  b.resolution_power = 1.0;
+  EXPECT_TRUE(WarpOptionsFor(b, base).compute_depth);
+  EXPECT_TRUE(WarpOptionsFor(b, base).compute_source_depth);
+  b = BlendOptions{};
+  b.angle_power = 2.0;
+  EXPECT_TRUE(WarpOptionsFor(b, base).compute_depth);
+  EXPECT_TRUE(WarpOptionsFor(b, base).compute_view_angles);
 }
 
 }  // namespace

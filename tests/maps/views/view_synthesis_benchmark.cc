@@ -53,7 +53,8 @@ std::vector<views::SourceView> Sources(const Views& v) {
 
 void BM_SynthesiseVirtualView(benchmark::State& state) {
   static const Views v = MakeViews();
-  views::WarpOptions wo;
+  // The warp computes what the (default) blend reads: the map, no depth planes.
+  views::WarpOptions wo = views::WarpOptionsFor(views::BlendOptions{}, {});
   wo.threads = static_cast<int>(state.range(0));
   for (auto _ : state) {
     const std::vector<int> selected = views::SelectViews(v.poses, v.camera, v.virtual_pose);
@@ -75,7 +76,7 @@ BENCHMARK(BM_SynthesiseVirtualView)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecon
 // blended; with 0 the warps alone. `planar` is WarpOptions::planar_block (0: every quad alone).
 void BM_SevenViews(benchmark::State& state) {
   static const Views v = MakeViews();
-  views::WarpOptions wo;
+  views::WarpOptions wo = views::WarpOptionsFor(views::BlendOptions{}, {});  // as above
   wo.threads = static_cast<int>(state.range(0));
   const bool blend = state.range(1) != 0;
   wo.planar_block = static_cast<int>(state.range(2));
