@@ -5,8 +5,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "maps/stats/lanes.h"
+
 namespace novelty::views {
 namespace {
+
+using namespace stats::lanes;  // F16, I16, Iota, LoadMasked, Any (maps/stats/lanes.h)
 
 bool IsPlanar(const cv::Mat& depth, const cv::Rect& block, float tolerance) {
   const int u0 = block.x, v0 = block.y, u1 = block.x + block.width, v1 = block.y + block.height;
@@ -17,13 +21,18 @@ bool IsPlanar(const cv::Mat& depth, const cv::Rect& block, float tolerance) {
   const float w00 = 1.0f / z00;
   const float du = (1.0f / z10 - w00) / float(block.width);
   const float dv = (1.0f / z01 - w00) / float(block.height);
+  // Each row sixteen pixels at a time.
+  const F16 lane = Iota();
   for (int y = 0; y <= block.height; ++y) {
     const float* z = depth.ptr<float>(v0 + y) + u0;
     const float row = w00 + dv * float(y);
-    for (int x = 0; x <= block.width; ++x) {
+    for (int x = 0; x <= block.width; x += kLanes) {
+      const I16 in_block = lane < float(block.width + 1 - x);
+      const F16 zx = LoadMasked(z + x, in_block);
+      const F16 error = zx * (row + du * (lane + float(x))) - 1.0f;
       // Written so that NaN, infinite or non-positive depths fail.
-      if (!(z[x] > 0.0f && std::abs(z[x] * (row + du * float(x)) - 1.0f) <= tolerance))
-        return false;
+      const I16 ok = (zx > 0.0f) & (error <= tolerance) & (error >= -tolerance);
+      if (Any(in_block & ~ok)) return false;
     }
   }
   return true;

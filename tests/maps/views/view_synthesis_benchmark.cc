@@ -138,6 +138,16 @@ void BM_BlendParameterPlanes(benchmark::State& state) {
 }
 BENCHMARK(BM_BlendParameterPlanes)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// Finding a view's planar blocks and runs (once per new or replaced reference view: a map
+// that replaces a view every frame pays it every frame).
+void BM_FindPlanarBlocks(benchmark::State& state) {
+  static const Views v = MakeViews();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(views::PlanarBlocksFor(v.depths[3], views::WarpOptions{}).data);
+  }
+}
+BENCHMARK(BM_FindPlanarBlocks)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // Each reference view warped alone (the views differ in how far they are from the virtual one).
 void BM_WarpEachView(benchmark::State& state) {
   static const Views v = MakeViews();
