@@ -144,6 +144,16 @@ inline bool Any(I16 mask) {
   return any;
 #endif
 }
+/// The lanes of a mask as bits (bit k: lane k), to visit only the set lanes.
+inline unsigned Bits(I16 mask) {
+#if defined(__AVX512F__)
+  return _mm512_test_epi32_mask((__m512i)mask, (__m512i)mask);
+#else
+  unsigned bits = 0;
+  for (int k = 0; k < kLanes; ++k) bits |= unsigned(mask[k] != 0) << k;
+  return bits;
+#endif
+}
 /// How many lanes of a mask are set.
 inline int Count(I16 mask) {
 #if defined(__AVX512F__)

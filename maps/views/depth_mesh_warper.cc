@@ -385,18 +385,18 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
       const float ox = float(n & 1), oy = float(n >> 1);
       hits[n] = Evaluate(q, qx0 + ox, qy0 + oy, (zero + ox < nx) & (zero + oy < ny));
     }
-    for (int k = 0; k < kLanes; ++k) {
-      if (!any[k]) continue;
-      if (!small[k]) {
-        RasteriseQuadTiled(v, w, u + k, r, max_ratio, t, int(qx0[k]), int(qx1[k]), int(qy0[k]),
-                           int(qy1[k]));
-        continue;
-      }
-      const std::size_t j0 = std::size_t(qy0[k]) * t.width + std::size_t(qx0[k]);
-      for (int n = 0; n < 4; ++n) {
-        if (!hits[n].hit[k]) continue;
-        Write(hits[n], k, j0 + std::size_t(n >> 1) * t.width + std::size_t(n & 1), float(u + k),
-              float(r), t);
+    for (unsigned big = stats::lanes::Bits(any & ~small); big; big &= big - 1) {
+      const int k = __builtin_ctz(big);
+      RasteriseQuadTiled(v, w, u + k, r, max_ratio, t, int(qx0[k]), int(qx1[k]), int(qy0[k]),
+                         int(qy1[k]));
+    }
+    // The small quads' hits, candidate pixel by candidate pixel: only hits are visited.
+    const I16 j0 = stats::lanes::AsInt(qy0) * t.width + stats::lanes::AsInt(qx0);
+    for (int n = 0; n < 4; ++n) {
+      const std::size_t step = std::size_t(n >> 1) * t.width + std::size_t(n & 1);
+      for (unsigned hit = stats::lanes::Bits(hits[n].hit); hit; hit &= hit - 1) {
+        const int k = __builtin_ctz(hit);
+        Write(hits[n], k, std::size_t(j0[k]) + step, float(u + k), float(r), t);
       }
     }
   }

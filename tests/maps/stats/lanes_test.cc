@@ -74,6 +74,8 @@ TEST(Lanes, MaskCountAndBytes) {
   I16 mask{};
   for (int k = 1; k < kLanes; k += 4) mask[k] = -1;  // lanes 1, 5, 9, 13
   EXPECT_EQ(Count(mask), 4);
+  EXPECT_EQ(Bits(mask), (1u << 1) | (1u << 5) | (1u << 9) | (1u << 13));
+  EXPECT_EQ(Bits(I16{} - 1), 0xFFFFu);
   EXPECT_EQ(Count(I16{}), 0);
   EXPECT_EQ(Count(I16{} - 1), kLanes);
   uint8_t bytes[kLanes + 1];
