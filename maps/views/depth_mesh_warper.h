@@ -38,10 +38,12 @@ struct WarpOptions {
   bool compute_source_depth = false;
   /// Blocks of this many × this many quads whose depths lie on one plane (within
   /// `planar_tolerance`, relative depth; planar_blocks.h) are drawn as one convex quadrilateral
-  /// with perspective-correct source coordinates instead of 2·size² small triangles: walls, floors
-  /// and table tops cost a fraction. Where such a block borders a non-planar one, its quads along
-  /// that side are drawn as well, so no crack opens between the block's straight edge and the
-  /// neighbour's vertices. 0 = every quad on its own.
+  /// with perspective-correct source coordinates instead of 2·size² small triangles, and so is
+  /// each run of such blocks in a block row that lie on one plane: walls, floors and table tops
+  /// cost a fraction, and their inner vertices are not even projected. Where a block borders a
+  /// non-planar one, its quads along that side are drawn as well, so no crack opens between the
+  /// block's straight edge and the neighbour's vertices. Quads without depth are skipped.
+  /// 0 = every quad on its own.
   int planar_block = 8;
   /// 0.002 moves a vertex by at most 0.2 % of its depth: 0.06 px of parallax for a 20 cm
   /// baseline at 2 m (fx 277).

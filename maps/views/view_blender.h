@@ -4,10 +4,11 @@
 // invalid: NaN in the result and 0 in the mask, never zeros that look like data.
 //
 // A view covers a pixel where its warp map holds source coordinates (not −1). The kernel runs
-// sixteen pixels at a time over all views, summing in registers, reads 8-bit and half-float
-// planes in place, and reads a view's source rows from registers where the sixteen pixels'
-// samples fit (row_windows.h): 1.0–1.3 ms for seven RGB views at 320×240 on two cores
-// (view_synthesis_benchmark).
+// sixteen pixels at a time over all views, summing in registers, and reads every plane in place
+// (floats of other depths are converted): 8-bit planes a word per pixel and corner, from registers
+// where the sixteen pixels' samples fit (row_windows.h), else gathered — 1.4–1.7 ms for seven RGB
+// views at 320×240 on two cores; half and float planes of 2–8 channels (the appearance map's
+// parameters) a pixel at a time with one masked load per corner (view_synthesis_benchmark).
 #pragma once
 
 #include <opencv2/core.hpp>
