@@ -30,11 +30,13 @@ struct Vertex {
   float x, y, inv_z, source_depth;
 };
 
-// All source vertices, structure of arrays (contiguous loads for the vectorised rasteriser).
+// All source vertices, structure of arrays (contiguous loads for the vectorised rasteriser). Only
+// the vertices something draws from are projected at a warp (WarpWith); the others keep values
+// of an earlier warp, read only by lanes that are masked out.
 struct Vertices {
   std::vector<float> x, y, inv_z, source_depth;
-  // Per quad (indexed by its top-left vertex): -1 where a planar block draws it, else 0. Bytes:
-  // cleared at every warp, and a quarter of ints' traffic.
+  // Per quad (indexed by its top-left vertex): -1 where a planar block draws it or it has a vertex
+  // without depth, else 0. Bytes: cleared at every warp, and a quarter of ints' traffic.
   std::vector<int8_t> skip;
   // n vertices, and padding that SIMD loads past the last one may read (never drawn: 1/z = 0).
   void Resize(std::size_t n) {
@@ -149,8 +151,8 @@ class VertexProjector {
 // What the rasteriser keeps per virtual pixel, in planes so that a span of sixteen pixels is
 // z-tested and written with a few vector instructions: inverse depth (the z-buffer, 0 = empty —
 // nearer is larger, so no division per pixel), the source depth and the source coordinates. The
-// first thread's target is the warp field itself (inverse depth in its depth plane, converted by
-// Finalise), so a view warped on one thread is never copied.
+// first thread's target writes the field's planes directly (its z-buffer, kept by the warper,
+// becomes the field's depth in Finalise), so a view warped on one thread is never copied.
 struct Target {
   float* inv_z;
   float* source_depth;  // null: not asked for (WarpOptions::compute_source_depth)
@@ -391,7 +393,8 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
                          int(qy1[k]));
     }
     // The small quads' hits, candidate pixel by candidate pixel: only hits are visited.
-    const I16 j0 = stats::lanes::AsInt(qy0) * t.width + stats::lanes::AsInt(qx0);
+    const I16 j0 = stats::lanes::AsInt(small ? qy0 : zero) * t.width +  // (other lanes' boxes
+                   stats::lanes::AsInt(small ? qx0 : zero);             // may lie far outside)
     for (int n = 0; n < 4; ++n) {
       const std::size_t step = std::size_t(n >> 1) * t.width + std::size_t(n & 1);
       for (unsigned hit = stats::lanes::Bits(hits[n].hit); hit; hit &= hit - 1) {
