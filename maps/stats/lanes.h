@@ -114,11 +114,21 @@ inline F16 Reciprocal(F16 x) {
   return 1.0f / x;
 #endif
 }
+/// The lanes of a mask as bits (bit k: lane k), to visit only the set lanes.
+inline unsigned Bits(I16 mask) {
+#if defined(__AVX512F__)
+  return _mm512_test_epi32_mask((__m512i)mask, (__m512i)mask);
+#else
+  unsigned bits = 0;
+  for (int k = 0; k < kLanes; ++k) bits |= unsigned(mask[k] != 0) << k;
+  return bits;
+#endif
+}
 /// The smallest (kLargest false) or largest lane of v among those set in `mask` (at least one).
 template <bool kLargest>
 inline int ExtremeLane(I16 v, I16 mask) {
 #if defined(__AVX512F__)
-  const __mmask16 m = _mm512_cmpneq_epi32_mask((__m512i)mask, __m512i{});
+  const __mmask16 m = __mmask16(Bits(mask));
   if constexpr (kLargest) return _mm512_mask_reduce_max_epi32(m, (__m512i)v);
   return _mm512_mask_reduce_min_epi32(m, (__m512i)v);
 #else
@@ -136,33 +146,11 @@ inline int MaxLane(I16 v, I16 mask) {
 }
 /// Whether any lane of a mask is set.
 inline bool Any(I16 mask) {
-#if defined(__AVX512F__)
-  return _mm512_test_epi32_mask((__m512i)mask, (__m512i)mask) != 0;
-#else
-  bool any = false;
-  for (int k = 0; k < kLanes; ++k) any |= mask[k] != 0;
-  return any;
-#endif
-}
-/// The lanes of a mask as bits (bit k: lane k), to visit only the set lanes.
-inline unsigned Bits(I16 mask) {
-#if defined(__AVX512F__)
-  return _mm512_test_epi32_mask((__m512i)mask, (__m512i)mask);
-#else
-  unsigned bits = 0;
-  for (int k = 0; k < kLanes; ++k) bits |= unsigned(mask[k] != 0) << k;
-  return bits;
-#endif
+  return Bits(mask) != 0;
 }
 /// How many lanes of a mask are set.
 inline int Count(I16 mask) {
-#if defined(__AVX512F__)
-  return __builtin_popcount(_mm512_test_epi32_mask((__m512i)mask, (__m512i)mask));
-#else
-  int n = 0;
-  for (int k = 0; k < kLanes; ++k) n += mask[k] != 0;
-  return n;
-#endif
+  return __builtin_popcount(Bits(mask));
 }
 /// p[k] = 255 where mask[k], 0 elsewhere (sixteen bytes: an 8-bit validity mask).
 inline void StoreMaskBytes(uint8_t* p, I16 mask) {
@@ -185,7 +173,7 @@ inline I16 LoadBytes(const int8_t* p) {
 /// p[k] where mask[k] (-1), 0 elsewhere; masked-out lanes are not read (may lie past the end).
 inline F16 LoadMasked(const float* p, I16 mask) {
 #if defined(__AVX512F__)
-  return (F16)_mm512_maskz_loadu_ps(_mm512_cmpneq_epi32_mask((__m512i)mask, __m512i{}), p);
+  return (F16)_mm512_maskz_loadu_ps(__mmask16(Bits(mask)), p);
 #else
   F16 v{};
   for (int k = 0; k < kLanes; ++k)
@@ -196,7 +184,7 @@ inline F16 LoadMasked(const float* p, I16 mask) {
 /// p[k] = v[k] where mask[k]; other lanes are neither read nor written.
 inline void StoreMasked(float* p, F16 v, I16 mask) {
 #if defined(__AVX512F__)
-  _mm512_mask_storeu_ps(p, _mm512_cmpneq_epi32_mask((__m512i)mask, __m512i{}), (__m512)v);
+  _mm512_mask_storeu_ps(p, __mmask16(Bits(mask)), (__m512)v);
 #else
   for (int k = 0; k < kLanes; ++k)
     if (mask[k]) p[k] = v[k];

@@ -133,9 +133,8 @@ class VertexProjector {
   bool Needed(int r, int u) const {
     for (const int qr : {r - 1, r}) {
       if (qr < 0) continue;
-      const int8_t* skip = &v_.skip[std::size_t(qr) * width_ + u];  // padded past the end
-      if (stats::lanes::Any(stats::lanes::LoadBytes(skip) == 0) || (u > 0 && skip[-1] == 0) ||
-          skip[kLanes] == 0)
+      const int8_t* skip = &v_.skip[std::size_t(qr) * width_ + u];
+      if (stats::lanes::Any(stats::lanes::LoadBytes(skip) == 0) || (u > 0 && skip[-1] == 0))
         return true;
     }
     return false;

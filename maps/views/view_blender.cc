@@ -402,7 +402,7 @@ inline void AddViewPixels(const WarpField& w, const Plane& p, float view_weight,
                           F16& weight_sum) {
   const auto f = FootprintOf(w, p, view_weight, o, nearest, y, x);
   weight_sum += f.weight;
-  unsigned lanes = _mm512_test_epi32_mask((__m512i)f.valid, (__m512i)f.valid);
+  unsigned lanes = stats::lanes::Bits(f.valid);
   if (!lanes) return;
   const I16 row0 = f.at.y0 * p.RowBytes(), row1 = f.at.y1 * p.RowBytes();
   const I16 col0 = f.at.x0 * p.pixel_bytes, col1 = f.at.x1 * p.pixel_bytes;

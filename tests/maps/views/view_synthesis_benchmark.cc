@@ -51,6 +51,14 @@ std::vector<views::SourceView> Sources(const Views& v) {
   return sources;
 }
 
+// The seven views warped into the virtual camera (default options), for the blends alone.
+std::vector<views::WarpField> Warps(const Views& v) {
+  views::DepthMeshWarper warper;
+  std::vector<views::WarpField> warps;
+  warper.WarpMany(Sources(v), v.camera, v.virtual_pose, warps);
+  return warps;
+}
+
 void BM_SynthesiseVirtualView(benchmark::State& state) {
   static const Views v = MakeViews();
   // The warp computes what the (default) blend reads: the map, no depth planes.
@@ -102,11 +110,7 @@ BENCHMARK(BM_SevenViews)
 // Blending alone: seven precomputed warps, one RGB plane each.
 void BM_BlendSevenViews(benchmark::State& state) {
   static const Views v = MakeViews();
-  views::DepthMeshWarper warper;
-  std::vector<views::WarpField> warps(7);
-  for (int j = 0; j < 7; ++j) {
-    warper.Warp(v.camera, v.poses[j], v.depths[j], v.camera, v.virtual_pose, warps[j]);
-  }
+  const std::vector<views::WarpField> warps = Warps(v);
   for (auto _ : state) {
     const views::BlendResult r = views::BlendPlanes(warps, v.images);
     benchmark::DoNotOptimize(r.value.data);
@@ -118,12 +122,10 @@ BENCHMARK(BM_BlendSevenViews)->Unit(benchmark::kMillisecond)->UseRealTime();
 // warps: per view α, β×3, σ×3 as CV_16FC(7) and τ×3 as CV_32FC3.
 void BM_BlendParameterPlanes(benchmark::State& state) {
   static const Views v = MakeViews();
-  views::DepthMeshWarper warper;
-  std::vector<views::WarpField> warps(7);
+  const std::vector<views::WarpField> warps = Warps(v);
   std::vector<cv::Mat> ab_sigma, tau;
   cv::RNG rng(1);
   for (int j = 0; j < 7; ++j) {
-    warper.Warp(v.camera, v.poses[j], v.depths[j], v.camera, v.virtual_pose, warps[j]);
     cv::Mat params(v.camera.height, v.camera.width, CV_32FC(7)), half;
     rng.fill(params, cv::RNG::UNIFORM, 1.0, 10.0);
     params.convertTo(half, CV_16F);
