@@ -253,6 +253,60 @@ inline void Sample(const Plane& p, const R& r, const Corners<I>& at, T w00, T w1
   }
 }
 
+#if defined(__AVX512VBMI__) && defined(__AVX512BW__)
+constexpr bool kNarrowReads = true;
+// An 8-bit plane of n channels (a word holds a pixel) where sixteen covered samples lie within
+// 64 bytes of a row and their top corners on two neighbouring rows: the usual case between views
+// of similar resolution and orientation. Three row registers (rows y_min … y_min + 2, from the
+// leftmost corner's byte) serve every corner with one two-register byte permute each — no
+// gather, and a fraction of RowWindows' work (its 256-byte rows and per-row selects). Returns
+// false, having read nothing, where the samples lie further apart.
+inline __attribute__((always_inline)) bool SampleBytesNarrow(const BytePlane& p,
+                                                             const Corners<I16>& at, F16 w00,
+                                                             F16 w10, F16 w01, F16 w11, I16 valid,
+                                                             int n, F16* acc) {
+  const int x_min = stats::lanes::MinLane(at.x0, valid);
+  const int y_min = stats::lanes::MinLane(at.y0, valid);
+  // Byte offsets from x_min (0 in uncovered lanes, whose reads are discarded).
+  const I16 byte0 = valid ? (at.x0 - x_min) * n : I16{},
+            byte1 = valid ? (at.x1 - x_min) * n : I16{};
+  if (stats::lanes::Any(valid & ((byte1 > 64 - 4) | (at.y0 - y_min > 1)))) return false;
+  const std::size_t total = p.TotalBytes();
+  __m512i rows[3];
+  for (int k = 0; k < 3; ++k) {
+    const std::size_t start =
+        std::size_t(std::min(y_min + k, p.rows - 1)) * std::size_t(p.RowBytes()) +
+        std::size_t(x_min) * std::size_t(n);
+    const std::size_t left = total - start;  // (nothing past the plane is read)
+    const __mmask64 mask = left >= 64 ? ~__mmask64{0} : (__mmask64{1} << left) - 1;
+    rows[k] = _mm512_maskz_loadu_epi8(mask, p.data + start);
+  }
+  // Bit 6 of a byte's index picks the pair's second row: top corners read rows (y_min,
+  // y_min + 1), bottom ones the next pair. (A bottom corner clamped to the last row, y1 = y0,
+  // reads a row that the clamped loads made the last row as well.)
+  const I16 second = valid ? (at.y0 - y_min) << 6 : I16{};
+  const auto word = [](const __m512i& a, const __m512i& b, I16 byte) {
+    return (I16)_mm512_permutex2var_epi8(a, (__m512i)(byte * 0x01010101 + 0x03020100), b);
+  };
+  const I16 c00 = word(rows[0], rows[1], byte0 + second),
+            c10 = word(rows[0], rows[1], byte1 + second);
+  const I16 c01 = word(rows[1], rows[2], byte0 + second),
+            c11 = word(rows[1], rows[2], byte1 + second);
+  for (int c = 0; c < n; ++c) {
+    const auto value = [c](I16 w) { return stats::lanes::AsFloat((w >> (8 * c)) & 0xFF); };
+    const F16 sample = w00 * value(c00) + w10 * value(c10) + w01 * value(c01) + w11 * value(c11);
+    acc[c] += valid ? sample : F16{};
+  }
+  return true;
+}
+#else
+constexpr bool kNarrowReads = false;
+inline bool SampleBytesNarrow(const BytePlane&, const Corners<I16>&, F16, F16, F16, F16, I16, int,
+                              F16*) {
+  return false;  // never called: kNarrowReads is false
+}
+#endif
+
 // The rows and bytes that sixteen lanes' covered samples read, if RowWindows can hold them
 // (rows = 0: it cannot — a magnified, shrunk or turned view, whose lanes then gather).
 struct WindowSpan {
@@ -335,15 +389,24 @@ inline auto FootprintOf(const WarpField& w, const Plane& p, float view_weight,
 }
 
 // One view's weighted bilinear sample at pixels [x, x + lanes) of row y, channels
-// [c0, c0 + n), added to acc[0…n) and its weight to `weight_sum` (see FootprintOf).
+// [c0, c0 + n), added to acc[0…n) and its weight to `weight_sum` (see FootprintOf). Inlined
+// into BlendPixels, whose channel count is then known here: the sums stay in registers and the
+// channel loops unroll (GCC left it a call, summing in memory).
 template <typename T, class Plane>
-inline void AddView(const WarpField& w, const Plane& p, float view_weight, const BlendOptions& o,
-                    T nearest, int y, int x, int c0, int n, T* acc, T& weight_sum) {
+inline __attribute__((always_inline)) void AddView(const WarpField& w, const Plane& p,
+                                                   float view_weight, const BlendOptions& o,
+                                                   T nearest, int y, int x, int c0, int n, T* acc,
+                                                   T& weight_sum) {
   const auto [valid, weight, at, w00, w10, w01, w11] =
       FootprintOf(w, p, view_weight, o, nearest, y, x);
   weight_sum += weight;
   if constexpr (std::is_same_v<T, F16>) {
     if (!stats::lanes::Any(valid)) return;  // sixteen uncovered pixels: nothing to read
+  }
+  if constexpr (std::is_same_v<T, F16> && std::is_same_v<Plane, BytePlane> && kNarrowReads) {
+    if (c0 == 0 && n == p.pixel_bytes &&
+        SampleBytesNarrow(p, at, w00, w10, w01, w11, valid, n, acc))
+      return;
   }
   if constexpr (std::is_same_v<T, F16> && RowWindows::kAvailable) {
     const WindowSpan span = SpanOf(p, valid, at);
@@ -453,13 +516,13 @@ inline int BlendWholePixels(const std::vector<const WarpField*>&, const std::vec
 // The blend at pixels [x, x + lanes) of row y: per pass of channels, every view's samples summed
 // in registers, then divided by the weight sum and written interleaved; NaN where no view
 // contributed. Returns the pixels covered.
-template <typename T, class Plane>
+template <typename T, class Plane, int kChannels = 0>
 inline int BlendPixels(const std::vector<const WarpField*>& warps, const std::vector<Plane>& planes,
                        const std::vector<float>& weights, const BlendOptions& o, int y, int x,
                        BlendResult& out) {
   const std::size_t views = warps.size();
   const T nearest = DepthLimit<T>(warps, o, y, x);
-  const int channels = planes[0].channels;
+  const int channels = kChannels > 0 ? kChannels : planes[0].channels;
   float* row = out.value.ptr<float>(y);
   T weight_sum{};
   for (int c0 = 0; c0 < channels; c0 += kPassChannels) {
@@ -480,19 +543,40 @@ inline int BlendPixels(const std::vector<const WarpField*>& warps, const std::ve
   return StoreValid(out.valid.ptr<uint8_t>(y) + x, weight_sum > 0.0f);
 }
 
+// The kernel for groups of sixteen pixels: 8-bit planes (1–4 channels, the usual images) with
+// their channel count known to the compiler, which then keeps the sums in registers and unrolls
+// the channel loops; other planes with it read at run time.
+template <class Plane>
+auto GroupKernelFor(const Plane& p) {
+  if constexpr (std::is_same_v<Plane, BytePlane>) {
+    switch (p.channels) {
+      case 1:
+        return &BlendPixels<F16, Plane, 1>;
+      case 2:
+        return &BlendPixels<F16, Plane, 2>;
+      case 3:
+        return &BlendPixels<F16, Plane, 3>;
+      default:
+        return &BlendPixels<F16, Plane, 4>;
+    }
+  }
+  return &BlendPixels<F16, Plane>;
+}
+
 // Every pixel, rows on all cores.
 template <class Plane>
 int BlendAll(const std::vector<const WarpField*>& warps, const std::vector<Plane>& planes,
              const std::vector<float>& weights, const BlendOptions& o, BlendResult& out) {
   const int width = out.value.cols;
   const bool whole_pixels = kPixelReads && planes[0].WholePixels();
+  const auto group = GroupKernelFor(planes[0]);
   std::vector<int> covered(std::size_t(out.value.rows), 0);
   cv::parallel_for_(cv::Range(0, out.value.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       int x = 0, n = 0;
       for (; x + kLanes <= width; x += kLanes) {
         n += whole_pixels ? BlendWholePixels(warps, planes, weights, o, y, x, out)
-                          : BlendPixels<F16>(warps, planes, weights, o, y, x, out);
+                          : group(warps, planes, weights, o, y, x, out);
       }
       for (; x < width; ++x) n += BlendPixels<float>(warps, planes, weights, o, y, x, out);
       covered[std::size_t(y)] = n;

@@ -122,6 +122,50 @@ TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
   }
 }
 
+TEST(ViewBlender, BilinearSamplesAreExactWhereViewsAreTurnedOrMagnified) {
+  // Maps as a turned or magnified view gives them: the sixteen pixels of a group read source rows
+  // that slant across one, two or many rows, or columns further apart than one window holds, so
+  // 8-bit planes take every read path (the narrow rows, the windows, the gathers). A plane linear
+  // in x and y is still reproduced exactly, clamped at the border.
+  const int w = 48, h = 24;
+  struct Map {
+    float ux, uy, u0, vx, vy, v0;
+  };
+  const Map maps[] = {{1.0f, 0.0f, 0.25f, 0.0f, 1.0f, 0.5f},      // aligned
+                      {0.95f, 0.1f, 0.3f, 0.07f, 0.9f, 0.6f},     // slightly turned: one row
+                      {0.9f, 0.2f, 0.1f, 0.2f, 0.8f, 0.4f},       // turned: rows 3 apart
+                      {0.6f, 0.5f, 0.7f, 0.55f, 0.4f, 0.2f},      // turned far
+                      {2.3f, 0.0f, 0.4f, 0.0f, 1.1f, 0.3f},       // magnified: wide columns
+                      {-0.9f, 0.0f, 46.5f, 0.0f, -1.0f, 23.2f}};  // mirrored
+  for (const Map& m : maps) {
+    WarpField f = Field(w, h, w, 2.0f);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        f.map.at<cv::Vec2f>(y, x) =
+            cv::Vec2f(m.ux * x + m.uy * y + m.u0, m.vx * x + m.vy * y + m.v0);
+    for (const int channels : {1, 3, 4}) {
+      cv::Mat plane(h, w, CV_8UC(channels));
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          for (int c = 0; c < channels; ++c)
+            plane.ptr<uint8_t>(y)[x * channels + c] = uint8_t(2 * x + 3 * y + 25 * c);
+      const BlendResult r = BlendPlanes({f}, {plane});
+      ASSERT_EQ(r.covered, w * h);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const cv::Vec2f s = f.map.at<cv::Vec2f>(y, x);
+          const float u = std::clamp(s[0], 0.0f, float(w - 1));
+          const float v = std::clamp(s[1], 0.0f, float(h - 1));
+          for (int c = 0; c < channels; ++c)
+            ASSERT_NEAR(r.value.ptr<float>(y)[x * channels + c], 2.0f * u + 3.0f * v + 25.0f * c,
+                        1e-3)
+                << "map " << (&m - maps) << ", " << channels << " channels, at " << x << "," << y
+                << " channel " << c;
+        }
+    }
+  }
+}
+
 TEST(ViewBlender, PlanesOfDifferentDepthsOrLayoutsBlendAlike) {
   // One 8-bit view, one float view, one 8-bit view cut from a larger image (not continuous): the
   // kernel reads all three as floats.
