@@ -5,10 +5,11 @@
 //
 // A view covers a pixel where its warp map holds source coordinates (not −1). The kernel runs
 // sixteen pixels at a time over all views, summing in registers, and reads every plane in place
-// (floats of other depths are converted): 8-bit planes a word per pixel and corner, from registers
-// where the sixteen pixels' samples fit (row_windows.h), else gathered — 1.4–1.7 ms for seven RGB
-// views at 320×240 on two cores; half and float planes of 2–8 channels (the appearance map's
-// parameters) a pixel at a time with one masked load per corner (view_synthesis_benchmark).
+// (floats of other depths are converted): 8-bit planes a word per pixel and corner, from three row
+// registers where the sixteen pixels' samples lie on two neighbouring rows, from wider windows
+// (row_windows.h) where they fit those, else gathered — 1.3–1.6 ms for seven RGB views at 320×240
+// on two cores; half and float planes of 2–8 channels (the appearance map's parameters) a pixel
+// at a time with one masked load per corner (view_synthesis_benchmark).
 #pragma once
 
 #include <opencv2/core.hpp>
