@@ -52,9 +52,9 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
   std::vector<views::SourceView> sources;
   for (int j : p.selected) {
     const views::ReferenceView& v = store_.view(j);
-    cv::Mat& flags = planar_blocks_[std::size_t(j)];
-    if (flags.empty()) flags = views::PlanarBlocksFor(v.depth, options_.warp);  // first warp
-    sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &flags});
+    views::MeshPlan& plan = plans_[std::size_t(j)];
+    if (plan.skip.empty()) plan = views::MeshPlanFor(v.depth, options_.warp);  // first warp
+    sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &plan});
   }
   warper_.WarpMany(sources, camera, T_world_cam, warps_);
   for (std::size_t k = 0; k < names.size(); ++k) {
@@ -74,14 +74,14 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
                                 " views but " + std::to_string(anchors.size()) + " anchors");
   }
   views::ReferenceViewStore store;
-  std::vector<cv::Mat> planar_blocks;  // found now: a loaded map's views are meant to be warped
+  std::vector<views::MeshPlan> plans;  // made now: a loaded map's views are meant to be warped
   for (views::ReferenceView& v : views) {
     const int added = store.Add(std::move(v));  // checks every view
-    planar_blocks.push_back(views::PlanarBlocksFor(store.view(added).depth, options_.warp));
+    plans.push_back(views::MeshPlanFor(store.view(added).depth, options_.warp));
   }
   store_ = std::move(store);
   anchors_ = std::move(anchors);
-  planar_blocks_ = std::move(planar_blocks);
+  plans_ = std::move(plans);
 }
 
 ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& camera,
@@ -114,11 +114,11 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& came
     r.added = true;
     r.view = store_.Add(std::move(v));
     anchors_.push_back(T_world_cam);
-    planar_blocks_.emplace_back();  // found when first warped
+    plans_.emplace_back();  // made when first warped
   } else {
     r.view = selected.front();
     store_.Replace(r.view, std::move(v));
-    planar_blocks_[std::size_t(r.view)] = cv::Mat();  // the depth changed
+    plans_[std::size_t(r.view)] = views::MeshPlan();  // the depth changed
   }
   return r;
 }

@@ -76,9 +76,10 @@ class ViewBasedMap {
   ViewBasedMapOptions options_;
   views::ReferenceViewStore store_;
   std::vector<Eigen::Isometry3d> anchors_;  // pose of each view when it was created
-  // Per view, for the warper: found when a view is loaded or first warped, dropped when it is
-  // replaced (a static camera replaces its view every frame and never warps it).
-  std::vector<cv::Mat> planar_blocks_;
+  // Per view, its mesh plan for the warper (mesh_plan.h; a byte per pixel): made when a view is
+  // loaded or first warped, dropped when it is replaced (a static camera replaces its view every
+  // frame and never warps it).
+  std::vector<views::MeshPlan> plans_;
   views::DepthMeshWarper warper_;
   std::vector<views::WarpField> warps_;  // reused from frame to frame
 };

@@ -15,7 +15,6 @@
 #include <vector>
 
 #include "maps/stats/lanes.h"
-#include "maps/views/planar_blocks.h"
 #include "maps/views/reference_view_store.h"
 
 namespace novelty::views {
@@ -32,12 +31,11 @@ struct Vertex {
 
 // All source vertices, structure of arrays (contiguous loads for the vectorised rasteriser). Only
 // the vertices something draws from are projected at a warp (WarpWith); the others keep values
-// of an earlier warp, read only by lanes that are masked out.
+// of an earlier warp, read only by lanes that are masked out. `skip` is the view's plan's
+// (mesh_plan.h): per quad, indexed by its top-left vertex, −1 where it is not drawn on its own.
 struct Vertices {
   std::vector<float> x, y, inv_z, source_depth;
-  // Per quad (indexed by its top-left vertex): -1 where a planar block draws it or it has a vertex
-  // without depth, else 0. Bytes: cleared at every warp, and a quarter of ints' traffic.
-  std::vector<int8_t> skip;
+  const int8_t* skip = nullptr;
   // n vertices, and padding that SIMD loads past the last one may read (never drawn: 1/z = 0).
   void Resize(std::size_t n) {
     x.resize(n + kPadding);
@@ -45,9 +43,8 @@ struct Vertices {
     inv_z.resize(n + kPadding);
     source_depth.resize(n + kPadding);
     std::fill(inv_z.begin() + std::ptrdiff_t(n), inv_z.end(), 0.0f);
-    skip.assign(n + kPadding, 0);
   }
-  static constexpr std::size_t kPadding = 64;
+  static constexpr std::size_t kPadding = MeshPlan::kPadding;
   Vertex operator[](std::size_t i) const { return {x[i], y[i], inv_z[i], source_depth[i]}; }
 };
 
@@ -509,72 +506,10 @@ void RasteriseBlock(const Vertices& v, int w, const cv::Rect& block, float max_r
   }
 }
 
-// Marks the quads the planar blocks draw (Vertices::skip) — all of a block's, except its outer
-// row or column towards a neighbour that is not a planar block (at the image's border there is
-// none: no crack can open there) — and returns what to draw: the runs of blocks on one plane
-// (planar_blocks.h), each one rectangle of quads.
-std::vector<cv::Rect> MarkPlanarBlocks(const cv::Mat& flags, int size, int w, int h, Vertices& v) {
-  std::vector<cv::Rect> runs;
-  // Whether a neighbour's quads are drawn apart from its block: it exists and is not planar.
-  auto apart = [&](int bx, int by) {
-    return bx >= 0 && by >= 0 && bx < flags.cols && by < flags.rows &&
-           flags.at<uchar>(by, bx) == kNotPlanar;
-  };
-  for (int by = 0; by < flags.rows; ++by) {
-    bool open = false;  // the last run continues into the next block
-    for (int bx = 0; bx < flags.cols; ++bx) {
-      const uchar flag = flags.at<uchar>(by, bx);
-      if (flag == kNotPlanar) {
-        open = false;
-        continue;
-      }
-      const cv::Rect b = PlanarBlockRect(bx, by, w, h, size);
-      if (open) {
-        runs.back() |= b;
-      } else {
-        runs.push_back(b);
-      }
-      open = flag == kPlanarRunContinues;
-      const int qu0 = apart(bx - 1, by) ? 1 : 0, qu1 = b.width - (apart(bx + 1, by) ? 1 : 0);
-      const int qr0 = apart(bx, by - 1) ? 1 : 0, qr1 = b.height - (apart(bx, by + 1) ? 1 : 0);
-      for (int r = qr0; r < qr1; ++r) {
-        int8_t* skip = &v.skip[std::size_t(b.y + r) * w + b.x];
-        std::fill(skip + qu0, skip + qu1, -1);
-      }
-    }
-  }
-  return runs;
-}
-
-// Quads with a vertex without depth (0, negative or not finite: no surface there) are never drawn;
-// they are marked in Vertices::skip like the planar blocks' quads, so that neither they nor
-// their vertices cost anything further.
-void SkipQuadsWithoutDepth(const cv::Mat& depth, Vertices& v) {
-  const int w = depth.cols;
-  const F16 lane = stats::lanes::Iota();
-  for (int r = 0; r + 1 < depth.rows; ++r) {
-    const float *d0 = depth.ptr<float>(r), *d1 = depth.ptr<float>(r + 1);
-    for (int u = 0; u + 1 < w; u += kLanes) {
-      const I16 quads = lane < float(w - 1 - u);  // quads u … w − 2 of this group
-      I16 with_depth = quads;
-      for (const float* p : {d0 + u, d0 + u + 1, d1 + u, d1 + u + 1}) {
-        const F16 z = LoadMasked(p, quads);
-        with_depth &= (z > 0.0f) & (z < 1e30f);
-      }
-      const I16 without = quads & ~with_depth;
-      if (!stats::lanes::Any(without)) continue;
-      int8_t* skip = &v.skip[std::size_t(r) * w + u];  // (bytes past the row: unchanged)
-      stats::lanes::StoreMaskBytes(reinterpret_cast<uint8_t*>(skip),
-                                   (stats::lanes::LoadBytes(skip) != 0) | without);
-    }
-  }
-}
-
 }  // namespace
 
-cv::Mat PlanarBlocksFor(const cv::Mat& depth, const WarpOptions& options) {
-  if (options.planar_block <= 0) return cv::Mat();
-  return FindPlanarBlocks(depth, options.planar_block, options.planar_tolerance);
+MeshPlan MeshPlanFor(const cv::Mat& depth, const WarpOptions& options) {
+  return PlanMesh(depth, options.planar_block, options.planar_tolerance);
 }
 
 // The buffers of a target other than the field (threads after the first of a split view).
@@ -597,6 +532,7 @@ struct DepthMeshWarper::Scratch {
   std::vector<float> zbuffer;
   bool zbuffer_dirty = false;        // a warp stopped between drawing and Finalise
   std::vector<TargetBuffers> extra;  // threads 1… of a view split between threads
+  MeshPlan plan;                     // the plan of a view warped without a fitting one
 };
 
 namespace {
@@ -698,7 +634,7 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
   if (threads < 2 || sources.size() < 2) {
     for (std::size_t k = 0; k < sources.size(); ++k) {
       WarpWith(*scratch_, threads, *sources[k].camera, *sources[k].T_world_cam, *sources[k].depth,
-               sources[k].planar_blocks, dst, T_world_dst, fields[k]);
+               sources[k].plan, dst, T_world_dst, fields[k]);
     }
     return;
   }
@@ -717,7 +653,7 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
       try {
         for (std::size_t k = next++; k < sources.size(); k = next++) {
           WarpWith(*worker_scratch_[std::size_t(w)], 1, *sources[k].camera, *sources[k].T_world_cam,
-                   *sources[k].depth, sources[k].planar_blocks, dst, T_world_dst, fields[k]);
+                   *sources[k].depth, sources[k].plan, dst, T_world_dst, fields[k]);
         }
       } catch (const std::exception& e) {
         errors[std::size_t(w)] = e.what();  // rethrown below, not across the thread pool
@@ -731,7 +667,7 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
 
 void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamera& src,
                                const Eigen::Isometry3d& T_world_src, const cv::Mat& depth,
-                               const cv::Mat* planar_blocks, const PinholeCamera& dst,
+                               const MeshPlan* kept_plan, const PinholeCamera& dst,
                                const Eigen::Isometry3d& T_world_dst, WarpField& field) const {
   const WarpOptions& o = options_;
   src.Check();
@@ -751,16 +687,12 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   const Eigen::Isometry3d T_vs = T_world_dst.inverse() * T_world_src;
   Vertices& v = scratch.vertices;
   v.Resize(std::size_t(src.width) * src.height);
-  std::vector<cv::Rect> blocks;
-  if (o.planar_block > 0) {
-    // The caller's flags if they fit this block size (a grid of another size: found anew).
-    const cv::Size grid = PlanarGrid(src.width, src.height, o.planar_block);
-    const bool kept =
-        planar_blocks && planar_blocks->type() == CV_8UC1 && planar_blocks->size() == grid;
-    blocks = MarkPlanarBlocks(kept ? *planar_blocks : PlanarBlocksFor(depth, o), o.planar_block,
-                              src.width, src.height, v);
-  }
-  SkipQuadsWithoutDepth(depth, v);
+  // The caller's plan if it was made for these options (else planned anew).
+  const bool kept = kept_plan && kept_plan->Fits(depth.size(), o.planar_block, o.planar_tolerance);
+  if (!kept) scratch.plan = MeshPlanFor(depth, o);
+  const MeshPlan& plan = kept ? *kept_plan : scratch.plan;
+  v.skip = plan.skip.data();
+  const std::vector<cv::Rect>& blocks = plan.runs;
   // Only the vertices something draws from: block rows (the runs' corners) whole, other rows where
   // a quad is drawn on its own; a run that cannot be one polygon is drawn quad by quad, so its
   // rows are projected whole as well.
@@ -798,7 +730,7 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
           RasteriseRowVectorised(v, w, r, max_ratio, view);
         } else {
           for (int u = 0; u + 1 < w; ++u) {
-            if (!v.skip[std::size_t(r) * w + u]) RasteriseQuad(v, w, u, r, max_ratio, view);
+            if (v.skip[std::size_t(r) * w + u] == 0) RasteriseQuad(v, w, u, r, max_ratio, view);
           }
         }
       }

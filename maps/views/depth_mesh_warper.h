@@ -14,6 +14,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "maps/views/mesh_plan.h"
 #include "maps/views/pinhole_camera.h"
 
 namespace novelty::views {
@@ -68,15 +69,15 @@ struct SourceView {
   const PinholeCamera* camera;
   const Eigen::Isometry3d* T_world_cam;
   const cv::Mat* depth;  ///< CV_32FC1, the camera's size
-  /// FindPlanarBlocks(depth, planar_block, planar_tolerance) kept by a caller whose views do not
-  /// change between frames (a map's reference views); null: found at each warp.
-  const cv::Mat* planar_blocks = nullptr;
+  /// MeshPlanFor(*depth, options) kept by a caller whose views do not change between frames (a
+  /// map's reference views); null, or made for other options or another size: planned anew at
+  /// each warp.
+  const MeshPlan* plan = nullptr;
 };
 
-/// The planar-block flags a warp with `options` uses for `depth` (FindPlanarBlocks with the
-/// options' block size and tolerance; empty when planar_block is 0): what a caller keeps in
-/// SourceView::planar_blocks.
-cv::Mat PlanarBlocksFor(const cv::Mat& depth, const WarpOptions& options);
+/// The mesh plan a warp with `options` uses for `depth` (PlanMesh with the options' block size
+/// and tolerance): what a caller keeps in SourceView::plan.
+MeshPlan MeshPlanFor(const cv::Mat& depth, const WarpOptions& options);
 
 /// Warps views one after another, reusing its buffers (and the output field's) from call to
 /// call: a robot warps seven views per frame, and fresh megabyte buffers each time cost more in
@@ -105,7 +106,7 @@ class DepthMeshWarper {
   struct Scratch;
   void WarpWith(Scratch& scratch, int threads, const PinholeCamera& source_camera,
                 const Eigen::Isometry3d& T_world_source, const cv::Mat& source_depth,
-                const cv::Mat* planar_blocks, const PinholeCamera& virtual_camera,
+                const MeshPlan* plan, const PinholeCamera& virtual_camera,
                 const Eigen::Isometry3d& T_world_virtual, WarpField& out) const;
   WarpOptions options_;
   std::unique_ptr<Scratch> scratch_;

@@ -176,29 +176,42 @@ TEST(DepthMeshWarper, PlanarBlocksGiveTheFieldOfTheSmallQuads) {
   std::printf("blocks against quads: %.4f px, relative depth %.1e\n", c.worst_px, c.worst_depth);
 }
 
-TEST(DepthMeshWarper, PlanarFlagsKeptByTheCallerAreUsed) {
-  // A tilted plane: kept flags equal to FindPlanarBlocks give the field found without them;
-  // flags that mark no block give exactly the quad-by-quad field; flags of another grid size are
-  // ignored (found anew).
+TEST(DepthMeshWarper, MeshPlansKeptByTheCallerAreUsedWhereTheyFit) {
+  // A tilted plane: a kept plan made for the warp's options gives the field planned anew; a kept
+  // plan is used as it is (one without blocks gives exactly the quad-by-quad field where the warp
+  // itself would use blocks, one with a planted hole leaves a hole); plans made for other options
+  // or another size are ignored (planned anew).
   cv::Mat depth(kCam.height, kCam.width, CV_32FC1);
   for (int y = 0; y < depth.rows; ++y)
     for (int x = 0; x < depth.cols; ++x) depth.at<float>(y, x) = 1.0f / (0.4f + 0.0008f * x + 0.0005f * y);
   const Eigen::Isometry3d src = Forward(), virt = LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0});
-  const cv::Mat found = FindPlanarBlocks(depth, 8, 0.002);
-  const cv::Mat none = cv::Mat::zeros(found.size(), CV_8UC1), other_grid(3, 3, CV_8UC1, 255);
-  auto warp = [&](const cv::Mat* flags, int planar_block) {
+  WarpOptions blocks_8;
+  blocks_8.planar_block = 8;
+  const MeshPlan found = MeshPlanFor(depth, blocks_8);
+  ASSERT_FALSE(found.runs.empty());
+  MeshPlan none = found;  // the same size and options, but nothing drawn as a block
+  none.runs.clear();
+  std::fill(none.skip.begin(), none.skip.end(), int8_t{0});
+  MeshPlan holed = none;  // and one quad planted as skipped
+  holed.skip[std::size_t(100) * kCam.width + 150] = -1;
+  const MeshPlan other_block = PlanMesh(depth, 4, 0.002),
+                 other_tolerance = PlanMesh(depth, 8, 0.01);
+  const MeshPlan other_size = PlanMesh(depth(cv::Rect(0, 0, 100, 80)).clone(), 8, 0.002);
+  auto warp = [&](const MeshPlan* plan, int planar_block) {
     WarpOptions o;
     o.planar_block = planar_block;
     DepthMeshWarper warper(o);
     std::vector<WarpField> fields;
-    warper.WarpMany({{&kCam, &src, &depth, flags}}, kCam, virt, fields);
+    warper.WarpMany({{&kCam, &src, &depth, plan}}, kCam, virt, fields);
     return fields[0];
   };
   const WarpField blocks = warp(nullptr, 8), quads = warp(nullptr, 0);
   ASSERT_GT(cv::norm(blocks.map, quads.map, cv::NORM_INF), 0.0);  // the two paths differ a little
   EXPECT_EQ(cv::norm(warp(&found, 8).map, blocks.map, cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(warp(&none, 8).map, quads.map, cv::NORM_INF), 0.0);
-  EXPECT_EQ(cv::norm(warp(&other_grid, 8).map, blocks.map, cv::NORM_INF), 0.0);
+  EXPECT_LT(warp(&holed, 8).covered, quads.covered);
+  for (const MeshPlan* ignored : {&other_block, &other_tolerance, &other_size})
+    EXPECT_EQ(cv::norm(warp(ignored, 8).map, blocks.map, cv::NORM_INF), 0.0);
 }
 
 TEST(DepthMeshWarper, RunsReachingBehindTheCameraAreDrawnQuadByQuad) {

@@ -14,7 +14,8 @@ namespace {
 struct Views {
   views::PinholeCamera camera = views::PinholeCamera::FromFov(320, 240, 1.0);
   std::vector<Eigen::Isometry3d> poses;
-  std::vector<cv::Mat> depths, images, planar_blocks;  // flags as a map keeps them per view
+  std::vector<cv::Mat> depths, images;
+  std::vector<views::MeshPlan> plans;  // as a map keeps them per view
   Eigen::Isometry3d virtual_pose;
 };
 
@@ -36,7 +37,7 @@ Views MakeViews() {
     v.poses.push_back(views::LookAt(eye, {0, 0, 0.2}));
     const sim::RenderedFrame f = sim::Render(scene, light, v.camera, v.poses.back());
     v.depths.push_back(f.depth);
-    v.planar_blocks.push_back(views::PlanarBlocksFor(f.depth, views::WarpOptions{}));
+    v.plans.push_back(views::MeshPlanFor(f.depth, views::WarpOptions{}));
     v.images.push_back(f.rgb);
   }
   v.virtual_pose = views::LookAt({2.0 * std::cos(0.05), 2.0 * std::sin(0.05), 1.25}, {0, 0, 0.2});
@@ -47,7 +48,7 @@ Views MakeViews() {
 std::vector<views::SourceView> Sources(const Views& v) {
   std::vector<views::SourceView> sources;
   for (int j = 0; j < 7; ++j)
-    sources.push_back({&v.camera, &v.poses[j], &v.depths[j], &v.planar_blocks[j]});
+    sources.push_back({&v.camera, &v.poses[j], &v.depths[j], &v.plans[j]});
   return sources;
 }
 
@@ -140,15 +141,15 @@ void BM_BlendParameterPlanes(benchmark::State& state) {
 }
 BENCHMARK(BM_BlendParameterPlanes)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Finding a view's planar blocks and runs (once per new or replaced reference view: a map
-// that replaces a view every frame pays it every frame).
-void BM_FindPlanarBlocks(benchmark::State& state) {
+// Planning a view's mesh: its planar blocks and runs, the quads drawn on their own (once per
+// new or replaced reference view: a map that replaces a view every frame pays it every frame).
+void BM_PlanMesh(benchmark::State& state) {
   static const Views v = MakeViews();
   for (auto _ : state) {
-    benchmark::DoNotOptimize(views::PlanarBlocksFor(v.depths[3], views::WarpOptions{}).data);
+    benchmark::DoNotOptimize(views::MeshPlanFor(v.depths[3], views::WarpOptions{}).skip.data());
   }
 }
-BENCHMARK(BM_FindPlanarBlocks)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PlanMesh)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Each reference view warped alone (the views differ in how far they are from the virtual one).
 void BM_WarpEachView(benchmark::State& state) {
