@@ -57,12 +57,14 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
     sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &plan});
   }
   warper_.WarpMany(sources, camera, T_world_cam, warps_);
+  blended_.resize(std::max(blended_.size(), names.size()));
   for (std::size_t k = 0; k < names.size(); ++k) {
     std::vector<cv::Mat> planes;
     for (int j : p.selected) planes.push_back(store_.view(j).planes.at(names[k].first));
-    views::BlendResult b = views::BlendPlanes(warps_, planes, options_.blend);
-    p.value[k] = std::move(b.value);
-    p.valid = std::move(b.valid);  // the same for every plane: it depends on the warps only
+    views::BlendResult& b = blended_[k];  // last frame's images, unless a caller still holds them
+    views::BlendPlanes(warps_, planes, options_.blend, b);
+    p.value[k] = b.value;
+    p.valid = b.valid;  // the same for every plane: it depends on the warps only
   }
   return p;
 }

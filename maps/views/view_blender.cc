@@ -597,6 +597,13 @@ WarpOptions WarpOptionsFor(const BlendOptions& blend, WarpOptions warp) {
 
 BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
                         const BlendOptions& o) {
+  BlendResult result;
+  BlendPlanes(warps, planes, o, result);
+  return result;
+}
+
+void BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+                 const BlendOptions& o, BlendResult& result) {
   if (warps.empty() || warps.size() != planes.size()) {
     throw std::invalid_argument("BlendPlanes: need one plane per warp, got " +
                                 std::to_string(planes.size()) + " planes for " +
@@ -635,7 +642,10 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
       throw std::invalid_argument("BlendPlanes: unsupported plane depth " + std::to_string(depth));
     }
   }
-  BlendResult result;
+  // In place unless another owner shares the images (create() alone would write into theirs).
+  for (cv::Mat* m : {&result.value, &result.valid}) {
+    if (m->u && m->u->refcount > 1) m->release();
+  }
   result.value.create(size, CV_32FC(channels));
   result.valid.create(size, CV_8UC1);
   std::vector<const WarpField*> fields;
@@ -652,7 +662,6 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
     std::vector<cv::Mat> scratch;
     result.covered = BlendAll(fields, AsFloatPlanes(planes, scratch), weights, o, result);
   }
-  return result;
 }
 
 }  // namespace novelty::views

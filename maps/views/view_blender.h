@@ -54,4 +54,10 @@ WarpOptions WarpOptionsFor(const BlendOptions& blend, WarpOptions warp);
 BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
                         const BlendOptions& options = {});
 
+/// The same into `out`, whose images are written in place where they already have the result's
+/// size and type and nothing else shares them (else allocated anew): a caller that blends every
+/// frame keeps one BlendResult and so does not fault in megabytes of fresh pages per frame.
+void BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+                 const BlendOptions& options, BlendResult& out);
+
 }  // namespace novelty::views

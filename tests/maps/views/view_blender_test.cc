@@ -180,6 +180,30 @@ TEST(ViewBlender, PlanesOfDifferentDepthsOrLayoutsBlendAlike) {
   for (int x : {0, 17, 19}) EXPECT_EQ(r.value.at<cv::Vec3f>(2, x), cv::Vec3f(27, 37, 47)) << x;
 }
 
+TEST(ViewBlender, AKeptResultIsWrittenInPlaceUnlessSomeoneElseHoldsIt) {
+  const std::vector<WarpField> warps = {Field(20, 3, 20, 1.0f)};
+  const std::vector<cv::Mat> tens = {cv::Mat(3, 20, CV_8UC3, cv::Scalar(10, 10, 10))};
+  const std::vector<cv::Mat> twenties = {cv::Mat(3, 20, CV_8UC3, cv::Scalar(20, 20, 20))};
+  BlendResult kept;
+  BlendPlanes(warps, tens, {}, kept);
+  const uchar* data = kept.value.data;
+  BlendPlanes(warps, twenties, {}, kept);  // nobody else holds it: the same images
+  EXPECT_EQ(kept.value.data, data);
+  EXPECT_EQ(kept.value.at<cv::Vec3f>(2, 19), cv::Vec3f(20, 20, 20));
+  EXPECT_EQ(kept.covered, 60);
+  const cv::Mat held = kept.value, held_valid = kept.valid;  // a caller keeps the last frame's
+  BlendPlanes(warps, tens, {}, kept);
+  EXPECT_NE(kept.value.data, held.data);
+  EXPECT_NE(kept.valid.data, held_valid.data);
+  EXPECT_EQ(held.at<cv::Vec3f>(2, 19), cv::Vec3f(20, 20, 20));  // untouched
+  EXPECT_EQ(kept.value.at<cv::Vec3f>(2, 19), cv::Vec3f(10, 10, 10));
+  // Another size or channel count: allocated to fit.
+  BlendPlanes({Field(8, 2, 8, 1.0f)}, {cv::Mat(2, 8, CV_32FC1, cv::Scalar(5))}, {}, kept);
+  EXPECT_EQ(kept.value.type(), CV_32FC1);
+  EXPECT_EQ(kept.value.size(), cv::Size(8, 2));
+  EXPECT_FLOAT_EQ(kept.value.at<float>(1, 7), 5.0f);
+}
+
 TEST(ViewBlender, MismatchedInputIsRejected) {
   const std::vector<WarpField> warps = {Field(4, 2, 4, 1.0f)};
   EXPECT_THROW(BlendPlanes(warps, {}), std::invalid_argument);
