@@ -32,8 +32,9 @@ void ProcessOne(std::size_t i, const ChannelPlanes& c, float* surprise,
     p0[k] = {T(q.alpha[i]), T(q.beta[i]), T(q.tau[i]), T(q.sigma[i])};
     p[k] = valid ? UpdateWithForgetting(p0[k], T(c.x[k][i]), o.update, &shift[k]) : p0[k];
   }
-  T kl = valid ? NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl) : T(0);
-  for (int k = 0; valid && k < channels; ++k) kl += NormalGammaKLOtherTerms(p[k], p0[k], shift[k]);
+  const T kl = valid ? NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl) +
+                           NormalGammaKLOtherTerms(p, p0, shift, channels)
+                     : T(0);
   for (int k = 0; k < channels; ++k) {
     const NormalGammaPlanes& q = c.posterior[std::size_t(k)];
     q.alpha[i] = static_cast<float>(p[k].alpha);
@@ -67,17 +68,16 @@ void ProcessPacket(std::size_t i, const ChannelPlanes& c, float* surprise,
   // Eigen evaluates select lane by lane: the usual packet without NaN skips it.
   const bool all_valid = valid.all();
   NormalGammaT<Packet> p0[kMaxChannels], p[kMaxChannels];
-  Packet kl = Packet::Zero();
+  Packet shift[kMaxChannels];
   for (int k = 0; k < channels; ++k) {
     const ConstNormalGammaPlanes& q = c.prior[std::size_t(k)];
     p0[k] = {ConstPacketMap(q.alpha + i), ConstPacketMap(q.beta + i), ConstPacketMap(q.tau + i),
              ConstPacketMap(q.sigma + i)};
     // Invalid lanes are computed on the prior's own τ (harmless numbers) and masked afterwards.
     if (!all_valid) x[k] = valid.select(x[k], p0[k].tau).eval();
-    Packet shift;
-    p[k] = UpdateWithForgetting(p0[k], x[k], o.update, &shift);
-    kl += NormalGammaKLOtherTerms(p[k], p0[k], shift);
+    p[k] = UpdateWithForgetting(p0[k], x[k], o.update, &shift[k]);
   }
+  Packet kl = NormalGammaKLOtherTerms(p, p0, shift, channels);
   if ((p0[0].alpha == cache.prior_alpha).all()) {
     kl += cache.terms;
   } else {

@@ -36,17 +36,33 @@ T NormalGammaKLAlphaTerms(const T& post_alpha, const T& prior_alpha,
              : T(LogGamma(prior_alpha) - LogGamma(post_alpha) + dalpha * Digamma(post_alpha));
 }
 
-/// The other three brackets (β, σ and τ terms).
+/// The other three brackets (β, σ and τ terms) summed over `channels` channels observed together
+/// (eq. 4.21), which share α (eq. 4.10 does not depend on the data: prior[k].alpha and
+/// post[k].alpha are the same for every k). Their logarithms are taken of products,
+///   Σ_k α0 ln(β/β0)_k = −α0 ln Π_k (β0/β)_k,   Σ_k ln r_k = ln Π_k r_k,
+/// two logarithms for any number of channels: ln is the costliest part of the per-pixel kernel,
+/// and a product of a few ratios loses nothing that the single logarithms kept.
+template <class T>
+T NormalGammaKLOtherTerms(const NormalGammaT<T>* post, const NormalGammaT<T>* prior,
+                          const T* tau_shift, int channels) {
+  using S = ScalarOf<T>;
+  T linear = tau_shift[0] * S(0), beta_ratios = linear + S(1), sigma_ratios = beta_ratios;
+  for (int k = 0; k < channels; ++k) {
+    const T beta_ratio = prior[k].beta / post[k].beta;  // β0/β
+    const T r = post[k].sigma / prior[k].sigma;
+    linear += post[k].alpha * (beta_ratio - S(1)) + S(0.5) * (r - S(1)) +
+              tau_shift[k] * tau_shift[k] * post[k].alpha / (S(2) * prior[k].sigma * post[k].beta);
+    beta_ratios *= beta_ratio;
+    sigma_ratios *= r;
+  }
+  return linear - prior[0].alpha * Log(beta_ratios) - S(0.5) * Log(sigma_ratios);
+}
+
+/// The same for one channel.
 template <class T>
 T NormalGammaKLOtherTerms(const NormalGammaT<T>& post, const NormalGammaT<T>& prior,
                           const T& tau_shift) {
-  using S = ScalarOf<T>;
-  const T beta_ratio = prior.beta / post.beta;  // β0/β
-  const T beta_part = post.alpha * (beta_ratio - S(1)) - prior.alpha * Log(beta_ratio);
-  const T r = post.sigma / prior.sigma;
-  const T sigma_part = S(0.5) * (r - S(1) - Log(r));
-  const T tau_part = tau_shift * tau_shift * post.alpha / (S(2) * prior.sigma * post.beta);
-  return beta_part + sigma_part + tau_part;
+  return NormalGammaKLOtherTerms(&post, &prior, &tau_shift, 1);
 }
 
 /// KL(posterior ‖ prior), eq. 4.15, given the mean shift τ − τ0 separately. In float, τ − τ0

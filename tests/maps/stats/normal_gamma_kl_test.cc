@@ -101,6 +101,42 @@ TEST(NormalGammaKL, NonNegativeOnRandomPairs) {
   }
 }
 
+TEST(NormalGammaKL, ChannelsSummedWithTwoLogarithmsEqualTheSumOverChannels) {
+  // Three channels sharing α (as Y, Cb, Cr): the summed form (logarithms of products) equals the
+  // sum of the channels' own terms, in double to rounding and in float to what float keeps —
+  // from near-identical distributions (tiny KL) to strongly surprised ones.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> beta(0.1, 40.0), sigma(0.05, 8.0), tau(0.0, 255.0);
+  std::uniform_real_distribution<double> alpha(0.6, 6.0), closeness(-3.0, 0.5);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double a0 = alpha(rng), a = a0 * 0.8 + 0.5;
+    const double spread = std::pow(10.0, closeness(rng));  // 1e-3 … 3: how far posterior moves
+    NormalGamma prior[3], post[3];
+    double shift[3], separate = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      prior[k] = {a0, beta(rng), tau(rng), sigma(rng)};
+      shift[k] = spread * (tau(rng) - 128.0) * 0.1;
+      post[k] = {a, prior[k].beta * std::exp(spread * (beta(rng) / 40.0 - 0.5)),
+                 prior[k].tau + shift[k],
+                 prior[k].sigma * std::exp(spread * (sigma(rng) / 8.0 - 0.5))};
+      separate += NormalGammaKLOtherTerms(post[k], prior[k], shift[k]);
+    }
+    const double summed = NormalGammaKLOtherTerms(post, prior, shift, 3);
+    ASSERT_NEAR(summed, separate, 1e-12 * (1.0 + std::abs(separate))) << trial;
+    NormalGammaT<float> prior_f[3], post_f[3];
+    float shift_f[3];
+    for (int k = 0; k < 3; ++k) {
+      prior_f[k] = {float(prior[k].alpha), float(prior[k].beta), float(prior[k].tau),
+                    float(prior[k].sigma)};
+      post_f[k] = {float(post[k].alpha), float(post[k].beta), float(post[k].tau),
+                   float(post[k].sigma)};
+      shift_f[k] = float(shift[k]);
+    }
+    const float summed_f = NormalGammaKLOtherTerms(post_f, prior_f, shift_f, 3);
+    ASSERT_NEAR(summed_f, separate, 2e-6 * (1.0 + std::abs(separate)) + 1e-5) << trial;
+  }
+}
+
 TEST(NormalGammaKL, SurpriseGrowsWithTheDeviationOfTheObservation) {
   const NormalGammaT<double> prior{2.5, 10.0, 100.0, 0.1};
   const ForgettingUpdateOptions o;
