@@ -56,8 +56,10 @@ struct AlphaTermsCache {
 };
 
 // Sixteen pixels in float. Every prior is read before any posterior is written (in-place use).
-void ProcessPacket(std::size_t i, const ChannelPlanes& c, float* surprise,
-                   const SurpriseBatchOptions& o, AlphaTermsCache& cache) {
+// Flattened: GCC otherwise calls the update and KL templates and passes their packets through
+// memory (static camera frame ≈ 6 % faster).
+__attribute__((flatten)) void ProcessPacket(std::size_t i, const ChannelPlanes& c, float* surprise,
+                                            const SurpriseBatchOptions& o, AlphaTermsCache& cache) {
   const int channels = int(c.x.size());
   Packet x[kMaxChannels];
   Eigen::Array<bool, kLanes, 1> valid = Eigen::Array<bool, kLanes, 1>::Constant(true);
