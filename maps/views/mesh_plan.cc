@@ -86,7 +86,12 @@ MeshPlan PlanMesh(const cv::Mat& depth, int planar_block, double planar_toleranc
   plan.rows = depth.rows;
   plan.planar_block = std::max(0, planar_block);
   plan.planar_tolerance = planar_tolerance;
-  plan.skip.assign(depth.total() + MeshPlan::kPadding, 0);
+  // Only real quads (not the last column or row, nor the padding) may be drawn: groups of
+  // sixteen that reach past a row's last quad then cost nothing (mesh_plan.h).
+  plan.skip.assign(depth.total() + MeshPlan::kPadding, -1);
+  for (int r = 0; r + 1 < depth.rows; ++r) {
+    std::fill_n(plan.skip.begin() + std::ptrdiff_t(r) * depth.cols, depth.cols - 1, int8_t{0});
+  }
   if (plan.planar_block > 0) {
     MarkPlanarBlocks(FindPlanarBlocks(depth, plan.planar_block, planar_tolerance),
                      plan.planar_block, plan);

@@ -18,8 +18,8 @@ struct MeshPlan {
   double planar_tolerance = 0.0;  ///< and the blocks' tolerance
   /// Per quad, indexed by its top-left vertex r·cols + u: 0 where the quad is drawn on its own,
   /// −1 where a planar run draws it or a vertex has no depth (0, negative or not finite). The
-  /// last column (no quad) holds 0; kPadding zero bytes follow for sixteen-wide loads. Memory:
-  /// one byte per pixel (75 KiB at 320×240).
+  /// last column and row (no quad there) and kPadding bytes after them, for sixteen-wide loads,
+  /// hold −1 too. Memory: one byte per pixel (75 KiB at 320×240).
   std::vector<int8_t> skip;
   /// The planar runs, each a rectangle of quads drawn as one polygon.
   std::vector<cv::Rect> runs;

@@ -26,6 +26,12 @@ TEST(MeshPlan, APlaneIsDrawnAsOneRunPerBlockRowWithNoQuadOnItsOwn) {
   for (int r = 0; r + 1 < kRows; ++r)  // at the image's border no neighbour needs the quads
     for (int u = 0; u + 1 < kCols; ++u) ASSERT_EQ(Skip(p, u, r), -1) << u << "," << r;
   EXPECT_EQ(p.skip.size(), std::size_t(kCols * kRows) + MeshPlan::kPadding);
+  // No quad starts in the last column or row, nor in the padding: never drawn.
+  const MeshPlan none = PlanMesh(depth, 0, 0.002);
+  for (int r = 0; r < kRows; ++r) EXPECT_EQ(Skip(none, kCols - 1, r), -1) << r;
+  for (int u = 0; u < kCols; ++u) EXPECT_EQ(Skip(none, u, kRows - 1), -1) << u;
+  EXPECT_EQ(none.skip.back(), -1);
+  EXPECT_EQ(Skip(none, kCols - 2, kRows - 2), 0);
 }
 
 TEST(MeshPlan, AHoleLeavesItsQuadsOutAndItsBlockAndTheNeighboursEdgesQuadByQuad) {
