@@ -54,17 +54,20 @@ std::vector<int> ParseList(const std::string& text) {
 }
 
 // Warps and blends the "rgb" planes of `refs` into the virtual view; returns the 8-bit image
-// (uncovered black) and the validity mask.
+// (uncovered black) and the validity mask. `plans`: the refs' mesh plans where a caller keeps
+// them (reference views warped frame after frame), else empty.
 std::pair<cv::Mat, cv::Mat> Synthesise(views::DepthMeshWarper& warper,
                                        const std::vector<const views::ReferenceView*>& refs,
+                                       const std::vector<const views::MeshPlan*>& plans,
                                        const views::PinholeCamera& cam,
                                        const Eigen::Isometry3d& pose,
                                        const views::BlendOptions& blend,
                                        std::vector<views::WarpField>& warps) {
   std::vector<views::SourceView> sources;
   std::vector<cv::Mat> planes;
-  for (const views::ReferenceView* r : refs) {
-    sources.push_back({&r->camera, &r->T_world_cam, &r->depth});
+  for (std::size_t k = 0; k < refs.size(); ++k) {
+    const views::ReferenceView* r = refs[k];
+    sources.push_back({&r->camera, &r->T_world_cam, &r->depth, plans.empty() ? nullptr : plans[k]});
     planes.push_back(r->planes.at("rgb"));
   }
   warper.WarpMany(sources, cam, pose, warps);
@@ -92,7 +95,7 @@ int FolderMode(const std::string& dir, const views::PinholeCamera& intrinsics, d
   std::vector<const views::ReferenceView*> ptrs;
   for (const auto& r : refs) ptrs.push_back(&r);
   std::vector<views::WarpField> warps;
-  const auto [rgb8, valid] = Synthesise(warper, ptrs, cam, truth.T_world_cam, blend, warps);
+  const auto [rgb8, valid] = Synthesise(warper, ptrs, {}, cam, truth.T_world_cam, blend, warps);
   eval::WriteRgbImage(out, rgb8);
   std::printf("PSNR=%.2f coverage=%.4f\n", eval::Psnr(rgb8, truth.rgb, valid),
               double(cv::countNonZero(valid)) / (cam.width * cam.height));
@@ -135,6 +138,10 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
   csv << "frame,time_s,synthesis_ms,views,psnr_db,coverage\n";
   const double t_start = path.empty() ? 0.0 : path.front().time;
   const std::vector<Eigen::Isometry3d> ref_poses = store.Poses();
+  // Each reference view's mesh plan once, not at every virtual view that warps it.
+  std::vector<views::MeshPlan> plans;
+  for (int j = 0; j < store.size(); ++j)
+    plans.push_back(views::MeshPlanFor(store.view(j).depth, warper.options()));
   std::vector<views::WarpField> warps;
   double psnr_sum = 0.0;
   int n = 0;
@@ -142,9 +149,13 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
     const Eigen::Isometry3d& pose = poses.at(f.index);
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<const views::ReferenceView*> refs;
-    for (int j : views::SelectViews(ref_poses, f.camera, pose)) refs.push_back(&store.view(j));
+    std::vector<const views::MeshPlan*> ref_plans;
+    for (int j : views::SelectViews(ref_poses, f.camera, pose)) {
+      refs.push_back(&store.view(j));
+      ref_plans.push_back(&plans[std::size_t(j)]);
+    }
     if (refs.empty()) continue;
-    const auto [rgb8, valid] = Synthesise(warper, refs, f.camera, pose, blend, warps);
+    const auto [rgb8, valid] = Synthesise(warper, refs, ref_plans, f.camera, pose, blend, warps);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const double psnr = eval::Psnr(rgb8, f.rgb, valid);

@@ -85,6 +85,7 @@ MeshPlan MeshPlanFor(const cv::Mat& depth, const WarpOptions& options);
 class DepthMeshWarper {
  public:
   explicit DepthMeshWarper(const WarpOptions& options = {});
+  const WarpOptions& options() const { return options_; }
   ~DepthMeshWarper();
   DepthMeshWarper(const DepthMeshWarper&) = delete;
   DepthMeshWarper& operator=(const DepthMeshWarper&) = delete;
