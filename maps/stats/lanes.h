@@ -148,6 +148,10 @@ inline int MaxLane(I16 v, I16 mask) {
 inline bool Any(I16 mask) {
   return Bits(mask) != 0;
 }
+/// Whether every lane of a mask is set.
+inline bool All(I16 mask) {
+  return Bits(mask) == (1u << kLanes) - 1;
+}
 /// How many lanes of a mask are set.
 inline int Count(I16 mask) {
   return __builtin_popcount(Bits(mask));

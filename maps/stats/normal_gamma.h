@@ -59,23 +59,31 @@ struct ForgettingUpdateOptions {
   void Check() const;
 };
 
-/// σ_p of eq. 4.8: σ0 · exp(ξ / M01) clamped to [σ_min, σ_max], with M01 = α0/β0 (eq. 4.9).
+/// σ_p of eq. 4.8: σ0 · exp(ξ / M01) clamped to [σ_min, σ_max], with M01 = α0/β0 (eq. 4.9), given
+/// 1/α0: channels that share α (eq. 4.10 does not depend on the data) divide once for all.
 template <class T>
-T AdaptiveSigma(const NormalGammaT<T>& prior, const ForgettingUpdateOptions& o) {
+T AdaptiveSigma(const NormalGammaT<T>& prior, const ForgettingUpdateOptions& o,
+                const T& inv_alpha) {
   using S = ScalarOf<T>;
-  const T grown = prior.sigma * Exp(S(o.xi) * prior.beta / prior.alpha);
+  const T grown = prior.sigma * Exp(S(o.xi) * prior.beta * inv_alpha);
   return Min(Max(grown, S(o.sigma_min)), S(o.sigma_max));
 }
 
-/// Update with forgetting factor and adaptive σ, eq. 4.8-4.13. T is double, float or an Eigen
-/// fixed-size array (one lane per pixel). If tau_shift is given, it receives τ − τ0 computed
-/// without cancellation (for NormalGammaKLWithShift).
+/// The same, computing 1/α0.
 template <class T>
-NormalGammaT<T> UpdateWithForgetting(const NormalGammaT<T>& prior, const T& x,
-                                     const ForgettingUpdateOptions& o, T* tau_shift = nullptr) {
+T AdaptiveSigma(const NormalGammaT<T>& prior, const ForgettingUpdateOptions& o) {
+  using S = ScalarOf<T>;
+  return AdaptiveSigma(prior, o, T(S(1) / prior.alpha));
+}
+
+/// Eq. 4.10-4.13 given σ_p (eq. 4.8). If tau_shift is given, it receives τ − τ0 computed without
+/// cancellation (for NormalGammaKLWithShift).
+template <class T>
+NormalGammaT<T> UpdateWithSigma(const NormalGammaT<T>& prior, const T& x,
+                                const ForgettingUpdateOptions& o, const T& sigma_p,
+                                T* tau_shift = nullptr) {
   using S = ScalarOf<T>;
   const S f = S(o.forgetting_factor);
-  const T sigma_p = AdaptiveSigma(prior, o);
   const T weight = S(1) / (sigma_p + S(1));
   const T d = x - prior.tau;
   const T shift = sigma_p * weight * d;  // eq. 4.12 rewritten: τ = τ0 + σp (x − τ0) / (σp + 1)
@@ -86,6 +94,15 @@ NormalGammaT<T> UpdateWithForgetting(const NormalGammaT<T>& prior, const T& x,
   post.sigma = sigma_p * weight;                         // eq. 4.13
   if (tau_shift) *tau_shift = shift;
   return post;
+}
+
+/// Update with forgetting factor and adaptive σ, eq. 4.8-4.13. T is double, float or an Eigen
+/// fixed-size array (one lane per pixel). If tau_shift is given, it receives τ − τ0 computed
+/// without cancellation (for NormalGammaKLWithShift).
+template <class T>
+NormalGammaT<T> UpdateWithForgetting(const NormalGammaT<T>& prior, const T& x,
+                                     const ForgettingUpdateOptions& o, T* tau_shift = nullptr) {
+  return UpdateWithSigma(prior, x, o, AdaptiveSigma(prior, o), tau_shift);
 }
 
 /// α after n updates with forgetting from α0 (closed form of the recursion eq. 4.10):

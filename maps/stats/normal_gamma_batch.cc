@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "maps/stats/lanes.h"
+
 namespace novelty::stats {
 
 namespace {
@@ -61,31 +63,40 @@ struct AlphaTermsCache {
 template <int channels>
 __attribute__((flatten)) void ProcessPacket(std::size_t i, const ChannelPlanes& c, float* surprise,
                                             const SurpriseBatchOptions& o, AlphaTermsCache& cache) {
+  // Lane tests with vector extensions: Eigen compares boolean arrays lane by lane.
+  namespace L = lanes;
   Packet x[kMaxChannels];
-  Eigen::Array<bool, kLanes, 1> valid = Eigen::Array<bool, kLanes, 1>::Constant(true);
+  L::I16 valid_lanes = L::I16{} == 0;  // false for NaN
   for (int k = 0; k < channels; ++k) {
     x[k] = ConstPacketMap(c.x[k] + i);
-    valid = valid && (x[k] == x[k]);  // false for NaN
+    const L::F16 v = L::Load(c.x[k] + i);
+    valid_lanes &= v == v;
   }
-  // Eigen evaluates select lane by lane: the usual packet without NaN skips it.
-  const bool all_valid = valid.all();
+  // The usual packet without NaN skips the selects (Eigen evaluates them lane by lane too).
+  const bool all_valid = L::All(valid_lanes);
+  Eigen::Array<bool, kLanes, 1> valid;
+  if (!all_valid)
+    for (int l = 0; l < kLanes; ++l) valid(l) = valid_lanes[l] != 0;
   NormalGammaT<Packet> p0[kMaxChannels], p[kMaxChannels];
   Packet shift[kMaxChannels];
+  const Packet alpha0 = ConstPacketMap(c.prior[0].alpha + i), inv_alpha0 = alpha0.inverse();
   for (int k = 0; k < channels; ++k) {
     const ConstNormalGammaPlanes& q = c.prior[std::size_t(k)];
-    p0[k] = {ConstPacketMap(q.alpha + i), ConstPacketMap(q.beta + i), ConstPacketMap(q.tau + i),
+    p0[k] = {alpha0, ConstPacketMap(q.beta + i), ConstPacketMap(q.tau + i),
              ConstPacketMap(q.sigma + i)};
     // Invalid lanes are computed on the prior's own τ (harmless numbers) and masked afterwards.
     if (!all_valid) x[k] = valid.select(x[k], p0[k].tau).eval();
-    p[k] = UpdateWithForgetting(p0[k], x[k], o.update, &shift[k]);
+    p[k] = UpdateWithSigma(p0[k], x[k], o.update, AdaptiveSigma(p0[k], o.update, inv_alpha0),
+                           &shift[k]);
   }
   Packet kl = NormalGammaKLOtherTerms(p, p0, shift, channels);
-  if ((p0[0].alpha == cache.prior_alpha).all()) {
+  const L::F16 a0 = L::Load(c.prior[0].alpha + i);
+  if (L::All(a0 == cache.prior_alpha)) {
     kl += cache.terms;
   } else {
     const Packet terms = NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl);
     kl += terms;
-    if ((p0[0].alpha == p0[0].alpha(0)).all()) cache = {p0[0].alpha(0), terms};
+    if (L::All(a0 == a0[0])) cache = {a0[0], terms};
   }
   PacketMap s(surprise + i);
   for (int k = 0; k < channels; ++k) {

@@ -41,17 +41,19 @@ T NormalGammaKLAlphaTerms(const T& post_alpha, const T& prior_alpha,
 /// post[k].alpha are the same for every k). Their logarithms are taken of products,
 ///   Σ_k α0 ln(β/β0)_k = −α0 ln Π_k (β0/β)_k,   Σ_k ln r_k = ln Π_k r_k,
 /// two logarithms for any number of channels: ln is the costliest part of the per-pixel kernel,
-/// and a product of a few ratios loses nothing that the single logarithms kept.
+/// and a product of a few ratios loses nothing that the single logarithms kept. The three
+/// quotients of a channel share one division, 1/(β σ0) (divisions are the next costliest).
 template <class T>
 T NormalGammaKLOtherTerms(const NormalGammaT<T>* post, const NormalGammaT<T>* prior,
                           const T* tau_shift, int channels) {
   using S = ScalarOf<T>;
   T linear = tau_shift[0] * S(0), beta_ratios = linear + S(1), sigma_ratios = beta_ratios;
   for (int k = 0; k < channels; ++k) {
-    const T beta_ratio = prior[k].beta / post[k].beta;  // β0/β
-    const T r = post[k].sigma / prior[k].sigma;
+    const T inv = S(1) / (post[k].beta * prior[k].sigma);       // 1/(β σ0)
+    const T beta_ratio = prior[k].beta * prior[k].sigma * inv;  // β0/β
+    const T r = post[k].sigma * post[k].beta * inv;             // σ/σ0
     linear += post[k].alpha * (beta_ratio - S(1)) + S(0.5) * (r - S(1)) +
-              tau_shift[k] * tau_shift[k] * post[k].alpha / (S(2) * prior[k].sigma * post[k].beta);
+              S(0.5) * tau_shift[k] * tau_shift[k] * post[k].alpha * inv;
     beta_ratios *= beta_ratio;
     sigma_ratios *= r;
   }

@@ -78,6 +78,11 @@ TEST(Lanes, MaskCountAndBytes) {
   EXPECT_EQ(Bits(I16{} - 1), 0xFFFFu);
   EXPECT_EQ(Count(I16{}), 0);
   EXPECT_EQ(Count(I16{} - 1), kLanes);
+  EXPECT_TRUE(All(I16{} - 1));
+  EXPECT_FALSE(All(mask));
+  I16 all_but_last = I16{} - 1;
+  all_but_last[kLanes - 1] = 0;
+  EXPECT_FALSE(All(all_but_last));
   uint8_t bytes[kLanes + 1];
   bytes[kLanes] = 7;  // past the sixteen: untouched
   StoreMaskBytes(bytes, mask);
