@@ -9,7 +9,7 @@
 #include <string>
 
 #include "maps/appearance/interleave.h"
-#include "maps/color/ycbcr.h"
+#include "maps/color/ycbcr_planes.h"
 
 namespace novelty::appearance {
 
@@ -53,7 +53,7 @@ struct FrameRows {
 
 // Working planes of one tile, reused for the tiles one task processes.
 struct TileWork {
-  cv::Mat ycbcr, merged3, expected, beta_sum;
+  cv::Mat beta_sum;
   std::vector<cv::Mat> x, ab_sigma, tau, posterior;
 };
 
@@ -62,8 +62,7 @@ struct TileWork {
 void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options, int r0, int r1,
                  TileWork& t) {
   const cv::Range rows(r0, r1);
-  color::RgbToYCbCr(f.rgb.rowRange(rows), t.ycbcr);
-  SplitToFloat(t.ycbcr, t.x);
+  color::RgbToYCbCrPlanes(f.rgb.rowRange(rows), t.x);
   // Half floats (a static camera reads its view's stored planes in place) or blended floats.
   SplitToFloat(f.prior.value[0].rowRange(rows), t.ab_sigma);
   SplitToFloat(f.prior.value[1].rowRange(rows), t.tau);
@@ -75,7 +74,7 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
     for (int c = 0; c < kChannels; ++c) p0[c]->setTo(f.initial[std::size_t(c)], uncovered);
   }
   t.posterior.resize(kChannels);
-  for (cv::Mat& m : t.posterior) m.create(r1 - r0, t.ycbcr.cols, CV_32FC1);
+  for (cv::Mat& m : t.posterior) m.create(r1 - r0, f.rgb.cols, CV_32FC1);
   std::vector<cv::Mat>& p1 = t.posterior;
   stats::ChannelPlanes channels;
   for (int k = 0; k < 3; ++k) {
@@ -90,11 +89,8 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   stats::UpdateAndAccumulateSurprise(channels, surprise.ptr<float>(), surprise.total(), options);
 
   // Products: the prior's τ in RGB, its Σβ; NaN or black where not covered.
-  t.merged3.create(r1 - r0, t.ycbcr.cols, CV_32FC3);
-  MergeInto({*p0[kTau], *p0[kTau + 1], *p0[kTau + 2]}, t.merged3);
-  color::YCbCrToRgb(t.merged3, t.expected);
   cv::Mat expected_rgb = f.expected_rgb.rowRange(rows), uncertainty = f.uncertainty.rowRange(rows);
-  t.expected.convertTo(expected_rgb, CV_8U);
+  color::YCbCrPlanesToRgb(*p0[kTau], *p0[kTau + 1], *p0[kTau + 2], expected_rgb);
   cv::add(*p0[kBeta], *p0[kBeta + 1], t.beta_sum);
   cv::add(t.beta_sum, *p0[kBeta + 2], uncertainty);
   if (!uncovered.empty()) {
