@@ -51,11 +51,19 @@ struct FrameRows {
   cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau;
 };
 
-// Working planes of one tile, reused for the tiles one task processes.
+// Working planes of one tile, reused for the tiles one task processes; prior and posterior
+// planes in the stored images' channel order.
 struct TileWork {
-  cv::Mat beta_sum;
-  std::vector<cv::Mat> x, ab_sigma, tau, posterior;
+  std::vector<cv::Mat> x, ab_sigma, tau, post_ab_sigma, post_tau;
+  stats::ChannelPlanes channels;
 };
+
+// The parameter planes of one tile in Channel order.
+std::array<cv::Mat*, kChannels> InChannelOrder(std::vector<cv::Mat>& ab_sigma,
+                                               std::vector<cv::Mat>& tau) {
+  return {&ab_sigma[0], &ab_sigma[1], &ab_sigma[2], &ab_sigma[3], &tau[0],
+          &tau[1],      &tau[2],      &ab_sigma[4], &ab_sigma[5], &ab_sigma[6]};
+}
 
 // Rows [r0, r1): prior planes from the prediction, update and surprise (eq. 4.8-4.21; α is shared
 // by the three channels), and the rows of every product and of the posterior to be stored.
@@ -66,23 +74,26 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   // Half floats (a static camera reads its view's stored planes in place) or blended floats.
   SplitToFloat(f.prior.value[0].rowRange(rows), t.ab_sigma);
   SplitToFloat(f.prior.value[1].rowRange(rows), t.tau);
-  cv::Mat* const p0[kChannels] = {&t.ab_sigma[0], &t.ab_sigma[1], &t.ab_sigma[2], &t.ab_sigma[3],
-                                  &t.tau[0],      &t.tau[1],      &t.tau[2],      &t.ab_sigma[4],
-                                  &t.ab_sigma[5], &t.ab_sigma[6]};
+  const std::array<cv::Mat*, kChannels> p0 = InChannelOrder(t.ab_sigma, t.tau);
   const cv::Mat uncovered = f.uncovered.empty() ? cv::Mat() : f.uncovered.rowRange(rows);
   if (!uncovered.empty()) {  // the initial prior where no view covers (a static camera: never)
     for (int c = 0; c < kChannels; ++c) p0[c]->setTo(f.initial[std::size_t(c)], uncovered);
   }
-  t.posterior.resize(kChannels);
-  for (cv::Mat& m : t.posterior) m.create(r1 - r0, f.rgb.cols, CV_32FC1);
-  std::vector<cv::Mat>& p1 = t.posterior;
-  stats::ChannelPlanes channels;
+  t.post_ab_sigma.resize(t.ab_sigma.size());
+  t.post_tau.resize(t.tau.size());
+  for (auto* planes : {&t.post_ab_sigma, &t.post_tau})
+    for (cv::Mat& m : *planes) m.create(r1 - r0, f.rgb.cols, CV_32FC1);
+  const std::array<cv::Mat*, kChannels> p1 = InChannelOrder(t.post_ab_sigma, t.post_tau);
+  stats::ChannelPlanes& channels = t.channels;  // refilled: its vectors keep their capacity
+  channels.x.clear();
+  channels.prior.clear();
+  channels.posterior.clear();
   for (int k = 0; k < 3; ++k) {
     channels.x.push_back(t.x[k].ptr<float>());
     channels.prior.push_back({p0[kAlpha]->ptr<float>(), p0[kBeta + k]->ptr<float>(),
                               p0[kTau + k]->ptr<float>(), p0[kSigma + k]->ptr<float>()});
-    channels.posterior.push_back({p1[kAlpha].ptr<float>(), p1[kBeta + k].ptr<float>(),
-                                  p1[kTau + k].ptr<float>(), p1[kSigma + k].ptr<float>()});
+    channels.posterior.push_back({p1[kAlpha]->ptr<float>(), p1[kBeta + k]->ptr<float>(),
+                                  p1[kTau + k]->ptr<float>(), p1[kSigma + k]->ptr<float>()});
   }
   cv::Mat surprise = f.surprise.rowRange(rows);
   surprise.setTo(0.0f);
@@ -91,8 +102,8 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   // Products: the prior's τ in RGB, its Σβ; NaN or black where not covered.
   cv::Mat expected_rgb = f.expected_rgb.rowRange(rows), uncertainty = f.uncertainty.rowRange(rows);
   color::YCbCrPlanesToRgb(*p0[kTau], *p0[kTau + 1], *p0[kTau + 2], expected_rgb);
-  cv::add(*p0[kBeta], *p0[kBeta + 1], t.beta_sum);
-  cv::add(t.beta_sum, *p0[kBeta + 2], uncertainty);
+  cv::add(*p0[kBeta], *p0[kBeta + 1], uncertainty);
+  cv::add(uncertainty, *p0[kBeta + 2], uncertainty);
   if (!uncovered.empty()) {
     surprise.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
     expected_rgb.setTo(cv::Scalar::all(0), uncovered);
@@ -100,11 +111,9 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   }
   // The posterior as the store keeps it.
   cv::Mat stored_ab_sigma = f.stored_ab_sigma.rowRange(rows);
-  MergeInto({p1[kAlpha], p1[kBeta], p1[kBeta + 1], p1[kBeta + 2], p1[kSigma], p1[kSigma + 1],
-             p1[kSigma + 2]},
-            stored_ab_sigma);
+  MergeInto(t.post_ab_sigma, stored_ab_sigma);
   cv::Mat stored_tau = f.stored_tau.rowRange(rows);
-  MergeInto({p1[kTau], p1[kTau + 1], p1[kTau + 2]}, stored_tau);
+  MergeInto(t.post_tau, stored_tau);
 }
 
 }  // namespace
