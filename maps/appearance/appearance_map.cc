@@ -45,10 +45,11 @@ constexpr int kTileRows = 8;
 // each tile writes its rows of.
 struct FrameRows {
   const cv::Mat& rgb;
+  const cv::Mat& depth;
   const ViewBasedMap::Prediction& prior;
   cv::Mat uncovered;                     // empty when the map covers every pixel
   std::array<float, kChannels> initial;  // the initial prior, in Channel order
-  cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau;
+  cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau, stored_depth;
 };
 
 // Working planes of one tile, reused for the tiles one task processes; prior and posterior
@@ -114,6 +115,8 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   MergeInto(t.post_ab_sigma, stored_ab_sigma);
   cv::Mat stored_tau = f.stored_tau.rowRange(rows);
   MergeInto(t.post_tau, stored_tau);
+  cv::Mat stored_depth = f.stored_depth.rowRange(rows);  // the store keeps a copy: in parallel
+  f.depth.rowRange(rows).copyTo(stored_depth);
 }
 
 }  // namespace
@@ -136,6 +139,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   const float alpha0 = float(init.alpha), beta0 = float(init.beta), tau0 = float(init.tau),
               sigma0 = float(init.sigma);
   const FrameRows f{rgb,
+                    depth,
                     prior,
                     cv::countNonZero(prior.valid) < rows * cols ? cv::Mat(~prior.valid) : cv::Mat(),
                     {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0},
@@ -143,7 +147,8 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     cv::Mat(rows, cols, CV_8UC3),
                     cv::Mat(rows, cols, CV_32FC1),
                     cv::Mat(rows, cols, CV_MAKETYPE(options_.half_precision ? CV_16F : CV_32F, 7)),
-                    cv::Mat(rows, cols, CV_32FC3)};
+                    cv::Mat(rows, cols, CV_32FC3),
+                    cv::Mat(rows, cols, CV_32FC1)};
   const int tiles = (rows + kTileRows - 1) / kTileRows;
   cv::parallel_for_(
       cv::Range(0, tiles),
@@ -162,7 +167,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   out.uncertainty = f.uncertainty;
   // The posterior at this viewpoint goes into the map (4.3's update policy).
   out.update =
-      map_.Update(camera, T_world_cam, depth,
+      map_.Update(camera, T_world_cam, f.stored_depth,
                   {{"ab_sigma", f.stored_ab_sigma}, {"tau", f.stored_tau}}, prior.selected);
   return out;
 }

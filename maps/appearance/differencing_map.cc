@@ -21,7 +21,7 @@ DifferencingProducts DifferencingMap::Insert(const cv::Mat& rgb, const cv::Mat& 
   out.difference.setTo(std::numeric_limits<float>::quiet_NaN(), ~p.valid);
   color::YCbCrToRgb(p.value[0]).convertTo(out.expected_rgb, CV_8UC3);  // NaN → 0 when saturating
   out.expected_rgb.setTo(cv::Scalar::all(0), ~p.valid);
-  out.update = map_.Update(camera, T_world_cam, depth, {{"ycbcr", x}}, p.selected);
+  out.update = map_.Update(camera, T_world_cam, depth.clone(), {{"ycbcr", x}}, p.selected);
   return out;
 }
 

@@ -87,8 +87,7 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
 }
 
 ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& camera,
-                                                const Eigen::Isometry3d& T_world_cam,
-                                                const cv::Mat& depth,
+                                                const Eigen::Isometry3d& T_world_cam, cv::Mat depth,
                                                 std::map<std::string, cv::Mat> payload,
                                                 const std::vector<int>& selected) {
   double nearest = std::numeric_limits<double>::infinity();
@@ -103,7 +102,7 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& came
   views::ReferenceView v;
   v.camera = camera;
   v.T_world_cam = T_world_cam;
-  v.depth = depth.clone();
+  v.depth = std::move(depth);
   v.planes = std::move(payload);
   UpdateResult r;
   bool add = nearest_view < 0 || nearest >= options_.new_view_distance;

@@ -60,9 +60,11 @@ class ViewBasedMap {
     bool added = false;
     int view = -1;  ///< index of the view added or replaced
   };
-  /// Applies the update policy with the frame's payload planes, depth and pose.
+  /// Applies the update policy with the frame's payload planes, depth and pose. The map keeps
+  /// `depth` and the payload planes as given, sharing their buffers: pass images nobody writes to
+  /// afterwards (a copy of a caller's depth, made where it is cheapest).
   UpdateResult Update(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
-                      const cv::Mat& depth, std::map<std::string, cv::Mat> payload,
+                      cv::Mat depth, std::map<std::string, cv::Mat> payload,
                       const std::vector<int>& selected);
 
   const views::ReferenceViewStore& store() const { return store_; }
