@@ -125,8 +125,9 @@ TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
 TEST(ViewBlender, BilinearSamplesAreExactWhereViewsAreTurnedOrMagnified) {
   // Maps as a turned or magnified view gives them: the sixteen pixels of a group read source rows
   // that slant across one, two or many rows, or columns further apart than one window holds, so
-  // 8-bit planes take every read path (the narrow rows, the windows, the gathers). A plane linear
-  // in x and y is still reproduced exactly, clamped at the border.
+  // 8-bit planes take every read path (the narrow rows, the windows, the gathers); half and float
+  // planes are read a pixel at a time. A plane linear in x and y is still reproduced exactly,
+  // clamped at the border.
   const int w = 48, h = 24;
   struct Map {
     float ux, uy, u0, vx, vy, v0;
@@ -143,12 +144,15 @@ TEST(ViewBlender, BilinearSamplesAreExactWhereViewsAreTurnedOrMagnified) {
       for (int x = 0; x < w; ++x)
         f.map.at<cv::Vec2f>(y, x) =
             cv::Vec2f(m.ux * x + m.uy * y + m.u0, m.vx * x + m.vy * y + m.v0);
-    for (const int channels : {1, 3, 4}) {
-      cv::Mat plane(h, w, CV_8UC(channels));
+    const std::pair<int, int> cases[] = {{CV_8U, 1},  {CV_8U, 3},  {CV_8U, 4},
+                                         {CV_16F, 7}, {CV_32F, 3}, {CV_32F, 8}};
+    for (const auto& [depth, channels] : cases) {
+      cv::Mat linear(h, w, CV_32FC(channels)), plane;
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
           for (int c = 0; c < channels; ++c)
-            plane.ptr<uint8_t>(y)[x * channels + c] = uint8_t(2 * x + 3 * y + 25 * c);
+            linear.ptr<float>(y)[x * channels + c] = float(2 * x + 3 * y + 25 * c);
+      linear.convertTo(plane, depth);
       const BlendResult r = BlendPlanes({f}, {plane});
       ASSERT_EQ(r.covered, w * h);
       for (int y = 0; y < h; ++y)
@@ -159,8 +163,8 @@ TEST(ViewBlender, BilinearSamplesAreExactWhereViewsAreTurnedOrMagnified) {
           for (int c = 0; c < channels; ++c)
             ASSERT_NEAR(r.value.ptr<float>(y)[x * channels + c], 2.0f * u + 3.0f * v + 25.0f * c,
                         1e-3)
-                << "map " << (&m - maps) << ", " << channels << " channels, at " << x << "," << y
-                << " channel " << c;
+                << "map " << (&m - maps) << ", depth " << depth << ", " << channels
+                << " channels, at " << x << "," << y << " channel " << c;
         }
     }
   }
