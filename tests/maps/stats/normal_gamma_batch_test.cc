@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -144,6 +145,62 @@ TEST(NormalGammaBatch, InPlaceUpdateEqualsOutOfPlace) {
   EXPECT_EQ(in_place.tau, out.tau);
   EXPECT_EQ(in_place.beta, out.beta);
   EXPECT_EQ(s1, s2);
+}
+
+// Three channels sharing one α plane, in place, as the appearance map's tiles may use them: α
+// uniform over whole packets (the KL's α terms cached from packet to packet), the second run's α
+// the first run's posterior α, and a pixel without data. Each channel's prior is read before its
+// posterior is written, and α's before all.
+TEST(NormalGammaBatch, InPlaceChannelsSharingAlphaEqualOutOfPlace) {
+  const std::size_t n = 160;
+  const SurpriseBatchOptions o;
+  float alpha_after_2 = 0.0f;  // the posterior α of α = 2, as the kernel computes it
+  {
+    Planes p(16, 3);
+    std::fill(p.alpha.begin(), p.alpha.end(), 2.0f);
+    std::vector<float> s(16, 0.0f);
+    UpdateAndAccumulateSurprise(p.x.data(), p.View(), p.Mutable(), s.data(), 16, o);
+    alpha_after_2 = p.alpha[0];
+  }
+  ASSERT_NEAR(alpha_after_2, 2.1f, 1e-6f);  // 0.8 · 2 + 0.5
+  std::vector<Planes> in_place;
+  for (unsigned k = 0; k < 3; ++k) in_place.emplace_back(n, 40 + k);
+  for (std::size_t i = 0; i < n; ++i)
+    in_place[0].alpha[i] = i < 32 ? 2.0f : i < 96 ? alpha_after_2 : 1.25f;
+  for (unsigned k = 1; k < 3; ++k) in_place[k].alpha = in_place[0].alpha;
+  in_place[2].x[70] = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<Planes> copy = in_place;
+  std::vector<Planes> out(3, Planes(n, 1));
+  ChannelPlanes separate, shared;
+  for (unsigned k = 0; k < 3; ++k) {
+    separate.x.push_back(copy[k].x.data());
+    separate.prior.push_back(
+        {copy[0].alpha.data(), copy[k].beta.data(), copy[k].tau.data(), copy[k].sigma.data()});
+    separate.posterior.push_back(
+        {out[0].alpha.data(), out[k].beta.data(), out[k].tau.data(), out[k].sigma.data()});
+    shared.x.push_back(copy[k].x.data());
+    shared.prior.push_back({in_place[0].alpha.data(), in_place[k].beta.data(),
+                            in_place[k].tau.data(), in_place[k].sigma.data()});
+    shared.posterior.push_back({in_place[0].alpha.data(), in_place[k].beta.data(),
+                                in_place[k].tau.data(), in_place[k].sigma.data()});
+  }
+  std::vector<float> s1(n, 0.0f), s2(n, 0.0f);
+  UpdateAndAccumulateSurprise(separate, s1.data(), n, o);
+  UpdateAndAccumulateSurprise(shared, s2.data(), n, o);
+  EXPECT_EQ(in_place[0].alpha, out[0].alpha);
+  for (unsigned k = 0; k < 3; ++k) {
+    EXPECT_EQ(in_place[k].beta, out[k].beta) << k;
+    EXPECT_EQ(in_place[k].tau, out[k].tau) << k;
+    EXPECT_EQ(in_place[k].sigma, out[k].sigma) << k;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i == 70) {
+      EXPECT_TRUE(std::isnan(s2[i]));
+    } else {
+      EXPECT_EQ(s1[i], s2[i]) << i;
+    }
+  }
+  EXPECT_NE(copy[0].alpha, in_place[0].alpha);  // it was updated
 }
 
 TEST(NormalGammaBatch, ChannelsSharingAlphaEqualSeparateChannels) {
