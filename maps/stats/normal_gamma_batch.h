@@ -4,7 +4,7 @@
 // Two kernels evaluate the same templates (UpdateWithForgetting, the KL's α terms and other
 // terms of normal_gamma_kl.h):
 //   kScalar      one pixel at a time in double — the reference;
-//   kVectorised  16 pixels at a time in float with Eigen fixed-size arrays (SIMD log/exp).
+//   kVectorised  32 pixels at a time in float with Eigen fixed-size arrays (SIMD log/exp).
 // Their results agree to float precision (normal_gamma_batch_test.cc). Pixel blocks run on
 // OpenCV's thread pool.
 #pragma once
