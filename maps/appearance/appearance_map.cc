@@ -66,17 +66,23 @@ std::array<cv::Mat*, kChannels> InChannelOrder(std::vector<cv::Mat>& ab_sigma,
           &tau[1],      &tau[2],      &ab_sigma[4], &ab_sigma[5], &ab_sigma[6]};
 }
 
+// Rows [r.start, r.end) of `m` as a header that does not share m's reference count: the tiles of
+// both threads would otherwise count up and down on the same frame images' counters.
+cv::Mat RowsOf(const cv::Mat& m, const cv::Range& r) {
+  return cv::Mat(r.size(), m.cols, m.type(), const_cast<uchar*>(m.ptr(r.start)), m.step[0]);
+}
+
 // Rows [r0, r1): prior planes from the prediction, update and surprise (eq. 4.8-4.21; α is shared
 // by the three channels), and the rows of every product and of the posterior to be stored.
 void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options, int r0, int r1,
                  TileWork& t) {
   const cv::Range rows(r0, r1);
-  color::RgbToYCbCrPlanes(f.rgb.rowRange(rows), t.x);
+  color::RgbToYCbCrPlanes(RowsOf(f.rgb, rows), t.x);
   // Half floats (a static camera reads its view's stored planes in place) or blended floats.
-  SplitToFloat(f.prior.value[0].rowRange(rows), t.ab_sigma);
-  SplitToFloat(f.prior.value[1].rowRange(rows), t.tau);
+  SplitToFloat(RowsOf(f.prior.value[0], rows), t.ab_sigma);
+  SplitToFloat(RowsOf(f.prior.value[1], rows), t.tau);
   const std::array<cv::Mat*, kChannels> p0 = InChannelOrder(t.ab_sigma, t.tau);
-  const cv::Mat uncovered = f.uncovered.empty() ? cv::Mat() : f.uncovered.rowRange(rows);
+  const cv::Mat uncovered = f.uncovered.empty() ? cv::Mat() : RowsOf(f.uncovered, rows);
   if (!uncovered.empty()) {  // the initial prior where no view covers (a static camera: never)
     for (int c = 0; c < kChannels; ++c) p0[c]->setTo(f.initial[std::size_t(c)], uncovered);
   }
@@ -96,12 +102,12 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
     channels.posterior.push_back({p1[kAlpha]->ptr<float>(), p1[kBeta + k]->ptr<float>(),
                                   p1[kTau + k]->ptr<float>(), p1[kSigma + k]->ptr<float>()});
   }
-  cv::Mat surprise = f.surprise.rowRange(rows);
+  cv::Mat surprise = RowsOf(f.surprise, rows);
   surprise.setTo(0.0f);
   stats::UpdateAndAccumulateSurprise(channels, surprise.ptr<float>(), surprise.total(), options);
 
   // Products: the prior's τ in RGB, its Σβ; NaN or black where not covered.
-  cv::Mat expected_rgb = f.expected_rgb.rowRange(rows), uncertainty = f.uncertainty.rowRange(rows);
+  cv::Mat expected_rgb = RowsOf(f.expected_rgb, rows), uncertainty = RowsOf(f.uncertainty, rows);
   color::YCbCrPlanesToRgb(*p0[kTau], *p0[kTau + 1], *p0[kTau + 2], expected_rgb);
   cv::add(*p0[kBeta], *p0[kBeta + 1], uncertainty);
   cv::add(uncertainty, *p0[kBeta + 2], uncertainty);
@@ -111,12 +117,12 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
     uncertainty.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
   }
   // The posterior as the store keeps it.
-  cv::Mat stored_ab_sigma = f.stored_ab_sigma.rowRange(rows);
+  cv::Mat stored_ab_sigma = RowsOf(f.stored_ab_sigma, rows);
   MergeInto(t.post_ab_sigma, stored_ab_sigma);
-  cv::Mat stored_tau = f.stored_tau.rowRange(rows);
+  cv::Mat stored_tau = RowsOf(f.stored_tau, rows);
   MergeInto(t.post_tau, stored_tau);
-  cv::Mat stored_depth = f.stored_depth.rowRange(rows);  // the store keeps a copy: in parallel
-  f.depth.rowRange(rows).copyTo(stored_depth);
+  cv::Mat stored_depth = RowsOf(f.stored_depth, rows);  // the store keeps a copy: in parallel
+  RowsOf(f.depth, rows).copyTo(stored_depth);
 }
 
 }  // namespace
