@@ -473,7 +473,7 @@ inline void AddViewPixels(const WarpField& w, const Plane& p, float view_weight,
   const __mmask8 m = __mmask8((1u << p.channels) - 1);
   // The source lines the next virtual rows will read, fetched ahead: these samples wait on
   // memory (seven views' parameter planes are 14 MB), and a turned view's rows slant where the
-  // hardware prefetcher does not follow (parameter blend −15 to −20 %).
+  // hardware prefetcher does not follow (parameter blend ≈ −20 %).
   constexpr int kRowsAhead = 2;
   const std::size_t ahead = std::size_t(kRowsAhead) * std::size_t(p.RowBytes());
   for (int k : {0, 4, 8, 12, 15}) {  // sixteen pixels' bottom corners span a few lines
