@@ -59,13 +59,29 @@ inline L::F16 Widen(__m512i planar, int c) {
 }
 #endif
 
-void RgbRow(const uchar* in, int cols, const Affine& a, float* y, float* cb, float* cr) {
+// One image's conversion: the transform and, with VBMI, the byte permute of sixteen pixels
+// (`to_planar`: bytes to planes, else back), made once per image rather than per row.
+struct Conversion {
+  Affine a;
+#if defined(__AVX512VBMI__) && defined(__AVX512BW__)
+  __m512i permute;
+#endif
+  Conversion(const cv::Matx34d& m, bool to_planar) : a(m) {
+#if defined(__AVX512VBMI__) && defined(__AVX512BW__)
+    permute = ByteIndex(to_planar);
+#else
+    (void)to_planar;
+#endif
+  }
+};
+
+void RgbRow(const uchar* in, int cols, const Conversion& k, float* y, float* cb, float* cr) {
+  const Affine& a = k.a;
   int x = 0;
 #if defined(__AVX512VBMI__) && defined(__AVX512BW__)
-  const __m512i to_planar = ByteIndex(true);
   for (; x + L::kLanes <= cols; x += L::kLanes) {
     const __m512i planar =
-        _mm512_permutexvar_epi8(to_planar, _mm512_maskz_loadu_epi8(kRgbBytes, in + 3 * x));
+        _mm512_permutexvar_epi8(k.permute, _mm512_maskz_loadu_epi8(kRgbBytes, in + 3 * x));
     const L::F16 r = Widen(planar, 0), g = Widen(planar, 1), b = Widen(planar, 2);
     L::Store(y + x, a.Row(0, r, g, b));
     L::Store(cb + x, a.Row(1, r, g, b));
@@ -80,11 +96,11 @@ void RgbRow(const uchar* in, int cols, const Affine& a, float* y, float* cb, flo
   }
 }
 
-void PlanesRow(const float* y, const float* cb, const float* cr, int cols, const Affine& a,
+void PlanesRow(const float* y, const float* cb, const float* cr, int cols, const Conversion& k,
                uchar* out) {
+  const Affine& a = k.a;
   int x = 0;
 #if defined(__AVX512VBMI__) && defined(__AVX512BW__)
-  const __m512i to_interleaved = ByteIndex(false);
   for (; x + L::kLanes <= cols; x += L::kLanes) {
     const L::F16 Y = L::Load(y + x), Cb = L::Load(cb + x), Cr = L::Load(cr + x);
     const auto bytes = [&](int c) {
@@ -93,8 +109,7 @@ void PlanesRow(const float* y, const float* cb, const float* cr, int cols, const
     __m512i planar = _mm512_castsi128_si512(bytes(0));
     planar = _mm512_inserti32x4(planar, bytes(1), 1);
     planar = _mm512_inserti32x4(planar, bytes(2), 2);
-    _mm512_mask_storeu_epi8(out + 3 * x, kRgbBytes,
-                            _mm512_permutexvar_epi8(to_interleaved, planar));
+    _mm512_mask_storeu_epi8(out + 3 * x, kRgbBytes, _mm512_permutexvar_epi8(k.permute, planar));
   }
 #endif
   for (; x < cols; ++x)
@@ -110,9 +125,9 @@ void RgbToYCbCrPlanes(const cv::Mat& rgb, std::vector<cv::Mat>& planes) {
   }
   planes.resize(3);
   for (cv::Mat& p : planes) p.create(rgb.size(), CV_32FC1);
-  const Affine a(RgbToYCbCrMatrix());
+  const Conversion k(RgbToYCbCrMatrix(), true);
   for (int r = 0; r < rgb.rows; ++r) {
-    RgbRow(rgb.ptr<uchar>(r), rgb.cols, a, planes[0].ptr<float>(r), planes[1].ptr<float>(r),
+    RgbRow(rgb.ptr<uchar>(r), rgb.cols, k, planes[0].ptr<float>(r), planes[1].ptr<float>(r),
            planes[2].ptr<float>(r));
   }
 }
@@ -128,9 +143,9 @@ void YCbCrPlanesToRgb(const cv::Mat& y, const cv::Mat& cb, const cv::Mat& cr, cv
         std::to_string(y.type()) + ", " + std::to_string(cb.type()) + ", " +
         std::to_string(cr.type()) + " for " + std::to_string(rgb.type()));
   }
-  const Affine a(YCbCrToRgbMatrix());
+  const Conversion k(YCbCrToRgbMatrix(), false);
   for (int r = 0; r < rgb.rows; ++r) {
-    PlanesRow(y.ptr<float>(r), cb.ptr<float>(r), cr.ptr<float>(r), rgb.cols, a, rgb.ptr<uchar>(r));
+    PlanesRow(y.ptr<float>(r), cb.ptr<float>(r), cr.ptr<float>(r), rgb.cols, k, rgb.ptr<uchar>(r));
   }
 }
 
