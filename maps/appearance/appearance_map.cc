@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "maps/appearance/fill_where.h"
 #include "maps/appearance/interleave.h"
 #include "maps/color/ycbcr_planes.h"
 
@@ -84,7 +85,7 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   const std::array<cv::Mat*, kChannels> p0 = InChannelOrder(t.ab_sigma, t.tau);
   const cv::Mat uncovered = f.uncovered.empty() ? cv::Mat() : RowsOf(f.uncovered, rows);
   if (!uncovered.empty()) {  // the initial prior where no view covers (a static camera: never)
-    for (int c = 0; c < kChannels; ++c) p0[c]->setTo(f.initial[std::size_t(c)], uncovered);
+    for (int c = 0; c < kChannels; ++c) FillWhere(*p0[c], uncovered, f.initial[std::size_t(c)]);
   }
   t.post_ab_sigma.resize(t.ab_sigma.size());
   t.post_tau.resize(t.tau.size());
@@ -112,9 +113,9 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   cv::add(*p0[kBeta], *p0[kBeta + 1], uncertainty);
   cv::add(uncertainty, *p0[kBeta + 2], uncertainty);
   if (!uncovered.empty()) {
-    surprise.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
-    expected_rgb.setTo(cv::Scalar::all(0), uncovered);
-    uncertainty.setTo(std::numeric_limits<float>::quiet_NaN(), uncovered);
+    FillWhere(surprise, uncovered, std::numeric_limits<float>::quiet_NaN());
+    FillWhere(expected_rgb, uncovered, cv::Scalar::all(0));
+    FillWhere(uncertainty, uncovered, std::numeric_limits<float>::quiet_NaN());
   }
   // The posterior as the store keeps it.
   cv::Mat stored_ab_sigma = RowsOf(f.stored_ab_sigma, rows);

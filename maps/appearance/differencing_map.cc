@@ -3,6 +3,7 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
+#include "maps/appearance/fill_where.h"
 #include "maps/color/ycbcr.h"
 
 namespace novelty::appearance {
@@ -18,9 +19,10 @@ DifferencingProducts DifferencingMap::Insert(const cv::Mat& rgb, const cv::Mat& 
   cv::Mat diff;
   cv::absdiff(x, p.value[0], diff);
   cv::transform(diff, out.difference, cv::Matx13f(1, 1, 1));  // |ΔY| + |ΔCb| + |ΔCr|
-  out.difference.setTo(std::numeric_limits<float>::quiet_NaN(), ~p.valid);
+  const cv::Mat uncovered = ~p.valid;
+  FillWhere(out.difference, uncovered, std::numeric_limits<float>::quiet_NaN());
   color::YCbCrToRgb(p.value[0]).convertTo(out.expected_rgb, CV_8UC3);  // NaN → 0 when saturating
-  out.expected_rgb.setTo(cv::Scalar::all(0), ~p.valid);
+  FillWhere(out.expected_rgb, uncovered, cv::Scalar::all(0));
   out.update = map_.Update(camera, T_world_cam, depth.clone(), {{"ycbcr", x}}, p.selected);
   return out;
 }
