@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/core/utility.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -72,19 +73,23 @@ cv::Mat FindPlanarBlocks(const cv::Mat& depth, int size, double tolerance) {
                                 std::to_string(size));
   const cv::Size grid = PlanarGrid(depth.cols, depth.rows, size);
   cv::Mat flags(grid, CV_8UC1, cv::Scalar(kNotPlanar));
-  for (int y = 0; y < grid.height; ++y) {
-    uchar* row = flags.ptr<uchar>(y);
-    for (int x = 0; x < grid.width; ++x) {
-      if (IsPlanar(depth, PlanarBlockRect(x, y, depth.cols, depth.rows, size), float(tolerance)))
-        row[x] = kPlanar;
+  // Block rows on all cores: a moving camera plans the view it replaced at its next warp, in
+  // the frame's time (≈ 0.12 ms for 320×240 on one core).
+  cv::parallel_for_(cv::Range(0, grid.height), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      uchar* row = flags.ptr<uchar>(y);
+      for (int x = 0; x < grid.width; ++x) {
+        if (IsPlanar(depth, PlanarBlockRect(x, y, depth.cols, depth.rows, size), float(tolerance)))
+          row[x] = kPlanar;
+      }
+      for (int x = 0; x < grid.width;) {  // each sequence of planar blocks into runs
+        int end = x;
+        while (end < grid.width && row[end] == kPlanar) ++end;
+        JoinRuns(depth, size, float(tolerance), y, x, end, row);
+        x = std::max(end, x + 1);
+      }
     }
-    for (int x = 0; x < grid.width;) {  // each sequence of planar blocks into runs
-      int end = x;
-      while (end < grid.width && row[end] == kPlanar) ++end;
-      JoinRuns(depth, size, float(tolerance), y, x, end, row);
-      x = std::max(end, x + 1);
-    }
-  }
+  });
   return flags;
 }
 
