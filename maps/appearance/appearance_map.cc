@@ -38,8 +38,8 @@ constexpr int kChannels = AppearanceMap::kChannels, kAlpha = AppearanceMap::kAlp
               kSigma = AppearanceMap::kSigma;
 
 // A frame is processed in tiles of this many rows, on all cores: each tile's working planes
-// (about 30 of 320 floats per row) stay in cache from the colour conversion through the kernel
-// to the stored posterior.
+// (about 30 of 320 floats per row) stay in cache from the blend of its prior and the colour
+// conversion through the kernel to the stored posterior.
 constexpr int kTileRows = 8;
 
 // One frame: what every tile reads, and the new images (handed out, or kept by the store) that
@@ -47,9 +47,9 @@ constexpr int kTileRows = 8;
 struct FrameRows {
   const cv::Mat& rgb;
   const cv::Mat& depth;
-  const ViewBasedMap::Prediction& prior;
-  cv::Mat uncovered;                     // empty when the map covers every pixel
-  std::array<float, kChannels> initial;  // the initial prior, in Channel order
+  ViewBasedMap& map;                      // blends the prior's rows (PredictDeferred)
+  const ViewBasedMap::Prediction& prior;  // its rows hold nothing until blended
+  std::array<float, kChannels> initial;   // the initial prior, in Channel order
   cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau, stored_depth;
 };
 
@@ -57,6 +57,7 @@ struct FrameRows {
 // planes in the stored images' channel order.
 struct TileWork {
   std::vector<cv::Mat> x, ab_sigma, tau, post_ab_sigma, post_tau;
+  cv::Mat uncovered;
   stats::ChannelPlanes channels;
 };
 
@@ -78,12 +79,18 @@ cv::Mat RowsOf(const cv::Mat& m, const cv::Range& r) {
 void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options, int r0, int r1,
                  TileWork& t) {
   const cv::Range rows(r0, r1);
+  f.map.BlendRows(rows);
+  const cv::Mat valid = RowsOf(f.prior.valid, rows);
+  cv::Mat uncovered;  // empty where the map covers every pixel of the tile
+  if (cv::countNonZero(valid) < int(valid.total())) {
+    cv::compare(valid, 0, t.uncovered, cv::CMP_EQ);
+    uncovered = t.uncovered;
+  }
   color::RgbToYCbCrPlanes(RowsOf(f.rgb, rows), t.x);
   // Half floats (a static camera reads its view's stored planes in place) or blended floats.
   SplitToFloat(RowsOf(f.prior.value[0], rows), t.ab_sigma);
   SplitToFloat(RowsOf(f.prior.value[1], rows), t.tau);
   const std::array<cv::Mat*, kChannels> p0 = InChannelOrder(t.ab_sigma, t.tau);
-  const cv::Mat uncovered = f.uncovered.empty() ? cv::Mat() : RowsOf(f.uncovered, rows);
   if (!uncovered.empty()) {  // the initial prior where no view covers (a static camera: never)
     for (int c = 0; c < kChannels; ++c) FillWhere(*p0[c], uncovered, f.initial[std::size_t(c)]);
   }
@@ -139,16 +146,17 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                                          const Eigen::Isometry3d& T_world_cam) {
   CheckFrame(rgb, depth, camera, T_world_cam, "AppearanceMap::Insert");
   const int rows = camera.height, cols = camera.width;
-  // Prior: blended reference parameters; the initial prior where no view covers.
+  // Prior: blended reference parameters, each tile's rows by the tile; the initial prior where no
+  // view covers.
   const ViewBasedMap::Prediction prior =
-      map_.Predict(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}});
+      map_.PredictDeferred(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}});
   const stats::NormalGamma& init = options_.initial_prior;
   const float alpha0 = float(init.alpha), beta0 = float(init.beta), tau0 = float(init.tau),
               sigma0 = float(init.sigma);
   const FrameRows f{rgb,
                     depth,
+                    map_,
                     prior,
-                    cv::countNonZero(prior.valid) < rows * cols ? cv::Mat(~prior.valid) : cv::Mat(),
                     {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0},
                     cv::Mat(rows, cols, CV_32FC1),
                     cv::Mat(rows, cols, CV_8UC3),

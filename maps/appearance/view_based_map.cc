@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <opencv2/core/utility.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +28,17 @@ ViewBasedMap::ViewBasedMap(const ViewBasedMapOptions& options)
 ViewBasedMap::Prediction ViewBasedMap::Predict(
     const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
     const std::vector<std::pair<std::string, int>>& names) {
+  Prediction p = PredictDeferred(camera, T_world_cam, names);
+  if (!pending_.empty()) {
+    cv::parallel_for_(cv::Range(0, camera.height), [&](const cv::Range& rows) { BlendRows(rows); });
+  }
+  return p;
+}
+
+ViewBasedMap::Prediction ViewBasedMap::PredictDeferred(
+    const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+    const std::vector<std::pair<std::string, int>>& names) {
+  pending_.clear();
   Prediction p;
   p.selected = views::SelectViews(store_.Poses(), camera, T_world_cam, options_.selection);
   p.value.resize(names.size());
@@ -58,15 +70,21 @@ ViewBasedMap::Prediction ViewBasedMap::Predict(
   }
   warper_.WarpMany(sources, camera, T_world_cam, warps_);
   blended_.resize(std::max(blended_.size(), names.size()));
+  pending_.resize(names.size());
   for (std::size_t k = 0; k < names.size(); ++k) {
-    std::vector<cv::Mat> planes;
-    for (int j : p.selected) planes.push_back(store_.view(j).planes.at(names[k].first));
+    for (int j : p.selected) pending_[k].push_back(store_.view(j).planes.at(names[k].first));
     views::BlendResult& b = blended_[k];  // last frame's images, unless a caller still holds them
-    views::BlendPlanes(warps_, planes, options_.blend, b);
+    views::PrepareBlend(warps_, pending_[k], options_.blend, b);
     p.value[k] = b.value;
     p.valid = b.valid;  // the same for every plane: it depends on the warps only
   }
   return p;
+}
+
+void ViewBasedMap::BlendRows(const cv::Range& rows) {
+  for (std::size_t k = 0; k < pending_.size(); ++k) {
+    views::BlendRows(warps_, pending_[k], options_.blend, rows, blended_[k]);
+  }
 }
 
 void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,

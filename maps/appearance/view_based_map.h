@@ -55,6 +55,17 @@ class ViewBasedMap {
   /// selected view serves every plane. An empty map predicts nothing: all invalid.
   Prediction Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                      const std::vector<std::pair<std::string, int>>& names);
+  /// As Predict, but the caller blends the planes, rows at a time (BlendRows), where it uses
+  /// them — a caller that works through the frame in row tiles then finds each tile's prior in
+  /// cache: the value and valid images are sized but hold nothing until their rows are blended.
+  /// A prediction that needs no blend (an empty map, a static camera) comes complete.
+  Prediction PredictDeferred(const views::PinholeCamera& camera,
+                             const Eigen::Isometry3d& T_world_cam,
+                             const std::vector<std::pair<std::string, int>>& names);
+  /// Blends rows `rows` of every plane of the last PredictDeferred's prediction (and of its valid
+  /// image) on the calling thread; threads may blend different rows at once. Nothing when that
+  /// prediction came complete.
+  void BlendRows(const cv::Range& rows);
 
   struct UpdateResult {
     bool added = false;
@@ -88,6 +99,8 @@ class ViewBasedMap {
   // in place next frame when the caller has let it go (BlendPlanes): fresh megabytes every frame
   // cost a tenth of a seven-view frame in page faults.
   std::vector<views::BlendResult> blended_;
+  // Per requested plane, the selected views' planes still to be blended (PredictDeferred).
+  std::vector<std::vector<cv::Mat>> pending_;
 };
 
 }  // namespace novelty::appearance

@@ -572,47 +572,37 @@ auto GroupKernelFor(const Plane& p) {
   return &BlendPixels<F16, Plane>;
 }
 
-// Every pixel, rows on all cores.
+// Every pixel of `rows`, on all cores when `parallel`.
 template <class Plane>
 int BlendAll(const std::vector<const WarpField*>& warps, const std::vector<Plane>& planes,
-             const std::vector<float>& weights, const BlendOptions& o, BlendResult& out) {
+             const std::vector<float>& weights, const BlendOptions& o, const cv::Range& rows,
+             bool parallel, BlendResult& out) {
   const int width = out.value.cols;
   const bool whole_pixels = kPixelReads && planes[0].WholePixels();
   const auto group = GroupKernelFor(planes[0]);
-  std::vector<int> covered(std::size_t(out.value.rows), 0);
-  cv::parallel_for_(cv::Range(0, out.value.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
+  std::vector<int> covered(std::size_t(rows.size()), 0);
+  const auto blend = [&](const cv::Range& part) {
+    for (int y = part.start; y < part.end; ++y) {
       int x = 0, n = 0;
       for (; x + kLanes <= width; x += kLanes) {
         n += whole_pixels ? BlendWholePixels(warps, planes, weights, o, y, x, out)
                           : group(warps, planes, weights, o, y, x, out);
       }
       for (; x < width; ++x) n += BlendPixels<float>(warps, planes, weights, o, y, x, out);
-      covered[std::size_t(y)] = n;
+      covered[std::size_t(y - rows.start)] = n;
     }
-  });
+  };
+  if (parallel) {
+    cv::parallel_for_(rows, blend);
+  } else {
+    blend(rows);
+  }
   return std::accumulate(covered.begin(), covered.end(), 0);
 }
 
-}  // namespace
-
-WarpOptions WarpOptionsFor(const BlendOptions& blend, WarpOptions warp) {
-  warp.compute_source_depth = blend.resolution_power > 0.0;
-  warp.compute_view_angles = blend.angle_power > 0.0;
-  warp.compute_depth = blend.depth_tolerance > 0.0 || warp.compute_source_depth ||
-                       warp.compute_view_angles;  // (the view angles are found from the depth)
-  return warp;
-}
-
-BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
-                        const BlendOptions& o) {
-  BlendResult result;
-  BlendPlanes(warps, planes, o, result);
-  return result;
-}
-
-void BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
-                 const BlendOptions& o, BlendResult& result) {
+// Throws std::invalid_argument unless `planes` and `o` fit `warps`.
+void CheckInput(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+                const BlendOptions& o) {
   if (warps.empty() || warps.size() != planes.size()) {
     throw std::invalid_argument("BlendPlanes: need one plane per warp, got " +
                                 std::to_string(planes.size()) + " planes for " +
@@ -651,12 +641,11 @@ void BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>
       throw std::invalid_argument("BlendPlanes: unsupported plane depth " + std::to_string(depth));
     }
   }
-  // In place unless another owner shares the images (create() alone would write into theirs).
-  for (cv::Mat* m : {&result.value, &result.valid}) {
-    if (m->u && m->u->refcount > 1) m->release();
-  }
-  result.value.create(size, CV_32FC(channels));
-  result.valid.create(size, CV_8UC1);
+}
+
+// Rows `rows` of the blend into `result` (checked and sized); returns the pixels covered there.
+int BlendInto(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+              const BlendOptions& o, const cv::Range& rows, bool parallel, BlendResult& result) {
   std::vector<const WarpField*> fields;
   std::vector<float> weights;
   for (std::size_t k = 0; k < warps.size(); ++k) {
@@ -664,13 +653,62 @@ void BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>
     weights.push_back(o.weights.empty() ? 1.0f : float(o.weights[k]));
   }
   if (const auto bytes = AsBytePlanes(planes)) {
-    result.covered = BlendAll(fields, *bytes, weights, o, result);
-  } else if (const auto half = AsHalfPlanes(planes)) {
-    result.covered = BlendAll(fields, *half, weights, o, result);
-  } else {
-    std::vector<cv::Mat> scratch;
-    result.covered = BlendAll(fields, AsFloatPlanes(planes, scratch), weights, o, result);
+    return BlendAll(fields, *bytes, weights, o, rows, parallel, result);
   }
+  if (const auto half = AsHalfPlanes(planes)) {
+    return BlendAll(fields, *half, weights, o, rows, parallel, result);
+  }
+  std::vector<cv::Mat> scratch;
+  return BlendAll(fields, AsFloatPlanes(planes, scratch), weights, o, rows, parallel, result);
+}
+
+}  // namespace
+
+WarpOptions WarpOptionsFor(const BlendOptions& blend, WarpOptions warp) {
+  warp.compute_source_depth = blend.resolution_power > 0.0;
+  warp.compute_view_angles = blend.angle_power > 0.0;
+  warp.compute_depth = blend.depth_tolerance > 0.0 || warp.compute_source_depth ||
+                       warp.compute_view_angles;  // (the view angles are found from the depth)
+  return warp;
+}
+
+BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+                        const BlendOptions& o) {
+  BlendResult result;
+  BlendPlanes(warps, planes, o, result);
+  return result;
+}
+
+void BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+                 const BlendOptions& o, BlendResult& result) {
+  PrepareBlend(warps, planes, o, result);
+  result.covered = BlendInto(warps, planes, o, cv::Range(0, result.value.rows), true, result);
+}
+
+void PrepareBlend(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+                  const BlendOptions& o, BlendResult& result) {
+  CheckInput(warps, planes, o);
+  // In place unless another owner shares the images (create() alone would write into theirs).
+  for (cv::Mat* m : {&result.value, &result.valid}) {
+    if (m->u && m->u->refcount > 1) m->release();
+  }
+  result.value.create(warps[0].map.size(), CV_32FC(planes[0].channels()));
+  result.valid.create(warps[0].map.size(), CV_8UC1);
+  result.covered = 0;
+}
+
+int BlendRows(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+              const BlendOptions& o, const cv::Range& rows, BlendResult& result) {
+  const bool prepared = !warps.empty() && !planes.empty() &&
+                        result.value.size() == warps[0].map.size() &&
+                        result.value.type() == CV_32FC(planes[0].channels()) &&
+                        result.valid.size() == result.value.size();
+  if (!prepared || rows.start < 0 || rows.end > result.value.rows || rows.start > rows.end) {
+    throw std::invalid_argument("BlendRows: rows " + std::to_string(rows.start) + "–" +
+                                std::to_string(rows.end) +
+                                " of a result that PrepareBlend did not size for these planes");
+  }
+  return BlendInto(warps, planes, o, rows, false, result);
 }
 
 }  // namespace novelty::views

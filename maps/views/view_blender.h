@@ -60,4 +60,16 @@ BlendResult BlendPlanes(const std::vector<WarpField>& warps, const std::vector<c
 void BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
                  const BlendOptions& options, BlendResult& out);
 
+/// The blend in parts, for a caller that works through a frame in row tiles and blends each
+/// tile's rows where it uses them (in cache; the appearance map): PrepareBlend checks the input
+/// as BlendPlanes and sizes `out` (in place as above; covered = 0), BlendRows then blends rows
+/// `rows` of it on the calling thread — threads may blend different rows at once — and returns
+/// the pixels covered there. Over all rows the result equals BlendPlanes'. BlendRows throws
+/// std::invalid_argument for rows outside `out` or an `out` not sized for these planes; planes
+/// it must convert (neither 8-bit, half nor float, or not continuous) are converted at each call.
+void PrepareBlend(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+                  const BlendOptions& options, BlendResult& out);
+int BlendRows(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
+              const BlendOptions& options, const cv::Range& rows, BlendResult& out);
+
 }  // namespace novelty::views

@@ -184,6 +184,46 @@ TEST(ViewBlender, PlanesOfDifferentDepthsOrLayoutsBlendAlike) {
   for (int x : {0, 17, 19}) EXPECT_EQ(r.value.at<cv::Vec3f>(2, x), cv::Vec3f(27, 37, 47)) << x;
 }
 
+TEST(ViewBlender, RowsBlendedInPartsEqualTheWholeBlend) {
+  // A turned view and a partly uncovered one; half, float and 8-bit planes; 37 columns (two
+  // groups of sixteen and a tail); the parts in any order.
+  std::vector<WarpField> warps = {Field(37, 9, 37, 1.0f), Field(37, 9, 30, 1.0f)};
+  for (int y = 0; y < 9; ++y)
+    for (int x = 0; x < 30; ++x)
+      warps[1].map.at<cv::Vec2f>(y, x) = cv::Vec2f(0.9f * x + 0.3f * y + 1.2f, 0.2f * x + 0.7f * y);
+  cv::RNG rng(11);
+  for (const auto& [depth, channels] :
+       std::vector<std::pair<int, int>>{{CV_16F, 7}, {CV_32F, 3}, {CV_8U, 3}}) {
+    std::vector<cv::Mat> planes;
+    for (int k = 0; k < 2; ++k) {
+      cv::Mat values(20, 40, CV_32FC(channels)), plane;
+      rng.fill(values, cv::RNG::UNIFORM, 0.0, 200.0);
+      values.convertTo(plane, depth);
+      planes.push_back(plane);
+    }
+    const BlendResult whole = BlendPlanes(warps, planes);
+    BlendResult parts;
+    PrepareBlend(warps, planes, {}, parts);
+    int covered = 0;
+    for (const cv::Range rows : {cv::Range(6, 9), cv::Range(0, 2), cv::Range(2, 6)}) {
+      covered += BlendRows(warps, planes, {}, rows, parts);
+    }
+    EXPECT_EQ(covered, whole.covered);
+    EXPECT_EQ(covered, 37 * 9);
+    EXPECT_EQ(cv::norm(parts.value, whole.value, cv::NORM_INF), 0.0) << depth << " " << channels;
+    EXPECT_EQ(cv::norm(parts.valid, whole.valid, cv::NORM_INF), 0.0);
+  }
+  // Rows outside the result, or a result not prepared for these planes.
+  const std::vector<cv::Mat> planes = {cv::Mat(20, 40, CV_32FC3), cv::Mat(20, 40, CV_32FC3)};
+  BlendResult r;
+  EXPECT_THROW(BlendRows(warps, planes, {}, cv::Range(0, 2), r), std::invalid_argument);
+  PrepareBlend(warps, planes, {}, r);
+  EXPECT_THROW(BlendRows(warps, planes, {}, cv::Range(8, 10), r), std::invalid_argument);
+  const std::vector<cv::Mat> one_channel = {cv::Mat(20, 40, CV_32FC1), cv::Mat(20, 40, CV_32FC1)};
+  EXPECT_THROW(BlendRows(warps, one_channel, {}, cv::Range(0, 2), r), std::invalid_argument);
+  EXPECT_EQ(BlendRows(warps, planes, {}, cv::Range(3, 3), r), 0);
+}
+
 TEST(ViewBlender, AKeptResultIsWrittenInPlaceUnlessSomeoneElseHoldsIt) {
   const std::vector<WarpField> warps = {Field(20, 3, 20, 1.0f)};
   const std::vector<cv::Mat> tens = {cv::Mat(3, 20, CV_8UC3, cv::Scalar(10, 10, 10))};
