@@ -165,6 +165,8 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     cv::Mat(rows, cols, CV_32FC3),
                     cv::Mat(rows, cols, CV_32FC1)};
   const int tiles = (rows + kTileRows - 1) / kTileRows;
+  // Eight stripes of tiles (each with its working planes): tiles differ in cost with the views
+  // covering them, and stripes of a few tiles keep both cores busy to the end.
   cv::parallel_for_(
       cv::Range(0, tiles),
       [&](const cv::Range& r) {
@@ -172,7 +174,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
         for (int i = r.start; i < r.end; ++i)
           ProcessRows(f, options_.surprise, i * kTileRows, std::min(rows, (i + 1) * kTileRows), t);
       },
-      std::min(tiles, 4));
+      std::min(tiles, 8));
 
   AppearanceProducts out;
   out.valid = prior.valid;
