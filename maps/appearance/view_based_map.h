@@ -96,7 +96,7 @@ class ViewBasedMap {
   views::DepthMeshWarper warper_;
   std::vector<views::WarpField> warps_;  // reused from frame to frame
   // Per requested plane, the blend's images, shared with the Prediction handed out and written
-  // in place next frame when the caller has let it go (BlendPlanes): fresh megabytes every frame
+  // in place next frame when the caller has let it go (PrepareBlend): fresh megabytes every frame
   // cost a tenth of a seven-view frame in page faults.
   std::vector<views::BlendResult> blended_;
   // Per requested plane, the selected views' planes still to be blended (PredictDeferred).

@@ -699,10 +699,11 @@ void PrepareBlend(const std::vector<WarpField>& warps, const std::vector<cv::Mat
 
 int BlendRows(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
               const BlendOptions& o, const cv::Range& rows, BlendResult& result) {
-  const bool prepared = !warps.empty() && !planes.empty() &&
-                        result.value.size() == warps[0].map.size() &&
+  CheckInput(warps, planes, o);
+  const bool prepared = result.value.size() == warps[0].map.size() &&
                         result.value.type() == CV_32FC(planes[0].channels()) &&
-                        result.valid.size() == result.value.size();
+                        result.valid.size() == result.value.size() &&
+                        result.valid.type() == CV_8UC1;
   if (!prepared || rows.start < 0 || rows.end > result.value.rows || rows.start > rows.end) {
     throw std::invalid_argument("BlendRows: rows " + std::to_string(rows.start) + "–" +
                                 std::to_string(rows.end) +

@@ -221,6 +221,7 @@ TEST(ViewBlender, RowsBlendedInPartsEqualTheWholeBlend) {
   EXPECT_THROW(BlendRows(warps, planes, {}, cv::Range(8, 10), r), std::invalid_argument);
   const std::vector<cv::Mat> one_channel = {cv::Mat(20, 40, CV_32FC1), cv::Mat(20, 40, CV_32FC1)};
   EXPECT_THROW(BlendRows(warps, one_channel, {}, cv::Range(0, 2), r), std::invalid_argument);
+  EXPECT_THROW(BlendRows(warps, {planes[0]}, {}, cv::Range(0, 2), r), std::invalid_argument);
   EXPECT_EQ(BlendRows(warps, planes, {}, cv::Range(3, 3), r), 0);
 }
 
