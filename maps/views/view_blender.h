@@ -66,8 +66,8 @@ void BlendPlanes(const std::vector<WarpField>& warps, const std::vector<cv::Mat>
 /// `rows` of it on the calling thread — threads may blend different rows at once — and returns
 /// the pixels covered there. Over all rows the result equals BlendPlanes'. BlendRows throws
 /// std::invalid_argument as BlendPlanes, and for rows outside `out` or an `out` not sized for
-/// these planes; planes
-/// it must convert (neither 8-bit, half nor float, or not continuous) are converted at each call.
+/// these planes. Planes it must convert (neither 8-bit, half nor float, or not continuous) are
+/// converted at each call.
 void PrepareBlend(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
                   const BlendOptions& options, BlendResult& out);
 int BlendRows(const std::vector<WarpField>& warps, const std::vector<cv::Mat>& planes,
