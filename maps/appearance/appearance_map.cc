@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
@@ -39,7 +41,10 @@ constexpr int kChannels = AppearanceMap::kChannels, kAlpha = AppearanceMap::kAlp
 
 // A frame is processed in tiles of this many rows, on all cores: each tile's working planes
 // (about 30 of 320 floats per row) stay in cache from the blend of its prior and the colour
-// conversion through the kernel to the stored posterior.
+// conversion through the kernel to the stored posterior. The threads take one tile at a time:
+// tiles differ in cost with the views covering them, and single tiles keep both cores busy to
+// the end (seven views: median 4.43 against 4.73 ms with tiles in eight stripes; static camera
+// 0.53 against 0.57 ms, as the working planes now outlive a stripe).
 constexpr int kTileRows = 8;
 
 // One frame: what every tile reads, and the new images (handed out, or kept by the store) that
@@ -135,8 +140,29 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
 
 }  // namespace
 
+// Working planes for the tiles in progress, one set per thread at a time, kept between tiles and
+// frames so that a frame allocates none.
+struct AppearanceMap::TileWorkPool {
+  std::mutex mutex;
+  std::vector<std::unique_ptr<TileWork>> free;
+
+  std::unique_ptr<TileWork> Take() {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (free.empty()) return std::make_unique<TileWork>();
+    std::unique_ptr<TileWork> t = std::move(free.back());
+    free.pop_back();
+    return t;
+  }
+  void Give(std::unique_ptr<TileWork> t) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    free.push_back(std::move(t));
+  }
+};
+
+AppearanceMap::~AppearanceMap() = default;
+
 AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
-    : options_(options), map_(options.views) {
+    : options_(options), map_(options.views), tile_work_(std::make_unique<TileWorkPool>()) {
   options_.surprise.update.Check();
   stats::CheckNormalGamma(options_.initial_prior, "AppearanceMapOptions::initial_prior");
 }
@@ -165,16 +191,15 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     cv::Mat(rows, cols, CV_32FC3),
                     cv::Mat(rows, cols, CV_32FC1)};
   const int tiles = (rows + kTileRows - 1) / kTileRows;
-  // Eight stripes of tiles (each with its working planes): tiles differ in cost with the views
-  // covering them, and stripes of a few tiles keep both cores busy to the end.
   cv::parallel_for_(
       cv::Range(0, tiles),
       [&](const cv::Range& r) {
-        TileWork t;
+        std::unique_ptr<TileWork> t = tile_work_->Take();
         for (int i = r.start; i < r.end; ++i)
-          ProcessRows(f, options_.surprise, i * kTileRows, std::min(rows, (i + 1) * kTileRows), t);
+          ProcessRows(f, options_.surprise, i * kTileRows, std::min(rows, (i + 1) * kTileRows), *t);
+        tile_work_->Give(std::move(t));  // (not after an exception: the pool makes another)
       },
-      std::min(tiles, 8));
+      tiles);
 
   AppearanceProducts out;
   out.valid = prior.valid;

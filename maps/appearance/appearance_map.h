@@ -15,6 +15,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -42,6 +43,7 @@ struct AppearanceProducts {
 class AppearanceMap {
  public:
   explicit AppearanceMap(const AppearanceMapOptions& options = {});
+  ~AppearanceMap();
 
   /// Processes one frame: rgb CV_8UC3 (R, G, B) and depth CV_32FC1 (m) of `camera`'s size, pose
   /// T_world_cam. Throws std::invalid_argument naming the problem (sizes, types, pose); the map
@@ -66,6 +68,8 @@ class AppearanceMap {
   // writes its rows of the products and of the posterior to be stored, always new images.
   AppearanceMapOptions options_;
   ViewBasedMap map_;
+  struct TileWorkPool;  // the tiles' working planes, kept between frames
+  std::unique_ptr<TileWorkPool> tile_work_;
 };
 
 /// Throws std::invalid_argument unless rgb is CV_8UC3 and depth CV_32FC1, both of the camera's
