@@ -191,15 +191,26 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     cv::Mat(rows, cols, CV_32FC3),
                     cv::Mat(rows, cols, CV_32FC1)};
   const int tiles = (rows + kTileRows - 1) / kTileRows;
+  // Beside the tiles, when the frame was warped, one more task: the mesh plan of the frame's
+  // depth, which the view the frame becomes keeps for its next warp — a moving camera warps it
+  // next frame (a static camera never does, and is not charged for it).
+  const int plan_tasks = prior.warped ? 1 : 0;
+  views::MeshPlan plan;
   cv::parallel_for_(
-      cv::Range(0, tiles),
+      cv::Range(0, plan_tasks + tiles),
       [&](const cv::Range& r) {
         std::unique_ptr<TileWork> t = tile_work_->Take();
-        for (int i = r.start; i < r.end; ++i)
-          ProcessRows(f, options_.surprise, i * kTileRows, std::min(rows, (i + 1) * kTileRows), *t);
+        for (int i = r.start; i < r.end; ++i) {
+          if (i < plan_tasks) {
+            plan = views::MeshPlanFor(depth, options_.views.warp);
+            continue;
+          }
+          const int r0 = (i - plan_tasks) * kTileRows;
+          ProcessRows(f, options_.surprise, r0, std::min(rows, r0 + kTileRows), *t);
+        }
         tile_work_->Give(std::move(t));  // (not after an exception: the pool makes another)
       },
-      tiles);
+      plan_tasks + tiles);
 
   AppearanceProducts out;
   out.valid = prior.valid;
@@ -208,9 +219,9 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   out.expected_rgb = f.expected_rgb;
   out.uncertainty = f.uncertainty;
   // The posterior at this viewpoint goes into the map (4.3's update policy).
-  out.update =
-      map_.Update(camera, T_world_cam, f.stored_depth,
-                  {{"ab_sigma", f.stored_ab_sigma}, {"tau", f.stored_tau}}, prior.selected);
+  out.update = map_.Update(camera, T_world_cam, f.stored_depth,
+                           {{"ab_sigma", f.stored_ab_sigma}, {"tau", f.stored_tau}}, prior.selected,
+                           std::move(plan));
   return out;
 }
 

@@ -65,10 +65,13 @@ ViewBasedMap::Prediction ViewBasedMap::PredictDeferred(
   for (int j : p.selected) {
     const views::ReferenceView& v = store_.view(j);
     views::MeshPlan& plan = plans_[std::size_t(j)];
-    if (plan.skip.empty()) plan = views::MeshPlanFor(v.depth, options_.warp);  // first warp
+    if (!plan.Fits(v.depth.size(), options_.warp.planar_block, options_.warp.planar_tolerance)) {
+      plan = views::MeshPlanFor(v.depth, options_.warp);  // first warp
+    }
     sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &plan});
   }
   warper_.WarpMany(sources, camera, T_world_cam, warps_);
+  p.warped = true;
   blended_.resize(std::max(blended_.size(), names.size()));
   pending_.resize(names.size());
   for (std::size_t k = 0; k < names.size(); ++k) {
@@ -107,7 +110,8 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
 ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& camera,
                                                 const Eigen::Isometry3d& T_world_cam, cv::Mat depth,
                                                 std::map<std::string, cv::Mat> payload,
-                                                const std::vector<int>& selected) {
+                                                const std::vector<int>& selected,
+                                                views::MeshPlan plan) {
   double nearest = std::numeric_limits<double>::infinity();
   int nearest_view = -1;
   for (int j = 0; j < store_.size(); ++j) {
@@ -133,11 +137,11 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& came
     r.added = true;
     r.view = store_.Add(std::move(v));
     anchors_.push_back(T_world_cam);
-    plans_.emplace_back();  // made when first warped
+    plans_.push_back(std::move(plan));
   } else {
     r.view = selected.front();
     store_.Replace(r.view, std::move(v));
-    plans_[std::size_t(r.view)] = views::MeshPlan();  // the depth changed
+    plans_[std::size_t(r.view)] = std::move(plan);  // the depth changed
   }
   return r;
 }

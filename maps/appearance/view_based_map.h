@@ -50,6 +50,7 @@ class ViewBasedMap {
     /// possibly): read them, never write into them.
     std::vector<cv::Mat> value;
     cv::Mat valid;  ///< CV_8UC1
+    bool warped = false;  ///< views were warped (not an empty map, not a static camera)
   };
   /// The planes `names` (with their channel counts) predicted at `T_world_cam`: one warp per
   /// selected view serves every plane. An empty map predicts nothing: all invalid.
@@ -73,10 +74,12 @@ class ViewBasedMap {
   };
   /// Applies the update policy with the frame's payload planes, depth and pose. The map keeps
   /// `depth` and the payload planes as given, sharing their buffers: pass images nobody writes to
-  /// afterwards (a copy of a caller's depth, made where it is cheapest).
+  /// afterwards (a copy of a caller's depth, made where it is cheapest). `plan`: the mesh plan of
+  /// `depth` (views::MeshPlanFor with the options' warp) if the caller made one, beside other
+  /// work; otherwise (or if it was made for other options) it is made at the view's next warp.
   UpdateResult Update(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                       cv::Mat depth, std::map<std::string, cv::Mat> payload,
-                      const std::vector<int>& selected);
+                      const std::vector<int>& selected, views::MeshPlan plan = {});
 
   const views::ReferenceViewStore& store() const { return store_; }
   /// The pose of each view when it was created (same order as the store).
@@ -90,8 +93,8 @@ class ViewBasedMap {
   views::ReferenceViewStore store_;
   std::vector<Eigen::Isometry3d> anchors_;  // pose of each view when it was created
   // Per view, its mesh plan for the warper (mesh_plan.h; a byte per pixel): made when a view is
-  // loaded or first warped, dropped when it is replaced (a static camera replaces its view every
-  // frame and never warps it).
+  // loaded, given with it by Update, or else made at its first warp (a static camera replaces
+  // its view every frame and never warps it).
   std::vector<views::MeshPlan> plans_;
   views::DepthMeshWarper warper_;
   std::vector<views::WarpField> warps_;  // reused from frame to frame

@@ -32,6 +32,7 @@ TEST(ViewBasedMap, AStaticCameraReadsItsViewsOwnPlanes) {
   EXPECT_EQ(p.value[0].data, map.store().view(0).planes.at("p").data) << "shared, not copied";
   EXPECT_EQ(p.value[0].type(), CV_16FC3);
   EXPECT_EQ(cv::countNonZero(p.valid), 32 * 24);
+  EXPECT_FALSE(p.warped);
 }
 
 TEST(ViewBasedMap, APredictionNeverWritesIntoAViewsPlanes) {
@@ -89,6 +90,30 @@ TEST(ViewBasedMap, ADeferredPredictionBlendedRowsAtATimeEqualsPredict) {
   EXPECT_EQ(at_view.value[1].data, map.store().view(1).planes.at("q").data);
   map.BlendRows(cv::Range(0, 24));  // a no-op
   EXPECT_EQ(cv::countNonZero(at_view.valid), 32 * 24);
+}
+
+TEST(ViewBasedMap, AViewKeepsThePlanGivenWithItUnlessMadeForOtherOptions) {
+  // The plan decides which quads a warp draws. A wall's depth given with the plan of a depth
+  // without surface draws nothing — the plan is kept and used; the same plan made with other
+  // block options is made anew from the wall, which then covers the frame.
+  const Frame f;
+  const cv::Mat no_surface(24, 32, CV_32FC1, cv::Scalar(0.0f));
+  const views::WarpOptions map_warp = ViewBasedMapOptions{}.warp;
+  for (const int block : {map_warp.planar_block, map_warp.planar_block / 2}) {
+    ViewBasedMap map;
+    views::WarpOptions plan_options = map_warp;
+    plan_options.planar_block = block;
+    map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {},
+               views::MeshPlanFor(no_surface, plan_options));
+    const ViewBasedMap::Prediction p = map.Predict(kCamera, At(0.02), {{"p", 3}});  // warped
+    ASSERT_EQ(p.selected, std::vector<int>{0});
+    EXPECT_TRUE(p.warped);
+    if (block == map_warp.planar_block) {
+      EXPECT_EQ(cv::countNonZero(p.valid), 0) << "the plan given was not used";
+    } else {
+      EXPECT_GT(cv::countNonZero(p.valid), 32 * 20) << "a plan for other options was used";
+    }
+  }
 }
 
 TEST(ViewBasedMap, FarFramesAddViewsNearOnesReplaceTheSelected) {
