@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "maps/stats/lanes.h"
+#include "maps/stats/with_count.h"
 
 namespace novelty::appearance {
 
@@ -204,16 +205,8 @@ void MergeRowToHalves(const float* const* in, int cols, uint16_t* out) {
 // The row function for a channel count: compiled for the counts the map uses, else generic.
 template <class In>
 auto SplitRowFor(int channels) {
-  switch (channels) {
-    case 1:
-      return &SplitRow<1, In>;
-    case 3:
-      return &SplitRow<3, In>;
-    case 7:
-      return &SplitRow<7, In>;
-    default:
-      return &SplitRow<0, In>;
-  }
+  return stats::WithCount<0, 1, 3, 7>(channels,
+                                      [](auto n) { return &SplitRow<decltype(n)::value, In>; });
 }
 // MergeRowToHalves where rows of that channel count are grouped, else null.
 auto MergeRowToHalvesFor(int channels) {
@@ -225,16 +218,8 @@ auto MergeRowToHalvesFor(int channels) {
   return Row(nullptr);
 }
 auto MergeRowFor(int channels) {
-  switch (channels) {
-    case 1:
-      return &MergeRow<1>;
-    case 3:
-      return &MergeRow<3>;
-    case 7:
-      return &MergeRow<7>;
-    default:
-      return &MergeRow<0>;
-  }
+  return stats::WithCount<0, 1, 3, 7>(channels,
+                                      [](auto n) { return &MergeRow<decltype(n)::value>; });
 }
 
 template <class In>

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "maps/stats/lanes.h"
+#include "maps/stats/with_count.h"
 
 namespace novelty::stats {
 
@@ -139,16 +140,7 @@ __attribute__((flatten)) void ProcessPacket(std::size_t i, const ChannelPlanes& 
 // ProcessPacket compiled for each channel count (1 to kMaxChannels).
 auto PacketKernelFor(int channels) {
   static_assert(kMaxChannels == 4);
-  switch (channels) {
-    case 1:
-      return &ProcessPacket<1>;
-    case 2:
-      return &ProcessPacket<2>;
-    case 3:
-      return &ProcessPacket<3>;
-    default:
-      return &ProcessPacket<4>;
-  }
+  return WithCount<4, 1, 2, 3>(channels, [](auto n) { return &ProcessPacket<decltype(n)::value>; });
 }
 
 void CheckChannels(const ChannelPlanes& c) {

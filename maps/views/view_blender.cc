@@ -12,6 +12,7 @@
 #include <string>
 
 #include "maps/stats/lanes.h"
+#include "maps/stats/with_count.h"
 #include "maps/views/row_windows.h"
 
 namespace novelty::views {
@@ -561,16 +562,8 @@ inline int BlendPixels(const std::vector<const WarpField*>& warps, const std::ve
 template <class Plane>
 auto GroupKernelFor(const Plane& p) {
   if constexpr (std::is_same_v<Plane, BytePlane>) {
-    switch (p.channels) {
-      case 1:
-        return &BlendPixels<F16, Plane, 1>;
-      case 2:
-        return &BlendPixels<F16, Plane, 2>;
-      case 3:
-        return &BlendPixels<F16, Plane, 3>;
-      default:
-        return &BlendPixels<F16, Plane, 4>;
-    }
+    return stats::WithCount<4, 1, 2, 3>(
+        p.channels, [](auto n) { return &BlendPixels<F16, Plane, decltype(n)::value>; });
   }
   return &BlendPixels<F16, Plane>;
 }
