@@ -102,7 +102,9 @@ class ViewBasedMap {
   // in place next frame when the caller has let it go (PrepareBlend): fresh megabytes every frame
   // cost a tenth of a seven-view frame in page faults.
   std::vector<views::BlendResult> blended_;
-  // Per requested plane, the selected views' planes still to be blended (PredictDeferred).
+  // Per requested plane, the selected views' planes still to be blended (PredictDeferred). Held
+  // until the next prediction, so a view that Update replaces keeps its old planes (2 MB for the
+  // appearance map) one frame longer.
   std::vector<std::vector<cv::Mat>> pending_;
 };
 
