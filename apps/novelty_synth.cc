@@ -12,9 +12,9 @@
 // other frames (fig. 3.6-3.7): OUTDIR/NNNNNN.png and OUTDIR/frames.csv with, per frame, the time
 // the synthesis took, the views selected, the PSNR against the real frame and the coverage.
 //
-// Blending defaults (depth tolerance 0.03, angle power 10000) are the best measured on ICL-NUIM
-// frames 1,4,5 → 2 (32.8 dB against 31.4 dB for the thesis's plain average, which
-// --depth-tolerance 0 --angle-power 0 selects).
+// Blending defaults are views::BlendOptions' (see there for how they were chosen); the thesis's
+// plain average is --depth-tolerance 0 --angle-power 0. PSNR is always printed with the coverage
+// it was measured over.
 #include <tclap/CmdLine.h>
 
 #include <chrono>
@@ -32,6 +32,7 @@
 #include "maps/views/reference_view_store.h"
 #include "maps/views/view_blender.h"
 #include "maps/views/view_selection.h"
+#include "maps/views/view_synthesis.h"
 #include "sensors/dataset/rgbd_folder_reader.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 
@@ -53,35 +54,9 @@ std::vector<int> ParseList(const std::string& text) {
   return out;
 }
 
-// Warps and blends the "rgb" planes of `refs` into the virtual view; returns the 8-bit image
-// (uncovered black) and the validity mask. `plans`: the refs' mesh plans where a caller keeps
-// them (reference views warped frame after frame), else empty.
-std::pair<cv::Mat, cv::Mat> Synthesise(views::DepthMeshWarper& warper,
-                                       const std::vector<const views::ReferenceView*>& refs,
-                                       const std::vector<const views::MeshPlan*>& plans,
-                                       const views::PinholeCamera& cam,
-                                       const Eigen::Isometry3d& pose,
-                                       const views::BlendOptions& blend,
-                                       std::vector<views::WarpField>& warps) {
-  std::vector<views::SourceView> sources;
-  std::vector<cv::Mat> planes;
-  for (std::size_t k = 0; k < refs.size(); ++k) {
-    const views::ReferenceView* r = refs[k];
-    sources.push_back({&r->camera, &r->T_world_cam, &r->depth, plans.empty() ? nullptr : plans[k]});
-    planes.push_back(r->planes.at("rgb"));
-  }
-  warper.WarpMany(sources, cam, pose, warps);
-  const views::BlendResult b = views::BlendPlanes(warps, planes, blend);
-  cv::Mat value = b.value.clone();
-  value.setTo(cv::Scalar::all(0), ~b.valid);
-  cv::Mat rgb8;
-  value.convertTo(rgb8, CV_8UC3);  // rounds and saturates
-  return {rgb8, b.valid};
-}
-
 int FolderMode(const std::string& dir, const views::PinholeCamera& intrinsics, double depth_scale,
                int target, const std::string& sources, const std::string& out,
-               views::DepthMeshWarper& warper, const views::BlendOptions& blend) {
+               views::DepthMeshWarper& warper, const views::SynthesisOptions& options) {
   views::PinholeCamera cam = intrinsics;
   const std::string probe_path = dir + "/color/" + std::to_string(target) + ".png";
   const cv::Mat probe = cv::imread(probe_path);
@@ -94,17 +69,16 @@ int FolderMode(const std::string& dir, const views::PinholeCamera& intrinsics, d
   for (int s : ParseList(sources)) refs.push_back(reader.ReadView(s));
   std::vector<const views::ReferenceView*> ptrs;
   for (const auto& r : refs) ptrs.push_back(&r);
-  std::vector<views::WarpField> warps;
-  const auto [rgb8, valid] = Synthesise(warper, ptrs, {}, cam, truth.T_world_cam, blend, warps);
-  eval::WriteRgbImage(out, rgb8);
-  std::printf("PSNR=%.2f coverage=%.4f\n", eval::Psnr(rgb8, truth.rgb, valid),
-              double(cv::countNonZero(valid)) / (cam.width * cam.height));
+  const views::SynthesisResult r =
+      views::SynthesiseView(warper, ptrs, {}, {}, cam, truth.T_world_cam, options);
+  eval::WriteRgbImage(out, r.rgb);
+  std::printf("PSNR=%.2f coverage=%.4f\n", eval::Psnr(r.rgb, truth.rgb, r.valid), r.coverage);
   return 0;
 }
 
 int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int every,
                const std::string& out_dir, views::DepthMeshWarper& warper,
-               const views::BlendOptions& blend) {
+               const views::SynthesisOptions& options) {
   if (every < 2) throw std::invalid_argument("--every must be >= 2");
   const auto poses = sensors::LoadGroundTruthPoses(truth_dir + "/poses.csv");
   sensors::RawlogFrameReader reader(rawlog);
@@ -142,29 +116,33 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
   std::vector<views::MeshPlan> plans;
   for (int j = 0; j < store.size(); ++j)
     plans.push_back(views::MeshPlanFor(store.view(j).depth, warper.options()));
-  std::vector<views::WarpField> warps;
-  double psnr_sum = 0.0;
+  const views::ViewSelectionOptions selection;
+  double psnr_sum = 0.0, coverage_sum = 0.0;
   int n = 0;
   for (const sensors::Frame& f : path) {
     const Eigen::Isometry3d& pose = poses.at(f.index);
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<const views::ReferenceView*> refs;
     std::vector<const views::MeshPlan*> ref_plans;
-    for (int j : views::SelectViews(ref_poses, f.camera, pose)) {
+    const views::ViewSelection selected =
+        views::SelectViewsForRays(ref_poses, f.camera, pose, selection);
+    for (int j : selected.views) {
       refs.push_back(&store.view(j));
       ref_plans.push_back(&plans[std::size_t(j)]);
     }
     if (refs.empty()) continue;
-    const auto [rgb8, valid] = Synthesise(warper, refs, ref_plans, f.camera, pose, blend, warps);
+    const views::SynthesisResult r = views::SynthesiseView(
+        warper, refs, ref_plans, selected.Weights(selection), f.camera, pose, options);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    const double psnr = eval::Psnr(rgb8, f.rgb, valid);
+    const double psnr = eval::Psnr(r.rgb, f.rgb, r.valid);
     char name[32];
     std::snprintf(name, sizeof name, "/%06d.png", f.index);
-    eval::WriteRgbImage(out_dir + name, rgb8);
+    eval::WriteRgbImage(out_dir + name, r.rgb);
     csv << f.index << "," << f.time - t_start << "," << ms << "," << refs.size() << "," << psnr
-        << "," << double(cv::countNonZero(valid)) / (f.camera.width * f.camera.height) << "\n";
+        << "," << r.coverage << "\n";
     psnr_sum += psnr;
+    coverage_sum += r.coverage;
     ++n;
     if (n % 25 == 0 || n == int(path.size())) {
       std::fprintf(stderr, "\r[novelty-synth] %d/%zu virtual views", n, path.size());
@@ -172,9 +150,10 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
   }
   std::fprintf(stderr, "\n");
   std::printf(
-      "%d virtual views from %d reference views, mean PSNR=%.2f dB, %d frames skipped\n"
-      "  frames: %s/frames.csv\n",
-      n, store.size(), n ? psnr_sum / n : 0.0, reader.skipped(), out_dir.c_str());
+      "%d virtual views from %d reference views, mean PSNR=%.2f dB over covered pixels, "
+      "mean coverage=%.4f, %d frames skipped\n  frames: %s/frames.csv\n",
+      n, store.size(), n ? psnr_sum / n : 0.0, n ? coverage_sum / n : 0.0, reader.skipped(),
+      out_dir.c_str());
   return 0;
 }
 
@@ -203,25 +182,27 @@ int main(int argc, char** argv) {
                              false, 4, "K", cmd);
   TCLAP::ValueArg<std::string> out("", "out", "Output PNG (folder mode) or folder (rawlog mode)",
                                    true, "", "OUT", cmd);
-  TCLAP::ValueArg<double> jump("", "max-depth-jump",
-                               "Relative depth jump that cuts the mesh (default 0.05)", false, 0.05,
-                               "J", cmd);
+  // Defaults are the library's (views::SynthesisOptions), which the appearance map's blend shares.
+  const views::SynthesisOptions defaults;
+  TCLAP::ValueArg<double> jump("", "max-depth-jump", "Relative depth jump that cuts the mesh",
+                               false, defaults.warp.max_relative_depth_jump, "J", cmd);
   TCLAP::ValueArg<double> tolerance("", "depth-tolerance",
                                     "Blend only views within this relative depth of the nearest "
-                                    "(0 = every view, the thesis's rule; default 0.03)",
-                                    false, 0.03, "T", cmd);
+                                    "(0 = every view, the thesis's rule)",
+                                    false, defaults.blend.depth_tolerance, "T", cmd);
   TCLAP::ValueArg<double> power("", "resolution-power",
-                                "Weight views by (z_virtual/z_source)^P (0 = off, the default)",
-                                false, 0.0, "P", cmd);
+                                "Weight views by (z_virtual/z_source)^P (0 = off)", false,
+                                defaults.blend.resolution_power, "P", cmd);
   TCLAP::ValueArg<double> angle("", "angle-power",
-                                "Weight views by cos(angle between viewing rays)^A; 10000 lets "
-                                "the most similar direction dominate (0 = off)",
-                                false, 10000.0, "A", cmd);
+                                "Weight views by (cos(angle between viewing rays) / that of the "
+                                "pixel's best view)^A (0 = off, the thesis's average)",
+                                false, defaults.blend.angle_power, "A", cmd);
   try {
     cmd.parse(argc, argv);
-    views::WarpOptions wo;
+    views::SynthesisOptions options;
+    views::WarpOptions& wo = options.warp;
     wo.max_relative_depth_jump = jump.getValue();
-    views::BlendOptions bo;
+    views::BlendOptions& bo = options.blend;
     bo.depth_tolerance = tolerance.getValue();
     bo.resolution_power = power.getValue();
     bo.angle_power = angle.getValue();
@@ -230,7 +211,7 @@ int main(int argc, char** argv) {
     if (rawlog.isSet()) {
       if (!truth.isSet()) throw std::invalid_argument("--rawlog needs --groundtruth DIR");
       return RawlogMode(rawlog.getValue(), truth.getValue(), every.getValue(), out.getValue(),
-                        warper, bo);
+                        warper, options);
     }
     if (!frames.isSet() || !fx.isSet() || !fy.isSet() || !cx.isSet() || !cy.isSet() ||
         !target.isSet() || !sources.isSet()) {
@@ -244,7 +225,7 @@ int main(int argc, char** argv) {
     cam.cx = cx.getValue();
     cam.cy = cy.getValue();
     return FolderMode(frames.getValue(), cam, scale.getValue(), target.getValue(),
-                      sources.getValue(), out.getValue(), warper, bo);
+                      sources.getValue(), out.getValue(), warper, options);
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-synth: %s (%s)\n", e.error().c_str(), e.argId().c_str());
     return 2;

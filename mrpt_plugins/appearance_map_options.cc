@@ -44,6 +44,7 @@ MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::
   keys["xi"] = number(&u.xi);
   keys["sigma_min"] = number(&u.sigma_min);
   keys["sigma_max"] = number(&u.sigma_max);
+  keys["min_variance"] = number(&u.min_variance);
   keys["initial_alpha"] = number(&init.alpha);
   keys["initial_beta"] = number(&init.beta);
   keys["initial_tau"] = number(&init.tau);
@@ -54,6 +55,8 @@ MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::
   keys["new_view_angle_deg"] = number(&angle_deg);
   keys["max_relative_depth_jump"] = number(&v.warp.max_relative_depth_jump);
   keys["depth_tolerance"] = number(&v.blend.depth_tolerance);
+  keys["angle_power"] = number(&v.blend.angle_power);
+  keys["weight_by_rays"] = flag(&v.selection.weight_by_rays);
   DepthSourceOptions& d = result.depth;
   keys["depth_source"] = [&d](const std::string& text) {
     if (text == "rgbd")
@@ -90,6 +93,8 @@ MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::
   d.stereo.sweep.window = int(window);
   try {
     u.Check();
+    if (!(v.blend.depth_tolerance >= 0.0 && v.blend.angle_power >= 0.0))
+      throw std::invalid_argument("depth_tolerance and angle_power must be >= 0");
     stats::CheckNormalGamma(init, "initial prior");
     const auto& sweep = d.stereo.sweep;
     if (!(sweep.near > 0 && sweep.far > sweep.near) || sweep.hypotheses < 2 ||

@@ -43,6 +43,21 @@ void VisitOptions(Archive& a, appearance::AppearanceMapOptions& o, Double d, Boo
   d(a, o.views.blend.depth_tolerance);
 }
 
+// Options added in version 1 (after the version-0 ones).
+template <class Archive, class Double, class Bool>
+void VisitOptionsV1(Archive& a, appearance::AppearanceMapOptions& o, Double d, Bool b) {
+  d(a, o.surprise.update.min_variance);
+  d(a, o.views.blend.angle_power);
+  b(a, o.views.selection.weight_by_rays);
+}
+
+// A version-0 map was made without these: no variance floor, the plain average of distinct views.
+void SetVersion0Behaviour(appearance::AppearanceMapOptions& o) {
+  o.surprise.update.min_variance = 0.0;
+  o.views.blend.angle_power = 0.0;
+  o.views.selection.weight_by_rays = false;
+}
+
 // Mean Σβ of a view (its "ab_sigma" plane, channels 1…3), for the frustum colour.
 double MeanUncertainty(const views::ReferenceView& v) {
   cv::Mat p;
@@ -73,21 +88,29 @@ void CAppearanceMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const 
 }
 
 uint8_t CAppearanceMap::serializeGetVersion() const {
-  return 0;
+  return 1;
 }
 
 void CAppearanceMap::serializeTo(mrpt::serialization::CArchive& out) const {
   appearance::AppearanceMapOptions o = map_->options();
-  VisitOptions(
-      out, o, [](auto& a, double& v) { a << v; }, [](auto& a, bool& v) { a << v; });
+  const auto write_double = [](auto& a, double& v) { a << v; };
+  const auto write_bool = [](auto& a, bool& v) { a << v; };
+  VisitOptions(out, o, write_double, write_bool);
+  VisitOptionsV1(out, o, write_double, write_bool);
   WriteViewMap(out, map_->view_map());
 }
 
 void CAppearanceMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-  if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+  if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
   appearance::AppearanceMapOptions o;
-  VisitOptions(
-      in, o, [](auto& a, double& v) { a >> v; }, [](auto& a, bool& v) { a >> v; });
+  const auto read_double = [](auto& a, double& v) { a >> v; };
+  const auto read_bool = [](auto& a, bool& v) { a >> v; };
+  VisitOptions(in, o, read_double, read_bool);
+  if (version >= 1) {
+    VisitOptionsV1(in, o, read_double, read_bool);
+  } else {
+    SetVersion0Behaviour(o);
+  }
   auto map = std::make_unique<appearance::AppearanceMap>(o);
   ReadViewMap(in, map->view_map());
   ReplaceMap(std::move(map));  // only now: a failure above leaves the map as it was

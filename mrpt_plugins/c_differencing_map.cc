@@ -31,21 +31,27 @@ void CDifferencingMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) cons
 }
 
 uint8_t CDifferencingMap::serializeGetVersion() const {
-  return 0;
+  return 1;  // 1: the blend's angle_power and the view selection's weight_by_rays
 }
 
 void CDifferencingMap::serializeTo(mrpt::serialization::CArchive& out) const {
   const appearance::ViewBasedMapOptions& o = map_->options();
   out << o.new_view_distance << o.new_view_angle << o.warp.max_relative_depth_jump
-      << o.blend.depth_tolerance;
+      << o.blend.depth_tolerance << o.blend.angle_power << o.selection.weight_by_rays;
   WriteViewMap(out, map_->view_map());
 }
 
 void CDifferencingMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-  if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+  if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
   appearance::ViewBasedMapOptions o;
   in >> o.new_view_distance >> o.new_view_angle >> o.warp.max_relative_depth_jump >>
       o.blend.depth_tolerance;
+  if (version >= 1) {
+    in >> o.blend.angle_power >> o.selection.weight_by_rays;
+  } else {  // made as the plain average of distinct views
+    o.blend.angle_power = 0.0;
+    o.selection.weight_by_rays = false;
+  }
   auto map = std::make_unique<appearance::DifferencingMap>(o);
   ReadViewMap(in, map->view_map());
   ReplaceMap(std::move(map));  // only now: a failure above leaves the map as it was

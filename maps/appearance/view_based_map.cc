@@ -40,7 +40,9 @@ ViewBasedMap::Prediction ViewBasedMap::PredictDeferred(
     const std::vector<std::pair<std::string, int>>& names) {
   pending_.clear();
   Prediction p;
-  p.selected = views::SelectViews(store_.Poses(), camera, T_world_cam, options_.selection);
+  const views::ViewSelection selection =
+      views::SelectViewsForRays(store_.Poses(), camera, T_world_cam, options_.selection);
+  p.selected = selection.views;
   p.value.resize(names.size());
   if (p.selected.empty()) {
     for (std::size_t k = 0; k < names.size(); ++k) {
@@ -72,12 +74,14 @@ ViewBasedMap::Prediction ViewBasedMap::PredictDeferred(
   }
   warper_.WarpMany(sources, camera, T_world_cam, warps_);
   p.warped = true;
+  blend_ = options_.blend;
+  if (blend_.weights.empty()) blend_.weights = selection.Weights(options_.selection);
   blended_.resize(std::max(blended_.size(), names.size()));
   pending_.resize(names.size());
   for (std::size_t k = 0; k < names.size(); ++k) {
     for (int j : p.selected) pending_[k].push_back(store_.view(j).planes.at(names[k].first));
     views::BlendResult& b = blended_[k];  // last frame's images, unless a caller still holds them
-    views::PrepareBlend(warps_, pending_[k], options_.blend, b);
+    views::PrepareBlend(warps_, pending_[k], blend_, b);
     p.value[k] = b.value;
     p.valid = b.valid;  // the same for every plane: it depends on the warps only
   }
@@ -86,7 +90,7 @@ ViewBasedMap::Prediction ViewBasedMap::PredictDeferred(
 
 void ViewBasedMap::BlendRows(const cv::Range& rows) {
   for (std::size_t k = 0; k < pending_.size(); ++k) {
-    views::BlendRows(warps_, pending_[k], options_.blend, rows, blended_[k]);
+    views::BlendRows(warps_, pending_[k], blend_, rows, blended_[k]);
   }
 }
 

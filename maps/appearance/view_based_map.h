@@ -36,7 +36,7 @@ struct ViewBasedMapOptions {
   double new_view_angle = 5.0 * M_PI / 180.0;
   views::ViewSelectionOptions selection;
   views::WarpOptions warp;
-  views::BlendOptions blend;  ///< default: the thesis's plain average
+  views::BlendOptions blend;  ///< the blend view synthesis uses (view_blender.h defaults)
 };
 
 class ViewBasedMap {
@@ -98,6 +98,8 @@ class ViewBasedMap {
   std::vector<views::MeshPlan> plans_;
   views::DepthMeshWarper warper_;
   std::vector<views::WarpField> warps_;  // reused from frame to frame
+  // The last prediction's blend: the options' with the selected views' weights (ray counts).
+  views::BlendOptions blend_;
   // Per requested plane, the blend's images, shared with the Prediction handed out and written
   // in place next frame when the caller has let it go (PrepareBlend): fresh megabytes every frame
   // cost a tenth of a seven-view frame in page faults.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace novelty::eval {
 
@@ -16,8 +17,11 @@ Selectivity AttentionalSelectivity(const cv::Mat& map, const cv::Mat& region,
   }
   const int b = o.block_size;
   const int bx = map.cols / b, by = map.rows / b;
-  double region_sum = 0.0, region_max = 0.0, outside_max = 0.0;
-  Selectivity s;
+  struct Block {
+    double mean;
+    int in_region;  // pixels of the block in the mask
+  };
+  std::vector<Block> blocks;
   for (int j = o.border_blocks; j < by - o.border_blocks; ++j) {
     for (int i = o.border_blocks; i < bx - o.border_blocks; ++i) {
       double sum = 0.0;
@@ -31,16 +35,26 @@ Selectivity AttentionalSelectivity(const cv::Mat& map, const cv::Mat& region,
           ++valid;
         }
       }
-      if (valid == 0) continue;
-      const double mean = sum / valid;
-      if (2 * in_region >= b * b) {
-        region_sum += mean;
-        region_max = std::max(region_max, mean);
-        ++s.region_blocks;
-      } else {
-        outside_max = std::max(outside_max, mean);
-        ++s.outside_blocks;
-      }
+      if (valid > 0) blocks.push_back({sum / valid, in_region});
+    }
+  }
+  const int whole = b * b;
+  const bool has_whole_block = std::any_of(blocks.begin(), blocks.end(),
+                                           [&](const Block& k) { return k.in_region == whole; });
+  // The least share of a block in the mask that makes it a region block.
+  const int least = has_whole_block ? whole : (whole + 1) / 2;
+  double region_sum = 0.0, region_max = 0.0, outside_max = 0.0;
+  Selectivity s;
+  for (const Block& k : blocks) {
+    if (k.in_region >= least) {
+      region_sum += k.mean;
+      region_max = std::max(region_max, k.mean);
+      ++s.region_blocks;
+    } else if (k.in_region == 0) {
+      outside_max = std::max(outside_max, k.mean);
+      ++s.outside_blocks;
+    } else {
+      ++s.border_blocks;
     }
   }
   if (s.region_blocks == 0 || s.outside_blocks == 0) {

@@ -3,9 +3,12 @@
 //   PAS = 10 log10( max of the region's block values  / max block value outside )  (eq. 4.25)
 // Block values are the means of 4×4 blocks. Blocks within `border_blocks` of the image border are
 // left out (the thesis excludes them because predictions there often have no data; the width is
-// not given — 2 blocks = 8 pixels is the default here). A block belongs to the region when at
-// least half of its pixels are in the mask; NaN pixels (no prediction) are ignored in a block's
-// mean and a block with no valid pixel is left out.
+// not given — 2 blocks = 8 pixels is the default here). A block belongs to the region when all
+// its pixels are in the mask and to the outside when none is; blocks on the region's border are
+// neither, so the result does not depend on where the object falls in the block grid (counting
+// them either way mixes the object's values with the background's). A region too small to hold
+// a whole block is represented by its blocks at least half in the mask. NaN pixels (no
+// prediction) are ignored in a block's mean and a block with no valid pixel is left out.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -22,6 +25,7 @@ struct Selectivity {
   double pas_db = 0.0;  ///< eq. 4.25
   int region_blocks = 0;
   int outside_blocks = 0;
+  int border_blocks = 0;  ///< blocks partly in the region: neither region nor outside
 };
 
 /// map: CV_32FC1 values ≥ 0; region: CV_8UC1 mask (non-zero = region) of the same size.

@@ -55,6 +55,11 @@ void ForgettingUpdateOptions::Check() const {
     throw std::invalid_argument("ForgettingUpdateOptions: xi must be finite and >= 0, got " +
                                 std::to_string(xi));
   }
+  if (!(std::isfinite(min_variance) && min_variance >= 0.0)) {
+    throw std::invalid_argument(
+        "ForgettingUpdateOptions: min_variance must be finite and >= 0, got " +
+        std::to_string(min_variance));
+  }
   if (!(sigma_min > 0.0 && sigma_max >= sigma_min && std::isfinite(sigma_max))) {
     throw std::invalid_argument(
         "ForgettingUpdateOptions: need 0 < sigma_min <= sigma_max < inf, got sigma_min=" +

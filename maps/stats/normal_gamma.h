@@ -54,6 +54,13 @@ struct ForgettingUpdateOptions {
   double sigma_min = 0.01;
   /// σ_max of eq. 4.8: the thesis's initial σ = 5, the least certain state a pixel can be in.
   double sigma_max = 5.0;
+  /// Floor of the variance β/α the posterior implies (units: channel², 0…255 scale): β ≥ α·v.
+  /// Not in the thesis. With exactly constant input (saturated or clipped pixels) eq. 4.11 shrinks
+  /// β as fⁿ until it underflows (NaN in float, a stuck 1e-7 in half floats, after which a change
+  /// of one level costs ~38 of surprise per channel). An 8-bit camera cannot tell values closer
+  /// than one level apart: rounding to a level is uniform noise of variance 1/12, the default.
+  /// 0 = the thesis's update.
+  double min_variance = 1.0 / 12.0;
 
   /// Throws std::invalid_argument naming the offending option.
   void Check() const;
@@ -90,6 +97,7 @@ NormalGammaT<T> UpdateWithSigma(const NormalGammaT<T>& prior, const T& x,
   NormalGammaT<T> post;
   post.alpha = f * prior.alpha + S(0.5);                 // eq. 4.10
   post.beta = f * prior.beta + S(0.5) * d * d * weight;  // eq. 4.11
+  post.beta = Max(post.beta, T(post.alpha * S(o.min_variance)));  // the quantisation floor
   post.tau = prior.tau + shift;                          // eq. 4.12
   post.sigma = sigma_p * weight;                         // eq. 4.13
   if (tau_shift) *tau_shift = shift;

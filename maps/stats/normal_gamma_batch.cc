@@ -38,8 +38,10 @@ void ProcessOne(std::size_t i, const ChannelPlanes& c, float* surprise,
     p0[k] = {T(q.alpha[i]), T(q.beta[i]), T(q.tau[i]), T(q.sigma[i])};
     p[k] = valid ? UpdateWithForgetting(p0[k], T(c.x[k][i]), o.update, &shift[k]) : p0[k];
   }
-  const T kl = valid ? NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl) +
-                           NormalGammaKLOtherTerms(p, p0, shift, channels)
+  // eq. 4.21: every channel's KL has its own α terms (α is shared, its terms are not).
+  const T kl = valid ? std::max(T(0), T(channels) * NormalGammaKLAlphaTerms(p[0].alpha,
+                                                                            p0[0].alpha, o.kl) +
+                                           NormalGammaKLOtherTerms(p, p0, shift, channels))
                      : T(0);
   for (int k = 0; k < channels; ++k) {
     const NormalGammaPlanes& q = c.posterior[std::size_t(k)];
@@ -55,7 +57,7 @@ void ProcessOne(std::size_t i, const ChannelPlanes& c, float* surprise,
 // The KL's α terms depend on the prior α alone (the update of α does not see the data,
 // eq. 4.10), and whole frames share one α where every pixel was updated alike: the last packet's
 // terms serve the next when its α all agree with them — computed the same way, so the
-// surprise is the same to the bit.
+// surprise is the same to the bit. `terms` holds them summed over the channels (eq. 4.21).
 struct AlphaTermsCache {
   float prior_alpha = -1.0f;  // no α is negative: nothing cached yet
   Packet terms;
@@ -110,11 +112,14 @@ __attribute__((flatten)) void ProcessPacket(std::size_t i, const ChannelPlanes& 
   if (all_equal(a0_part, [&](int) { return L::F16{} + cache.prior_alpha; })) {
     kl += cache.terms;
   } else {
-    const Packet terms = NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl);
+    // eq. 4.21: each channel's KL holds the α terms once, though the channels share α.
+    const Packet terms = float(channels) * NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl);
     kl += terms;
     const float first = a0[0];
     if (all_equal(a0_part, [&](int) { return L::F16{} + first; })) cache = {first, terms};
   }
+  // KL ≥ 0 (Gibbs); float rounding of a near-zero sum must not make it negative.
+  kl = kl.max(0.0f);
   PacketMap s(surprise + i);
   for (int k = 0; k < channels; ++k) {
     const NormalGammaPlanes& q = c.posterior[std::size_t(k)];

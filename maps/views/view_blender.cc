@@ -80,6 +80,18 @@ inline F16 Pow(F16 x, float p) {
   return x;
 }
 template <typename T>
+inline T Max(T x, float lo) {
+  return x > lo ? x : T{} + lo;
+}
+// The least cosine angle_power weighs (a view seen edge-on or from behind counts as this).
+constexpr float kMinCos = 1e-6f;
+// Per-pixel bounds of the views' say (LimitsAt).
+template <typename T>
+struct PixelLimits {
+  T nearest;   // depth limit of depth_tolerance; +inf without
+  T best_cos;  // largest cos(view angle) among the contributing views; 1 without angle_power
+};
+template <typename T>
 inline T Clamp(T x, float lo, float hi) {
   x = x < lo ? T{} + lo : x;
   return x > hi ? T{} + hi : x;
@@ -347,12 +359,12 @@ struct Footprint {
   T w00, w10, w01, w11;
 };
 
-// The footprint of `w` at pixels [x, x + lanes) of row y in `p`. `nearest`: the depth limit of
-// depth_tolerance (+inf without). Coordinates are clamped to the source image (the border
-// replicated). T = float for one pixel, F16 for sixteen.
+// The footprint of `w` at pixels [x, x + lanes) of row y in `p`, within `limits` (LimitsAt).
+// Coordinates are clamped to the source image (the border replicated). T = float for one pixel,
+// F16 for sixteen.
 template <typename T, class Plane>
 inline auto FootprintOf(const WarpField& w, const Plane& p, float view_weight,
-                        const BlendOptions& o, T nearest, int y, int x) {
+                        const BlendOptions& o, const PixelLimits<T>& limits, int y, int x) {
   T u, v;
   LoadMap(w.map.ptr<cv::Vec2f>(y) + x, u, v);
   // The map rows are streamed once per view; fetching ahead hides the misses (≈ 10–20 %). Every
@@ -367,15 +379,15 @@ inline auto FootprintOf(const WarpField& w, const Plane& p, float view_weight,
   T d{};
   if (o.depth_tolerance > 0.0 || o.resolution_power > 0.0) {
     d = LoadLane(w.depth.ptr<float>(y) + x, T{});
-    valid = valid & (d <= nearest);
+    valid = valid & (d <= limits.nearest);
   }
   T weight = T{} + view_weight;
   if (o.resolution_power > 0.0) {
     weight *= Pow(d / LoadLane(w.source_depth.ptr<float>(y) + x, T{}), float(o.resolution_power));
   }
-  if (o.angle_power > 0.0) {
-    const T cos_angle = LoadLane(w.cos_angle.ptr<float>(y) + x, T{});
-    weight *= Pow(cos_angle > 1e-6f ? cos_angle : T{} + 1e-6f, float(o.angle_power));
+  if (o.angle_power > 0.0) {  // relative to the best view: ≤ 1, and 1 for that view
+    const T cos_angle = Max(LoadLane(w.cos_angle.ptr<float>(y) + x, T{}), kMinCos);
+    weight *= Pow(cos_angle / limits.best_cos, float(o.angle_power));
   }
   weight = valid ? weight : T{};
   u = Clamp(u, 0.0f, float(p.cols - 1));
@@ -400,10 +412,10 @@ inline auto FootprintOf(const WarpField& w, const Plane& p, float view_weight,
 template <typename T, class Plane>
 inline __attribute__((always_inline)) void AddView(const WarpField& w, const Plane& p,
                                                    float view_weight, const BlendOptions& o,
-                                                   T nearest, int y, int x, int c0, int n, T* acc,
-                                                   T& weight_sum) {
+                                                   const PixelLimits<T>& limits, int y, int x,
+                                                   int c0, int n, T* acc, T& weight_sum) {
   const auto [valid, weight, at, w00, w10, w01, w11] =
-      FootprintOf(w, p, view_weight, o, nearest, y, x);
+      FootprintOf(w, p, view_weight, o, limits, y, x);
   weight_sum += weight;
   if constexpr (std::is_same_v<T, F16>) {
     if (!stats::lanes::Any(valid)) return;  // sixteen uncovered pixels: nothing to read
@@ -427,20 +439,37 @@ inline __attribute__((always_inline)) void AddView(const WarpField& w, const Pla
   Sample(p, p.Gatherer(), at, w00, w10, w01, w11, valid, c0, n, acc);
 }
 
-// The depth beyond which views do not contribute at pixels [x, x + lanes) of row y: the nearest
-// view's depth stretched by depth_tolerance; +inf without a tolerance.
+// What bounds each view's say at pixels [x, x + lanes) of row y, over the views that cover
+// them: the depth beyond which views do not contribute (the nearest view's depth stretched by
+// depth_tolerance; +inf without), and the largest cosine of the view angle among the views that
+// do (angle_power's reference; 1 without). Weighting relative to the best view keeps that
+// view's weight at 1: cos^p of an absolute angle underflows to 0 for p = 10⁴ a few degrees off,
+// which would uncover a pixel that views cover.
 template <typename T>
-inline T DepthLimit(const std::vector<const WarpField*>& warps, const BlendOptions& o, int y,
-                    int x) {
-  T nearest = T{} + std::numeric_limits<float>::infinity();
+inline PixelLimits<T> LimitsAt(const std::vector<const WarpField*>& warps, const BlendOptions& o,
+                               int y, int x) {
+  PixelLimits<T> limits{T{} + std::numeric_limits<float>::infinity(), T{} + 1.0f};
   if (o.depth_tolerance > 0.0) {  // only views within the tolerance of the nearest depth
     for (const WarpField* w : warps) {
       const T d = LoadLane(w->depth.ptr<float>(y) + x, T{});
-      nearest = (d > 0.0f) & (d < nearest) ? d : nearest;
+      limits.nearest = (d > 0.0f) & (d < limits.nearest) ? d : limits.nearest;
     }
-    nearest *= float(1.0 + o.depth_tolerance);
+    limits.nearest *= float(1.0 + o.depth_tolerance);
   }
-  return nearest;
+  if (o.angle_power > 0.0) {
+    T best = T{} + kMinCos;
+    for (const WarpField* w : warps) {
+      T u, v;
+      LoadMap(w->map.ptr<cv::Vec2f>(y) + x, u, v);
+      auto counts = u > -0.5f;
+      if (o.depth_tolerance > 0.0)
+        counts = counts & (LoadLane(w->depth.ptr<float>(y) + x, T{}) <= limits.nearest);
+      const T c = LoadLane(w->cos_angle.ptr<float>(y) + x, T{});
+      best = counts & (c > best) ? c : best;
+    }
+    limits.best_cos = best;
+  }
+  return limits;
 }
 
 #if defined(__AVX512F__) && defined(__AVX512VL__) && defined(__AVX512BW__) && defined(__F16C__)
@@ -466,9 +495,9 @@ inline F8 PixelChannels(const BytePlane&, const char*, __mmask8) {
 // channel at once) and its weight to `weight_sum`, lane by covered lane.
 template <class Plane>
 inline void AddViewPixels(const WarpField& w, const Plane& p, float view_weight,
-                          const BlendOptions& o, F16 nearest, int y, int x, F8* acc,
-                          F16& weight_sum) {
-  const auto f = FootprintOf(w, p, view_weight, o, nearest, y, x);
+                          const BlendOptions& o, const PixelLimits<F16>& limits, int y, int x,
+                          F8* acc, F16& weight_sum) {
+  const auto f = FootprintOf(w, p, view_weight, o, limits, y, x);
   weight_sum += f.weight;
   unsigned lanes = stats::lanes::Bits(f.valid);
   if (!lanes) return;
@@ -500,11 +529,11 @@ template <class Plane>
 inline int BlendWholePixels(const std::vector<const WarpField*>& warps,
                             const std::vector<Plane>& planes, const std::vector<float>& weights,
                             const BlendOptions& o, int y, int x, BlendResult& out) {
-  const F16 nearest = DepthLimit<F16>(warps, o, y, x);
+  const PixelLimits<F16> limits = LimitsAt<F16>(warps, o, y, x);
   F8 acc[kLanes] = {};
   F16 weight_sum{};
   for (std::size_t k = 0; k < warps.size(); ++k) {
-    AddViewPixels(*warps[k], planes[k], weights[k], o, nearest, y, x, acc, weight_sum);
+    AddViewPixels(*warps[k], planes[k], weights[k], o, limits, y, x, acc, weight_sum);
   }
   const int channels = planes[0].channels;
   const __mmask8 m = __mmask8((1u << channels) - 1);
@@ -535,7 +564,7 @@ inline int BlendPixels(const std::vector<const WarpField*>& warps, const std::ve
                        const std::vector<float>& weights, const BlendOptions& o, int y, int x,
                        BlendResult& out) {
   const std::size_t views = warps.size();
-  const T nearest = DepthLimit<T>(warps, o, y, x);
+  const PixelLimits<T> limits = LimitsAt<T>(warps, o, y, x);
   const int channels = kChannels > 0 ? kChannels : planes[0].channels;
   float* row = out.value.ptr<float>(y);
   T weight_sum{};
@@ -544,7 +573,7 @@ inline int BlendPixels(const std::vector<const WarpField*>& warps, const std::ve
     T acc[kPassChannels] = {};
     weight_sum = T{};
     for (std::size_t k = 0; k < views; ++k) {
-      AddView(*warps[k], planes[k], weights[k], o, nearest, y, x, c0, n, acc, weight_sum);
+      AddView(*warps[k], planes[k], weights[k], o, limits, y, x, c0, n, acc, weight_sum);
     }
     // Divide, not multiply by 1/sum: a sum of tiny (denormal) weights has no finite inverse.
     const auto hit = weight_sum > 0.0f;

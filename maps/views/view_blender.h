@@ -24,18 +24,32 @@ struct BlendOptions {
   std::vector<double> weights;
   /// > 0: at each pixel only views whose warped depth is within this fraction of the nearest
   /// view's depth contribute, so a view that sees past an occluder (the surface behind it) does
-  /// not ghost into the average. 0 = every valid view contributes (the thesis's rule).
+  /// not ghost into the average. 0 = every valid view contributes (the thesis's rule), the
+  /// default: on ICL-NUIM (frame 2 from 1, 4, 5) every tolerance of 1–10 % lowered the PSNR at
+  /// the same coverage (31.4 → 30.2–30.8 dB), as did a band around the views' median depth.
   double depth_tolerance = 0.0;
   /// > 0: each contribution is weighted per pixel by (z_virtual / z_source)^power, favouring views
   /// that saw the surface from nearer — at higher resolution — than the virtual camera does, over
   /// distant views whose texture is magnified and blurred (needs WarpOptions::
   /// compute_source_depth). 0 = no such weighting (the thesis).
   double resolution_power = 0.0;
-  /// > 0: each contribution is also weighted by cos(angle)^power between the rays from the
-  /// surface point to the virtual and to the source camera (needs WarpOptions::
-  /// compute_view_angles): views that saw the surface from the same direction get more say, which
-  /// keeps view-dependent effects (highlights) right. 0 = no such weighting (the thesis).
-  double angle_power = 0.0;
+  /// > 0: each contribution is also weighted by (cos φ / cos φ_best)^power, φ the angle between
+  /// the rays from the surface point to the virtual and to the source camera, φ_best the least
+  /// such angle among the views that cover the pixel (needs WarpOptions::compute_view_angles):
+  /// views that saw the surface from the same direction get more say, which keeps
+  /// view-dependent effects (highlights) right. Relative to the best view, so a weighting never
+  /// uncovers a pixel that a view covers. 0 = no such weighting (the thesis). Default 10, the
+  /// best of 0–10⁴ on ICL-NUIM at full coverage (0.286): 31.58 dB against 31.43 for the plain
+  /// average; 10⁴ (the best view alone) gives 31.07 (view_synthesis_data_test.cc).
+  double angle_power = 10.0;
+
+  /// The thesis's rule: every covering view counts the same (3.3.2).
+  static BlendOptions ThesisAverage() {
+    BlendOptions o;
+    o.depth_tolerance = 0.0;
+    o.angle_power = 0.0;
+    return o;
+  }
 };
 
 struct BlendResult {

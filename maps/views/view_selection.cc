@@ -14,11 +14,17 @@ double ViewCost(const Eigen::Vector3d& centre, const Eigen::Vector3d& dir,
   return delta / cos_phi;  // eq. 3.8
 }
 
-std::vector<int> SelectViews(const std::vector<Eigen::Isometry3d>& poses,
-                             const PinholeCamera& camera, const Eigen::Isometry3d& T_world_virtual,
-                             const ViewSelectionOptions& options) {
+std::vector<double> ViewSelection::Weights(const ViewSelectionOptions& options) const {
+  if (!options.weight_by_rays) return std::vector<double>(views.size(), 1.0);
+  return std::vector<double>(rays.begin(), rays.end());
+}
+
+ViewSelection SelectViewsForRays(const std::vector<Eigen::Isometry3d>& poses,
+                                 const PinholeCamera& camera,
+                                 const Eigen::Isometry3d& T_world_virtual,
+                                 const ViewSelectionOptions& options) {
   const Eigen::Vector3d centre = T_world_virtual.translation();
-  std::vector<int> selected;
+  ViewSelection selected;
   for (const Eigen::Vector2d& p : options.ray_points) {
     const Eigen::Vector3d dir =
         (T_world_virtual.linear() *
@@ -37,11 +43,22 @@ std::vector<int> SelectViews(const std::vector<Eigen::Isometry3d>& poses,
         best = static_cast<int>(j);
       }
     }
-    if (best >= 0 && std::find(selected.begin(), selected.end(), best) == selected.end()) {
-      selected.push_back(best);
+    if (best < 0) continue;
+    const auto at = std::find(selected.views.begin(), selected.views.end(), best);
+    if (at == selected.views.end()) {
+      selected.views.push_back(best);
+      selected.rays.push_back(1);
+    } else {
+      ++selected.rays[std::size_t(at - selected.views.begin())];
     }
   }
   return selected;
+}
+
+std::vector<int> SelectViews(const std::vector<Eigen::Isometry3d>& poses,
+                             const PinholeCamera& camera, const Eigen::Isometry3d& T_world_virtual,
+                             const ViewSelectionOptions& options) {
+  return SelectViewsForRays(poses, camera, T_world_virtual, options).views;
 }
 
 }  // namespace novelty::views

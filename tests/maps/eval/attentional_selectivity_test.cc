@@ -37,6 +37,39 @@ TEST(AttentionalSelectivity, BorderBlocksAndNaNsAreLeftOut) {
   EXPECT_LT(AttentionalSelectivity(map, region, no_border).as_db, 0.0);
 }
 
+// A 10×10 object of surprise 4 on a background of 1: the true ratio is 4 (6.02 dB) wherever the
+// object falls in the 4×4 block grid. Blocks the object's edge cuts are neither region nor
+// outside (counted as outside they set Ŝ_out; counted as region they dilute S̄).
+TEST(AttentionalSelectivity, DoesNotDependOnTheObjectsOffsetInTheBlockGrid) {
+  const double truth = 10 * std::log10(4.0);
+  for (int dy = 0; dy < 4; ++dy) {
+    for (int dx = 0; dx < 4; ++dx) {
+      cv::Mat map(64, 64, CV_32FC1, cv::Scalar(1.0f));
+      cv::Mat region(64, 64, CV_8UC1, cv::Scalar(0));
+      const cv::Rect object(24 + dx, 24 + dy, 10, 10);
+      region(object).setTo(255);
+      map(object).setTo(4.0f);
+      const Selectivity s = AttentionalSelectivity(map, region);
+      EXPECT_NEAR(s.as_db, truth, 0.1) << "offset " << dx << "," << dy;
+      EXPECT_NEAR(s.pas_db, truth, 0.1) << "offset " << dx << "," << dy;
+      EXPECT_GE(s.region_blocks, 1);
+      EXPECT_GT(s.border_blocks, 0);
+    }
+  }
+}
+
+// A region thinner than a block has no whole block: its blocks at least half in the mask stand
+// for it (a 2-pixel line of 4 over 1 gives blocks of mean 2.5, i.e. 3.98 dB, aligned so).
+TEST(AttentionalSelectivity, RegionThinnerThanABlockUsesItsHalfCoveredBlocks) {
+  cv::Mat map(64, 64, CV_32FC1, cv::Scalar(1.0f));
+  cv::Mat region(64, 64, CV_8UC1, cv::Scalar(0));
+  region(cv::Rect(24, 24, 16, 2)).setTo(255);
+  map(cv::Rect(24, 24, 16, 2)).setTo(4.0f);
+  const Selectivity s = AttentionalSelectivity(map, region);
+  EXPECT_EQ(s.region_blocks, 4);
+  EXPECT_NEAR(s.as_db, 10 * std::log10(2.5), 1e-9);
+}
+
 TEST(AttentionalSelectivity, EmptyRegionGivesNaN) {
   const cv::Mat map(32, 32, CV_32FC1, cv::Scalar(1.0f));
   const Selectivity s = AttentionalSelectivity(map, cv::Mat::zeros(32, 32, CV_8UC1));

@@ -58,11 +58,18 @@ TEST(NormalGammaUpdate, ForgettingLearnsConstantInputAndForgetsDeviation) {
   const ForgettingUpdateOptions o;
   NormalGammaT<double> p{1.0, 1.0, 0.0, 5.0};
   for (int n = 0; n < 200; ++n) p = UpdateWithForgetting(p, 90.0, o);
-  // τ converges to the observed value; β decays geometrically (β ← f β + tiny) towards 0.
+  // τ converges to the observed value; β decays geometrically (β ← f β + tiny) down to the
+  // quantisation floor α/12 (α → 2.5: β → 0.2083).
   EXPECT_NEAR(p.tau, 90.0, 1e-6);
-  EXPECT_LT(p.beta, 1e-6);
-  // σ settles where σ_p is clamped at σ_min (β/α → 0 so exp(ξ β/α) → 1 and σ keeps shrinking).
+  EXPECT_NEAR(p.beta, 2.5 / 12.0, 1e-6);
+  // σ settles where σ_p is clamped at σ_min (exp(ξ β/α) = exp(ξ/12) is too small to lift it).
   EXPECT_NEAR(p.sigma, o.sigma_min / (o.sigma_min + 1.0), 1e-9);
+  // Without the floor (the thesis's update), β decays geometrically towards 0.
+  ForgettingUpdateOptions thesis;
+  thesis.min_variance = 0.0;
+  NormalGammaT<double> q{1.0, 1.0, 0.0, 5.0};
+  for (int n = 0; n < 200; ++n) q = UpdateWithForgetting(q, 90.0, thesis);
+  EXPECT_LT(q.beta, 1e-6);
 }
 
 TEST(NormalGammaUpdate, ForgettingSteadyStateVarianceTracksNoise) {

@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace novelty::views {
 namespace {
+
+// The thesis's plain average, which most tests check (the defaults weight views).
+const BlendOptions kThesis = BlendOptions::ThesisAverage();
 
 // A warp field that maps each virtual pixel of the left `covered` columns to itself at `depth`.
 WarpField Field(int width, int height, int covered, float depth) {
@@ -28,7 +32,7 @@ TEST(ViewBlender, AveragesValidContributionsAndMarksUncoveredPixels) {
   const std::vector<WarpField> warps = {Field(8, 4, 6, 2.0f), Field(8, 4, 3, 2.0f)};
   const std::vector<cv::Mat> planes = {cv::Mat(4, 8, CV_8UC1, cv::Scalar(10)),
                                        cv::Mat(4, 8, CV_8UC1, cv::Scalar(30))};
-  const BlendResult r = BlendPlanes(warps, planes);
+  const BlendResult r = BlendPlanes(warps, planes, kThesis);
   EXPECT_FLOAT_EQ(r.value.at<float>(1, 1), 20.0f);   // both views
   EXPECT_FLOAT_EQ(r.value.at<float>(1, 4), 10.0f);   // first view only
   EXPECT_TRUE(std::isnan(r.value.at<float>(1, 7)));  // nobody: invalid, not zero
@@ -49,7 +53,7 @@ TEST(ViewBlender, MultiChannelViewsAverageWhereTheyCover) {
           .convertTo(plane, CV_MAT_DEPTH(type));
       planes.push_back(plane);
     }
-    const BlendResult r = BlendPlanes(warps, planes);
+    const BlendResult r = BlendPlanes(warps, planes, kThesis);
     ASSERT_EQ(r.covered, 18 * 3);
     for (int c = 0; c < r.value.channels(); ++c) {
       EXPECT_FLOAT_EQ(r.value.ptr<float>(2)[4 * r.value.channels() + c], 20.0f) << c;
@@ -65,22 +69,22 @@ TEST(ViewBlender, MultiChannelViewsAverageWhereTheyCover) {
 TEST(ViewBlender, WeightsAndDepthToleranceChangeTheMix) {
   const std::vector<cv::Mat> planes = {cv::Mat(2, 4, CV_32FC1, cv::Scalar(10)),
                                        cv::Mat(2, 4, CV_32FC1, cv::Scalar(30))};
-  BlendOptions weighted;
+  BlendOptions weighted = kThesis;
   weighted.weights = {3.0, 1.0};
   const std::vector<WarpField> same = {Field(4, 2, 4, 2.0f), Field(4, 2, 4, 2.0f)};
   EXPECT_FLOAT_EQ(BlendPlanes(same, planes, weighted).value.at<float>(0, 0), 15.0f);
   // The second view sees a surface 50 % behind the first's: with a tolerance it is left out.
   const std::vector<WarpField> occluded = {Field(4, 2, 4, 2.0f), Field(4, 2, 4, 3.0f)};
-  BlendOptions tolerant;
+  BlendOptions tolerant = kThesis;
   tolerant.depth_tolerance = 0.05;
-  EXPECT_FLOAT_EQ(BlendPlanes(occluded, planes).value.at<float>(0, 0), 20.0f);
+  EXPECT_FLOAT_EQ(BlendPlanes(occluded, planes, kThesis).value.at<float>(0, 0), 20.0f);
   EXPECT_FLOAT_EQ(BlendPlanes(occluded, planes, tolerant).value.at<float>(0, 0), 10.0f);
 }
 
 TEST(ViewBlender, MultiChannelPlanesKeepTheirChannels) {
   const std::vector<WarpField> warps = {Field(4, 2, 4, 1.0f)};
   const std::vector<cv::Mat> planes = {cv::Mat(2, 4, CV_8UC3, cv::Scalar(1, 2, 3))};
-  const BlendResult r = BlendPlanes(warps, planes);
+  const BlendResult r = BlendPlanes(warps, planes, kThesis);
   ASSERT_EQ(r.value.type(), CV_32FC3);
   EXPECT_EQ(r.value.at<cv::Vec3f>(1, 2), cv::Vec3f(1, 2, 3));
 }
@@ -108,7 +112,7 @@ TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
           linear.ptr<float>(y)[x * channels + c] = 2.0f * x + 3.0f * y + 25.0f * c;
     cv::Mat plane;
     linear.convertTo(plane, depth);
-    const BlendResult r = BlendPlanes({f}, {plane});
+    const BlendResult r = BlendPlanes({f}, {plane}, kThesis);
     ASSERT_EQ(r.covered, w * h);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x)
@@ -153,7 +157,7 @@ TEST(ViewBlender, BilinearSamplesAreExactWhereViewsAreTurnedOrMagnified) {
           for (int c = 0; c < channels; ++c)
             linear.ptr<float>(y)[x * channels + c] = float(2 * x + 3 * y + 25 * c);
       linear.convertTo(plane, depth);
-      const BlendResult r = BlendPlanes({f}, {plane});
+      const BlendResult r = BlendPlanes({f}, {plane}, kThesis);
       ASSERT_EQ(r.covered, w * h);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -179,7 +183,7 @@ TEST(ViewBlender, PlanesOfDifferentDepthsOrLayoutsBlendAlike) {
   const std::vector<cv::Mat> planes = {cv::Mat(3, 20, CV_8UC3, cv::Scalar(10, 20, 30)),
                                        cv::Mat(3, 20, CV_32FC3, cv::Scalar(31, 41, 51)),
                                        larger(cv::Rect(2, 1, 20, 3))};
-  const BlendResult r = BlendPlanes(warps, planes);
+  const BlendResult r = BlendPlanes(warps, planes, kThesis);
   ASSERT_EQ(r.covered, 60);
   for (int x : {0, 17, 19}) EXPECT_EQ(r.value.at<cv::Vec3f>(2, x), cv::Vec3f(27, 37, 47)) << x;
 }
@@ -201,12 +205,12 @@ TEST(ViewBlender, RowsBlendedInPartsEqualTheWholeBlend) {
       values.convertTo(plane, depth);
       planes.push_back(plane);
     }
-    const BlendResult whole = BlendPlanes(warps, planes);
+    const BlendResult whole = BlendPlanes(warps, planes, kThesis);
     BlendResult parts;
-    PrepareBlend(warps, planes, {}, parts);
+    PrepareBlend(warps, planes, kThesis, parts);
     int covered = 0;
     for (const cv::Range rows : {cv::Range(6, 9), cv::Range(0, 2), cv::Range(2, 6)}) {
-      covered += BlendRows(warps, planes, {}, rows, parts);
+      covered += BlendRows(warps, planes, kThesis, rows, parts);
     }
     EXPECT_EQ(covered, whole.covered);
     EXPECT_EQ(covered, 37 * 9);
@@ -216,13 +220,13 @@ TEST(ViewBlender, RowsBlendedInPartsEqualTheWholeBlend) {
   // Rows outside the result, or a result not prepared for these planes.
   const std::vector<cv::Mat> planes = {cv::Mat(20, 40, CV_32FC3), cv::Mat(20, 40, CV_32FC3)};
   BlendResult r;
-  EXPECT_THROW(BlendRows(warps, planes, {}, cv::Range(0, 2), r), std::invalid_argument);
-  PrepareBlend(warps, planes, {}, r);
-  EXPECT_THROW(BlendRows(warps, planes, {}, cv::Range(8, 10), r), std::invalid_argument);
+  EXPECT_THROW(BlendRows(warps, planes, kThesis, cv::Range(0, 2), r), std::invalid_argument);
+  PrepareBlend(warps, planes, kThesis, r);
+  EXPECT_THROW(BlendRows(warps, planes, kThesis, cv::Range(8, 10), r), std::invalid_argument);
   const std::vector<cv::Mat> one_channel = {cv::Mat(20, 40, CV_32FC1), cv::Mat(20, 40, CV_32FC1)};
-  EXPECT_THROW(BlendRows(warps, one_channel, {}, cv::Range(0, 2), r), std::invalid_argument);
-  EXPECT_THROW(BlendRows(warps, {planes[0]}, {}, cv::Range(0, 2), r), std::invalid_argument);
-  EXPECT_EQ(BlendRows(warps, planes, {}, cv::Range(3, 3), r), 0);
+  EXPECT_THROW(BlendRows(warps, one_channel, kThesis, cv::Range(0, 2), r), std::invalid_argument);
+  EXPECT_THROW(BlendRows(warps, {planes[0]}, kThesis, cv::Range(0, 2), r), std::invalid_argument);
+  EXPECT_EQ(BlendRows(warps, planes, kThesis, cv::Range(3, 3), r), 0);
 }
 
 TEST(ViewBlender, AKeptResultIsWrittenInPlaceUnlessSomeoneElseHoldsIt) {
@@ -230,20 +234,20 @@ TEST(ViewBlender, AKeptResultIsWrittenInPlaceUnlessSomeoneElseHoldsIt) {
   const std::vector<cv::Mat> tens = {cv::Mat(3, 20, CV_8UC3, cv::Scalar(10, 10, 10))};
   const std::vector<cv::Mat> twenties = {cv::Mat(3, 20, CV_8UC3, cv::Scalar(20, 20, 20))};
   BlendResult kept;
-  BlendPlanes(warps, tens, {}, kept);
+  BlendPlanes(warps, tens, kThesis, kept);
   const uchar* data = kept.value.data;
-  BlendPlanes(warps, twenties, {}, kept);  // nobody else holds it: the same images
+  BlendPlanes(warps, twenties, kThesis, kept);  // nobody else holds it: the same images
   EXPECT_EQ(kept.value.data, data);
   EXPECT_EQ(kept.value.at<cv::Vec3f>(2, 19), cv::Vec3f(20, 20, 20));
   EXPECT_EQ(kept.covered, 60);
   const cv::Mat held = kept.value, held_valid = kept.valid;  // a caller keeps the last frame's
-  BlendPlanes(warps, tens, {}, kept);
+  BlendPlanes(warps, tens, kThesis, kept);
   EXPECT_NE(kept.value.data, held.data);
   EXPECT_NE(kept.valid.data, held_valid.data);
   EXPECT_EQ(held.at<cv::Vec3f>(2, 19), cv::Vec3f(20, 20, 20));  // untouched
   EXPECT_EQ(kept.value.at<cv::Vec3f>(2, 19), cv::Vec3f(10, 10, 10));
   // Another size or channel count: allocated to fit.
-  BlendPlanes({Field(8, 2, 8, 1.0f)}, {cv::Mat(2, 8, CV_32FC1, cv::Scalar(5))}, {}, kept);
+  BlendPlanes({Field(8, 2, 8, 1.0f)}, {cv::Mat(2, 8, CV_32FC1, cv::Scalar(5))}, kThesis, kept);
   EXPECT_EQ(kept.value.type(), CV_32FC1);
   EXPECT_EQ(kept.value.size(), cv::Size(8, 2));
   EXPECT_FLOAT_EQ(kept.value.at<float>(1, 7), 5.0f);
@@ -251,14 +255,14 @@ TEST(ViewBlender, AKeptResultIsWrittenInPlaceUnlessSomeoneElseHoldsIt) {
 
 TEST(ViewBlender, MismatchedInputIsRejected) {
   const std::vector<WarpField> warps = {Field(4, 2, 4, 1.0f)};
-  EXPECT_THROW(BlendPlanes(warps, {}), std::invalid_argument);
-  BlendOptions o;
+  EXPECT_THROW(BlendPlanes(warps, {}, kThesis), std::invalid_argument);
+  BlendOptions o = kThesis;
   o.weights = {1.0, 2.0};
   EXPECT_THROW(BlendPlanes(warps, {cv::Mat(2, 4, CV_8UC1)}, o), std::invalid_argument);
   // resolution_power needs the source depth, which a warp fills only when asked.
   std::vector<WarpField> no_source_depth = {Field(4, 2, 4, 1.0f)};
   no_source_depth[0].source_depth.release();
-  BlendOptions resolution;
+  BlendOptions resolution = kThesis;
   resolution.resolution_power = 1.0;
   EXPECT_THROW(BlendPlanes(no_source_depth, {cv::Mat(2, 4, CV_8UC1)}, resolution),
                std::invalid_argument);
@@ -267,29 +271,59 @@ TEST(ViewBlender, MismatchedInputIsRejected) {
   std::vector<WarpField> map_only = {Field(4, 2, 4, 1.0f)};
   map_only[0].depth.release();
   map_only[0].source_depth.release();
-  BlendOptions tolerant;
+  BlendOptions tolerant = kThesis;
   tolerant.depth_tolerance = 0.05;
   EXPECT_THROW(BlendPlanes(map_only, {cv::Mat(2, 4, CV_8UC1)}, tolerant), std::invalid_argument);
-  EXPECT_EQ(BlendPlanes(map_only, {cv::Mat(2, 4, CV_8UC1, cv::Scalar(7))}).value.at<float>(1, 3),
+  EXPECT_EQ(BlendPlanes(map_only, {cv::Mat(2, 4, CV_8UC1, cv::Scalar(7))}, kThesis).value.at<float>(1, 3),
             7.0f);
+}
+
+// Angle weights are relative to the pixel's best view: cos φ^10000 underflows to 0 for views a
+// few degrees off (cos 0.9: 0.9^10000 = 0 in float and double), which must not uncover pixels
+// that views cover. 16 + 3 columns: the sixteen-pixel kernel and the one-pixel tail.
+TEST(ViewBlender, AngleWeightsRankViewsButNeverUncoverAPixel) {
+  const int width = 19, height = 2;
+  std::vector<WarpField> warps = {Field(width, height, width, 2.0f),
+                                  Field(width, height, width, 2.0f)};
+  warps[0].cos_angle = cv::Mat(height, width, CV_32FC1, cv::Scalar(0.90f));
+  warps[1].cos_angle = cv::Mat(height, width, CV_32FC1, cv::Scalar(0.95f));
+  warps[1].map.colRange(10, width).setTo(cv::Scalar(-1, -1));  // view 1 covers columns 0–9
+  const std::vector<cv::Mat> planes = {cv::Mat(height, width, CV_8UC1, cv::Scalar(10)),
+                                       cv::Mat(height, width, CV_8UC1, cv::Scalar(30))};
+  BlendOptions o = kThesis;
+  o.angle_power = 10000.0;
+  const BlendResult r = BlendPlanes(warps, planes, o);
+  EXPECT_EQ(r.covered, width * height) << "every pixel some view covers stays covered";
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      // Where both cover, view 1 (5° nearer the virtual ray) dominates: (0.90/0.95)^10000 ≈ 0.
+      EXPECT_FLOAT_EQ(r.value.at<float>(y, x), x < 10 ? 30.0f : 10.0f) << x << "," << y;
+    }
+  }
+  // Power 20: the weights (cos φ / cos φ_best)^20 — view 0 gets (0.90/0.95)^20 = 0.3392.
+  o.angle_power = 20.0;
+  const double w0 = std::pow(0.90 / 0.95, 20.0);
+  const BlendResult soft = BlendPlanes(warps, planes, o);
+  EXPECT_NEAR(soft.value.at<float>(0, 3), (10.0 * w0 + 30.0) / (w0 + 1.0), 1e-3);
+  EXPECT_NEAR(soft.value.at<float>(1, 17), 10.0, 1e-5);
 }
 
 TEST(ViewBlender, WarpOptionsForAskForWhatTheBlendReads) {
   WarpOptions base;
   base.planar_block = 4;  // kept
-  const WarpOptions plain = WarpOptionsFor(BlendOptions{}, base);
+  const WarpOptions plain = WarpOptionsFor(kThesis, base);
   EXPECT_FALSE(plain.compute_depth);
   EXPECT_FALSE(plain.compute_source_depth);
   EXPECT_FALSE(plain.compute_view_angles);
   EXPECT_EQ(plain.planar_block, 4);
-  BlendOptions b;
+  BlendOptions b = kThesis;
   b.depth_tolerance = 0.03;
   EXPECT_TRUE(WarpOptionsFor(b, base).compute_depth);
-  b = BlendOptions{};
+  b = kThesis;
   b.resolution_power = 1.0;
   EXPECT_TRUE(WarpOptionsFor(b, base).compute_depth);
   EXPECT_TRUE(WarpOptionsFor(b, base).compute_source_depth);
-  b = BlendOptions{};
+  b = kThesis;
   b.angle_power = 2.0;
   EXPECT_TRUE(WarpOptionsFor(b, base).compute_depth);
   EXPECT_TRUE(WarpOptionsFor(b, base).compute_view_angles);

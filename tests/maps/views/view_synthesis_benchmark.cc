@@ -54,7 +54,7 @@ std::vector<views::SourceView> Sources(const Views& v) {
 
 // The seven views warped into the virtual camera (default options), for the blends alone.
 std::vector<views::WarpField> Warps(const Views& v) {
-  views::DepthMeshWarper warper;
+  views::DepthMeshWarper warper(views::WarpOptionsFor(views::BlendOptions{}, {}));
   std::vector<views::WarpField> warps;
   warper.WarpMany(Sources(v), v.camera, v.virtual_pose, warps);
   return warps;
@@ -62,7 +62,7 @@ std::vector<views::WarpField> Warps(const Views& v) {
 
 void BM_SynthesiseVirtualView(benchmark::State& state) {
   static const Views v = MakeViews();
-  // The warp computes what the (default) blend reads: the map, no depth planes.
+  // The warp computes what the (default) blend reads: the map, the depth and the view angles.
   views::WarpOptions wo = views::WarpOptionsFor(views::BlendOptions{}, {});
   wo.threads = static_cast<int>(state.range(0));
   for (auto _ : state) {
