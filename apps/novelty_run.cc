@@ -1,12 +1,14 @@
 // novelty-run: the surprise pipeline (thesis ch. 4) over an RGB-D rawlog.
 //
 //   novelty-run --rawlog DIR/<name>.rawlog --groundtruth DIR/groundtruth --out OUT
-//               [--config share/appearance.ini] [--frames N] [--panels-every K]
-//               [--poses groundtruth|rawlog] [--compare-views 2,4]
+//               [--config share/novelty_run.ini] [--frames N] [--panels-every K]
+//               [--poses groundtruth|rawlog|odometry] [--compare-views 2,4]
 //
-// Plays the rawlog with ground-truth poses (or, with --poses rawlog, the camera poses that
-// novelty-poses put into it; depth may come from novelty-depth), updates the probabilistic
-// appearance map and the image-differencing baseline, and writes
+// Runs as an MRPT program would: a CMultiMetricMap built from the .ini (a CAppearanceMap and a
+// CDifferencingMap declared there), every camera observation of the rawlog passed to its
+// insertObservation with the robot pose — from the ground truth, from the CObservationRobotPose
+// that novelty-poses put into the rawlog (depth may come from novelty-depth), or from wheel
+// odometry — and the products read back from the maps. It writes
 //   OUT/panels/NNNNNN.png  camera | expected | surprise | uncertainty | differencing
 //   OUT/metrics.csv        frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff for every
 //                          changed object in view (regions from the ground-truth novelty masks:
@@ -46,7 +48,14 @@
 #include "maps/eval/write_rgb_image.h"
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/c_appearance_map.h"
+#include "mrpt_plugins/c_differencing_map.h"
+#include "mrpt_plugins/rawlog_map_player.h"
+#include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/maps/CMultiMetricMap.h>
 
 namespace {
 
@@ -143,21 +152,65 @@ std::vector<double> ParseFactors(const std::string& list) {
   return factors;
 }
 
-// The options with reference views `factor` times farther apart (fig. 4.13's R2, R4).
-appearance::AppearanceMapOptions WithSparserViews(appearance::AppearanceMapOptions o,
-                                                  double factor) {
-  o.views.new_view_distance *= factor;
-  return o;
-}
+// The maps declared when no --config is given: one of each, every option at its default
+// (share/novelty_run.ini is the same, with the keys documented).
+constexpr const char* kDefaultMaps = R"(
+[map]
+CAppearanceMap_count = 1
+CDifferencingMap_count = 1
+)";
 
-// Maps with reference views `factor` times sparser, run side by side with the main one.
-struct SparserMaps {
-  double factor;
-  appearance::AppearanceMap map;
-  appearance::DifferencingMap baseline;
-  std::vector<eval::SelectivityRow> rows;
-  SparserMaps(double f, const appearance::AppearanceMapOptions& options)
-      : factor(f), map(WithSparserViews(options, f)), baseline(map.options().views) {}
+// The maps novelty-run feeds: the first CAppearanceMap and CDifferencingMap of the .ini, then,
+// per --compare-views factor, copies of their definitions with reference views that many times
+// sparser (fig. 4.13's R2, R4), all in one CMultiMetricMap.
+struct RunMaps {
+  mrpt::maps::CMultiMetricMap multi;
+  std::vector<double> sparser_factors;
+  std::vector<std::vector<eval::SelectivityRow>> sparser_rows;
+
+  RunMaps(const mrpt::config::CConfigFileBase& ini, const std::string& source, double reduction,
+          const std::vector<double>& factors)
+      : sparser_factors(factors), sparser_rows(factors.size()) {
+    mrpt_plugins::RegisterMaps();
+    mrpt::maps::TSetOfMetricMapInitializers inits;
+    try {
+      inits.loadFromConfigFile(ini, "map");
+    } catch (const std::exception& e) {
+      throw std::runtime_error(source + ": [map]: " + e.what());
+    }
+    std::shared_ptr<mrpt_plugins::CAppearanceMap::TMapDefinition> appearance;
+    std::shared_ptr<mrpt_plugins::CDifferencingMap::TMapDefinition> differencing;
+    for (auto& def : inits) {
+      if (auto a = std::dynamic_pointer_cast<mrpt_plugins::CAppearanceMap::TMapDefinition>(def);
+          a && !appearance)
+        appearance = a;
+      if (auto d = std::dynamic_pointer_cast<mrpt_plugins::CDifferencingMap::TMapDefinition>(def);
+          d && !differencing)
+        differencing = d;
+    }
+    if (!appearance || !differencing) {
+      throw std::runtime_error(source +
+                               ": [map] must declare CAppearanceMap_count = 1 and "
+                               "CDifferencingMap_count = 1 (see share/novelty_run.ini)");
+    }
+    appearance->options.views.new_view_distance *= reduction;
+    differencing->options.new_view_distance *= reduction;
+    for (const double f : factors) {
+      auto a = *appearance;
+      a.options.views.new_view_distance *= f;
+      auto d = *differencing;
+      d.options.new_view_distance *= f;
+      inits.push_back(a);
+      inits.push_back(d);
+    }
+    multi.setListOfMaps(inits);
+  }
+  mrpt_plugins::CAppearanceMap& appearance(std::size_t k = 0) const {
+    return *multi.mapByClass<mrpt_plugins::CAppearanceMap>(k);
+  }
+  mrpt_plugins::CDifferencingMap& differencing(std::size_t k = 0) const {
+    return *multi.mapByClass<mrpt_plugins::CDifferencingMap>(k);
+  }
 };
 
 // The findings of thesis 4.3 for the glass-and-cup scenario, each read over the first run of its
@@ -191,8 +244,8 @@ std::vector<eval::Finding> ThesisFindings(const std::vector<Phase>& phases,
 
 void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>& rows,
                  const std::vector<Phase>& phases, const std::vector<eval::Finding>& findings,
-                 const std::vector<std::unique_ptr<SparserMaps>>& sparser,
-                 const std::vector<int>& panel_frames, int frames, double seconds, int views) {
+                 const RunMaps& maps, const std::vector<int>& panel_frames, int frames,
+                 double seconds, int views) {
   eval::HtmlReport report("NoveltyMaps — Bayesian surprise vs image differencing");
   char summary[256];
   std::snprintf(summary, sizeof summary,
@@ -203,8 +256,9 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
   eval::FindingsReport findings_report(csv, &std::cout);
   findings_report.AddFindings(rows, findings, report);
   std::vector<eval::SparserRun> sparser_runs;
-  for (const auto& m : sparser)
-    sparser_runs.push_back({m->factor, m->map.store().size(), &m->rows});
+  for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k)
+    sparser_runs.push_back({maps.sparser_factors[k],
+                            maps.appearance(k + 1).map().store().size(), &maps.sparser_rows[k]});
   findings_report.AddSparser(rows, views, sparser_runs, findings, report);
   std::vector<eval::PlotBand> bands;
   for (const Phase& p : phases) bands.push_back({double(p.first), double(p.last), p.name});
@@ -249,14 +303,18 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
 int main(int argc, char** argv) {
   TCLAP::CmdLine cmd(
       "Bayesian surprise with the probabilistic appearance map over an RGB-D "
-      "rawlog, against image differencing.",
+      "rawlog, against image differencing, through MRPT's CMultiMetricMap.",
       ' ', "0.1");
   TCLAP::ValueArg<std::string> rawlog("", "rawlog", "RGB-D rawlog", true, "", "R.rawlog", cmd);
   TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground-truth folder (poses, masks)", true,
                                      "", "DIR", cmd);
   TCLAP::ValueArg<std::string> out("", "out", "Output folder", true, "", "OUT", cmd);
-  TCLAP::ValueArg<std::string> config("", "config", "Options (.ini, section [AppearanceMap])",
-                                      false, "", "INI", cmd);
+  TCLAP::ValueArg<std::string> config(
+      "", "config",
+      "The maps as a CMultiMetricMap .ini (section [map]: CAppearanceMap_count, "
+      "CDifferencingMap_count; options in [map_CAppearanceMap_00_options] ...), e.g. "
+      "share/novelty_run.ini; default: both maps with default options",
+      false, "", "INI", cmd);
   TCLAP::ValueArg<int> max_frames("", "frames", "Process only the first N frames", false, 0, "N",
                                   cmd);
   TCLAP::ValueArg<int> panels_every("", "panels-every", "Write every K-th panel (default 10)",
@@ -266,12 +324,13 @@ int main(int argc, char** argv) {
   TCLAP::ValueArg<std::string> map_out(
       "", "map-out", "Save the appearance map here (default OUT/map.appearance_map)", false, "",
       "M", cmd);
-  std::vector<std::string> pose_sources = {"groundtruth", "rawlog"};
+  std::vector<std::string> pose_sources = {"groundtruth", "rawlog", "odometry"};
   TCLAP::ValuesConstraint<std::string> allowed_poses(pose_sources);
   TCLAP::ValueArg<std::string> pose_source(
       "", "poses",
-      "Camera poses from the ground truth (default) or from the rawlog's pose observations "
-      "(novelty-poses); the ground truth still gives the evaluation masks",
+      "Robot poses from the ground truth (default), from the rawlog's pose observations "
+      "(novelty-poses) or from its wheel odometry; the ground truth still gives the evaluation "
+      "masks",
       false, "groundtruth", &allowed_poses, cmd);
   TCLAP::ValueArg<double> reduction("", "view-reduction",
                                     "Space reference views N times wider than configured: the "
@@ -284,80 +343,75 @@ int main(int argc, char** argv) {
       false, "", "N,M", cmd);
   try {
     cmd.parse(argc, argv);
-    appearance::AppearanceMapOptions options =
-        config.isSet() ? mrpt_plugins::LoadAppearanceMapOptions(config.getValue())
-                       : appearance::AppearanceMapOptions{};
     if (!(reduction.getValue() >= 1.0))
       throw std::invalid_argument("--view-reduction must be >= 1");
-    options = WithSparserViews(options, reduction.getValue());
+    if (panels_every.getValue() < 1) throw std::invalid_argument("--panels-every must be >= 1");
+    std::unique_ptr<mrpt::config::CConfigFileBase> ini;
+    std::string ini_name = "default maps";
+    if (config.isSet()) {
+      ini_name = config.getValue();
+      if (!std::filesystem::is_regular_file(ini_name))
+        throw std::runtime_error(ini_name + ": no such config file");
+      ini = std::make_unique<mrpt::config::CConfigFile>(ini_name);
+    } else {
+      ini = std::make_unique<mrpt::config::CConfigFileMemory>(kDefaultMaps);
+    }
+    RunMaps maps(*ini, ini_name, reduction.getValue(), ParseFactors(compare_views.getValue()));
+    mrpt_plugins::CAppearanceMap& map = maps.appearance();
+    if (map_in.isSet()) map.LoadFromFile(map_in.getValue());  // its options come with it
     const std::string gt = truth.getValue(), dir = out.getValue();
     const auto poses = sensors::LoadGroundTruthPoses(gt + "/poses.csv");
     const auto names = ReadObjects(gt);
     const auto phases = ReadPhases(gt);
     std::filesystem::create_directories(dir + "/panels");
-    sensors::RawlogFrameReader reader(rawlog.getValue());
-    mrpt_plugins::CAppearanceMap map(options);
-    if (map_in.isSet()) map.LoadFromFile(map_in.getValue());  // its options come with it
-    appearance::DifferencingMap baseline(options.views);
-    std::vector<std::unique_ptr<SparserMaps>> sparser;
-    for (const double factor : ParseFactors(compare_views.getValue()))
-      sparser.push_back(std::make_unique<SparserMaps>(factor, options));
+    mrpt_plugins::RawlogMapPlayer player(rawlog.getValue(),
+                                         mrpt_plugins::ParsePoseSource(pose_source.getValue()),
+                                         poses);
     std::ofstream csv(dir + "/metrics.csv");
     csv << "frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff\n";
     std::vector<eval::SelectivityRow> rows;
     std::vector<int> panel_frames;
-    int frames = 0, no_pose = 0;
+    int frames = 0, index = 0;
     const auto start = std::chrono::steady_clock::now();
-    for (sensors::Frame f; reader.Next(f);) {
-      if (max_frames.isSet() && frames >= max_frames.getValue()) break;
-      std::optional<Eigen::Isometry3d> pose = f.pose;
-      if (pose_source.getValue() == "groundtruth") {
-        const auto it = poses.find(f.index);
-        pose = it == poses.end() ? std::nullopt : std::optional<Eigen::Isometry3d>(it->second);
-      }
-      if (!pose) {
-        ++no_pose;
-        continue;
-      }
-      const appearance::AppearanceProducts& p = map.InsertFrame(f.rgb, f.depth, f.camera, *pose);
-      const appearance::DifferencingProducts d = baseline.Insert(f.rgb, f.depth, f.camera, *pose);
-      std::vector<std::pair<cv::Mat, cv::Mat>> sparse_maps;  // surprise, difference
-      for (const auto& s : sparser) {
-        sparse_maps.emplace_back(s->map.Insert(f.rgb, f.depth, f.camera, *pose).surprise,
-                                 s->baseline.Insert(f.rgb, f.depth, f.camera, *pose).difference);
-      }
+    while ((!max_frames.isSet() || frames < max_frames.getValue()) &&
+           player.Next(maps.multi, index)) {
+      const appearance::AppearanceProducts& p = map.lastProducts();
+      const appearance::DifferencingProducts& d = maps.differencing().lastProducts();
       ++frames;
-      const std::string stem = Stem(f.index);
+      const std::string stem = Stem(index);
       const cv::Mat novelty = cv::imread(gt + "/novelty/" + stem + ".png", cv::IMREAD_UNCHANGED);
       const cv::Mat ids = cv::imread(gt + "/ids/" + stem + ".png", cv::IMREAD_UNCHANGED);
       if (!novelty.empty() && !ids.empty()) {
         for (const auto& [object, region] : ChangedRegions(novelty, ids, names, 30)) {
-          const eval::SelectivityRow r{f.index, object,
+          const eval::SelectivityRow r{index, object,
                                        eval::AttentionalSelectivity(p.surprise, region),
                                        eval::AttentionalSelectivity(d.difference, region)};
-          csv << r.frame << "," << PhaseOf(phases, f.index) << "," << r.region << ","
+          csv << r.frame << "," << PhaseOf(phases, index) << "," << r.region << ","
               << eval::FormatDb(r.surprise.as_db) << "," << eval::FormatDb(r.surprise.pas_db) << ","
               << eval::FormatDb(r.difference.as_db) << "," << eval::FormatDb(r.difference.pas_db)
               << "\n";
           rows.push_back(r);
-          for (std::size_t k = 0; k < sparser.size(); ++k) {
-            sparser[k]->rows.push_back(
-                {f.index, object, eval::AttentionalSelectivity(sparse_maps[k].first, region),
-                 eval::AttentionalSelectivity(sparse_maps[k].second, region)});
+          for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k) {
+            maps.sparser_rows[k].push_back(
+                {index, object,
+                 eval::AttentionalSelectivity(maps.appearance(k + 1).lastProducts().surprise,
+                                              region),
+                 eval::AttentionalSelectivity(maps.differencing(k + 1).lastProducts().difference,
+                                              region)});
           }
         }
       }
-      if (f.index % panels_every.getValue() == 0) {
+      if (index % panels_every.getValue() == 0) {
         const cv::Mat panel = eval::SideBySide(
-            {f.rgb, p.expected_rgb, eval::FalseColor(p.surprise, 20.0),
+            {map.lastFrame().rgb, p.expected_rgb, eval::FalseColor(p.surprise, 20.0),
              eval::FalseColor(p.uncertainty, 1e4, true), eval::FalseColor(d.difference, 150.0)});
         eval::WriteRgbImage(dir + "/panels/" + stem + ".png", panel);
-        panel_frames.push_back(f.index);
+        panel_frames.push_back(index);
       }
       if (frames % 50 == 0) {
         const double s =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "\r[novelty-run] frame %d, %.1f frames/s, %d views   ", f.index,
+        std::fprintf(stderr, "\r[novelty-run] frame %d, %.1f frames/s, %d views   ", index,
                      frames / s, map.map().store().size());
       }
     }
@@ -366,18 +420,22 @@ int main(int argc, char** argv) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(
         "Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");
-    WriteReport(dir, rows, phases, ThesisFindings(phases, poses), sparser, panel_frames, frames,
+    WriteReport(dir, rows, phases, ThesisFindings(phases, poses), maps, panel_frames, frames,
                 seconds, map.map().store().size());
     const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";
     map.SaveToFile(saved);
     map.SaveSceneFile(dir + "/map.3Dscene");  // for SceneViewer3D
-    for (const std::string& why : reader.skip_reasons()) {
+    for (const std::string& why : player.skip_reasons()) {
       std::fprintf(stderr, "novelty-run: skipped %s\n", why.c_str());
     }
+    if (!player.stopped_by().empty()) {
+      std::fprintf(stderr, "novelty-run: the rawlog ends early (%s); results cover the %d frames "
+                           "read\n", player.stopped_by().c_str(), frames);
+    }
     std::printf(
-        "%d frames (%d skipped, %d without pose) in %.1f s\n  metrics: %s/metrics.csv\n"
+        "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
         "  map:     %s\n  report:  %s/report.html\n",
-        frames, reader.skipped(), no_pose, seconds, dir.c_str(), saved.c_str(), dir.c_str());
+        frames, player.skipped(), seconds, dir.c_str(), saved.c_str(), dir.c_str());
     return 0;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());

@@ -31,6 +31,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
                               const views::PinholeCamera& camera,
                               const Eigen::Isometry3d& T_world_cam) {
     last_ = map_->Insert(rgb, depth, camera, T_world_cam);
+    frame_ = {rgb, depth, camera, T_world_cam};
     return last_;
   }
   /// Where camera observations without depth get it (default: they are not used).
@@ -38,6 +39,9 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
   const DepthSourceOptions& depthSource() const { return depth_source_; }
   /// Products of the last inserted frame (empty before the first).
   const Products& lastProducts() const { return last_; }
+  /// The last inserted frame as the map saw it: image, depth, camera and T_world_cam (decoded
+  /// from the observation, the pose robot ⊕ sensor).
+  const ObservedFrame& lastFrame() const { return frame_; }
   const Map& map() const { return *map_; }
 
   /// MRPT-serialized map, written to a temporary file renamed into place.
@@ -73,10 +77,12 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
   void ReplaceMap(std::unique_ptr<Map> map) {
     map_ = std::move(map);
     last_ = {};
+    frame_ = {};
   }
 
   std::unique_ptr<Map> map_;
   Products last_;
+  ObservedFrame frame_;
   DepthSourceOptions depth_source_;
 
  private:

@@ -8,6 +8,6 @@ bash scripts/build.sh
 out="${NOVELTY_OUT:-out}"
 build/bin/novelty-sim share/scenarios/glass_and_cup.scn --out "$out/glass_and_cup"
 build/bin/novelty-run --rawlog "$out/glass_and_cup/glass_and_cup.rawlog" \
-  --groundtruth "$out/glass_and_cup/groundtruth" --config share/appearance.ini \
+  --groundtruth "$out/glass_and_cup/groundtruth" --config share/novelty_run.ini \
   --compare-views 2,4 --out "$out/glass_and_cup_run"
 echo "Report: $(realpath "$out")/glass_and_cup_run/report.html"

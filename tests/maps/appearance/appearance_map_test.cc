@@ -318,6 +318,26 @@ TEST(AppearanceMap, ConstantInputThenOneLevelGivesFiniteSurprise) {
               step[0], step[1], truth);
 }
 
+// KL ≥ 0 (Gibbs' inequality): no pixel of any frame may have negative surprise — through view
+// creation, replacement, blended priors of views of different ages and the cup's arrival.
+TEST(AppearanceMap, SurpriseIsNeverNegative) {
+  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
+  AppearanceMap map;
+  double lowest = 0.0;
+  int pixels = 0;
+  for (const Frame& f : Clip()) {
+    const cv::Mat s = map.Insert(f.rgb, f.depth, cam, f.T_world_cam).surprise;
+    for (int i = 0; i < s.rows * s.cols; ++i) {
+      const float v = s.at<float>(i);
+      if (std::isnan(v)) continue;
+      lowest = std::min(lowest, double(v));
+      ++pixels;
+    }
+  }
+  EXPECT_GT(pixels, 100 * 160 * 120 / 2);
+  EXPECT_GE(lowest, 0.0);
+}
+
 TEST(AppearanceMap, BadFramesAreRejectedAndLeaveTheMapUnchanged) {
   const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 1.0);
   AppearanceMap map;

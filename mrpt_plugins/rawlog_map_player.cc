@@ -1,0 +1,114 @@
+#include "mrpt_plugins/rawlog_map_player.h"
+
+#include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CObservationRobotPose.h>
+#include <mrpt/obs/CObservationStereoImages.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <optional>
+#include <stdexcept>
+
+#include "sensors/rawlog/camera_pose_observation.h"
+#include "sensors/rawlog/rawlog_input.h"
+#include "sensors/rawlog/rgbd_observation.h"
+
+namespace novelty::mrpt_plugins {
+
+namespace {
+
+// T_robot_cam of the camera whose frames the maps take from `obs` (the left one of a pair), as
+// the maps decode it.
+Eigen::Isometry3d CameraOnRobotOf(const mrpt::obs::CObservation& obs) {
+  if (const auto* scan = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obs))
+    return sensors::CameraOnRobot(*scan);
+  const auto& pair = dynamic_cast<const mrpt::obs::CObservationStereoImages&>(obs);
+  return sensors::ToEigen(mrpt::poses::CPose3D(pair.cameraPose));
+}
+
+}  // namespace
+
+PoseSource ParsePoseSource(const std::string& text) {
+  if (text == "groundtruth") return PoseSource::kGroundTruth;
+  if (text == "rawlog") return PoseSource::kRawlog;
+  if (text == "odometry") return PoseSource::kOdometry;
+  throw std::invalid_argument("pose source '" + text +
+                              "': expected groundtruth, rawlog or odometry");
+}
+
+class RawlogMapPlayer::Impl {
+ public:
+  Impl(const std::string& path, PoseSource s, std::map<int, Eigen::Isometry3d> poses)
+      : input(path), source(s), camera_poses(std::move(poses)) {}
+  sensors::RawlogInput input;
+  PoseSource source;
+  std::map<int, Eigen::Isometry3d> camera_poses;
+  mrpt::obs::CObservationRobotPose::Ptr last_pose;
+  std::optional<mrpt::poses::CPose3D> odometry;
+  int frames = 0;
+};
+
+RawlogMapPlayer::RawlogMapPlayer(const std::string& rawlog, PoseSource source,
+                                 std::map<int, Eigen::Isometry3d> camera_poses)
+    : impl_(std::make_unique<Impl>(rawlog, source, std::move(camera_poses))) {}
+
+RawlogMapPlayer::~RawlogMapPlayer() = default;
+
+bool RawlogMapPlayer::Next(mrpt::maps::CMultiMetricMap& maps, int& frame) {
+  Impl& m = *impl_;
+  while (true) {
+    mrpt::serialization::CSerializable::Ptr object;
+    try {
+      object = m.input.Next();
+    } catch (const std::exception& e) {  // a rawlog cut short: what was read stays
+      stopped_by_ = e.what();
+      return false;
+    }
+    if (!object) return false;
+    if (auto pose = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(object)) {
+      m.last_pose = pose;
+      continue;
+    }
+    if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(object)) {
+      m.odometry = mrpt::poses::CPose3D(odo->odometry);
+      continue;
+    }
+    auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(object);
+    const bool camera = std::dynamic_pointer_cast<mrpt::obs::CObservation3DRangeScan>(object) ||
+                        std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(object);
+    if (!obs || !camera) continue;
+    frame = ++m.frames;
+    const std::string where =
+        m.input.path() + ": frame " + std::to_string(frame) + " (" + obs->sensorLabel + ")";
+    std::optional<mrpt::poses::CPose3D> robot;
+    if (m.source == PoseSource::kGroundTruth) {
+      const auto it = m.camera_poses.find(frame);
+      if (it != m.camera_poses.end())  // the robot pose that puts the camera there
+        robot = sensors::ToMrpt(it->second * CameraOnRobotOf(*obs).inverse());
+    } else if (m.source == PoseSource::kRawlog) {
+      if (m.last_pose && m.last_pose->timestamp == obs->timestamp)
+        robot = sensors::ToMrpt(sensors::RobotPoseOf(*m.last_pose));
+    } else {
+      robot = m.odometry;
+    }
+    if (!robot) {
+      skip_reasons_.push_back(where + ": no pose");
+      continue;
+    }
+    try {
+      obs->load();
+      const bool used = maps.insertObservation(*obs, *robot);
+      obs->unload();
+      if (!used) {
+        skip_reasons_.push_back(where + ": no map used it");
+        continue;
+      }
+      return true;
+    } catch (const std::exception& e) {
+      obs->unload();
+      skip_reasons_.push_back(where + ": " + e.what());
+    }
+  }
+}
+
+}  // namespace novelty::mrpt_plugins
