@@ -53,6 +53,31 @@ TEST(DepthMeshWarper, SidewaysMoveShiftsAFrontoParallelPlaneByTheDisparity) {
   EXPECT_GT(checked, 100);
 }
 
+// The view angle at each covered pixel against the geometry in double: the surface point on the
+// plane x = 2 m (world), the rays from it to the virtual camera (0.1 m left) and to the source.
+TEST(DepthMeshWarper, ViewAnglesMatchTheGeometry) {
+  WarpOptions o;
+  o.compute_depth = o.compute_view_angles = true;
+  const Eigen::Isometry3d virt = Forward(0.1, 0.05);
+  const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam, virt, o);
+  ASSERT_EQ(w.cos_angle.size(), w.depth.size());
+  int checked = 0;
+  for (int y = 3; y < kCam.height - 3; y += 5) {
+    for (int x = 20; x < kCam.width - 20; x += 5) {
+      const float z = w.depth.at<float>(y, x);
+      if (!(z > 0.0f)) continue;
+      const Eigen::Vector3d p = virt * kCam.Unproject(x, y, z);  // world
+      const Eigen::Vector3d to_virtual = virt.translation() - p, to_source = -p;
+      const double truth = to_virtual.normalized().dot(to_source.normalized());
+      ASSERT_NEAR(w.cos_angle.at<float>(y, x), truth, 2e-6) << x << "," << y;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 300);
+  EXPECT_EQ(w.cos_angle.at<float>(0, kCam.width - 1) == 0.0f,
+            !(w.depth.at<float>(0, kCam.width - 1) > 0.0f));
+}
+
 TEST(DepthMeshWarper, SourceDepthOnlyWhenAsked) {
   // Virtual camera 0.5 m nearer a plane at 2 m: depth 1.5 there, 2 in the source view.
   const Eigen::Isometry3d nearer = LookAt({0.5, 0, 0}, {1.5, 0, 0});

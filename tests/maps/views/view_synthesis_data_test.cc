@@ -60,25 +60,34 @@ class IclNuim : public ::testing::Test {
 
 // Independent figures (each source's depth reprojected into frame 2, then a 5×5 closing): frame 1
 // covers 0.273 of frame 2, frame 4 0.207, frame 5 0.142, their union 0.287; frame 4 alone
-// reprojects at 35.9 dB (the shared data's README). With the program's defaults no weighting
-// may drop covered pixels, and the weighting must beat the thesis's plain average over the same
-// pixels. (The target of 33 dB from 1, 4, 5 is not reached by any blend weighting here: frame 5
-// is 3 dB worse than frames 1 and 4 where they overlap, and neither view angle, resolution nor
-// depth consensus tells it apart; 1 and 4 alone give 33.3 dB.)
-TEST_F(IclNuim, DefaultsKeepCoverageAndBeatThePlainAverage) {
+// reprojects at 35.9 dB (the shared data's README). With the program's defaults every pixel a
+// view covers is covered. The target of 33 dB from 1, 4, 5 at that coverage is not met: the
+// defaults (the thesis's average) give 31.4 dB, and no blend weighting reaches it — frame 5 is
+// 3 dB worse than frames 1 and 4 where they overlap, and neither view angle, resolution nor
+// depth consensus tells it apart (1 and 4 alone give 33.3 dB at 0.280).
+TEST_F(IclNuim, DefaultsKeepCoverage) {
   const auto [psnr3, coverage3] = PsnrAndCoverage({1, 4, 5});
   EXPECT_GE(coverage3, 0.28);
-  SynthesisOptions thesis;
-  thesis.blend = BlendOptions::ThesisAverage();
-  const auto [psnr_thesis, coverage_thesis] = PsnrAndCoverage({1, 4, 5}, thesis);
-  EXPECT_NEAR(coverage3, coverage_thesis, 0.002) << "weights must not change what is covered";
-  EXPECT_GT(psnr3, psnr_thesis);
+  EXPECT_GT(psnr3, 30.0);
   const auto [psnr4, coverage4] = PsnrAndCoverage({4});
   EXPECT_GT(psnr4, 35.0);
   EXPECT_GE(coverage4, 0.20);
   const auto [psnr5, coverage5] = PsnrAndCoverage({5});
   EXPECT_GE(coverage5, 0.13);
   (void)psnr5;
+}
+
+// Weighting views by their angle to the surface, relative to each pixel's best view, ranks them
+// without changing what is covered, and here gains over the plain average.
+TEST_F(IclNuim, AngleWeightingKeepsCoverageAndBeatsThePlainAverage) {
+  SynthesisOptions weighted;
+  weighted.blend.angle_power = 10.0;
+  const auto [psnr, coverage] = PsnrAndCoverage({1, 4, 5}, weighted);
+  SynthesisOptions thesis;
+  thesis.blend = BlendOptions::ThesisAverage();
+  const auto [psnr_thesis, coverage_thesis] = PsnrAndCoverage({1, 4, 5}, thesis);
+  EXPECT_NEAR(coverage, coverage_thesis, 0.002) << "weights must not change what is covered";
+  EXPECT_GT(psnr, psnr_thesis);
 }
 
 // The weighting that made the old defaults: cos φ^10000 taken absolutely dropped every pixel no
