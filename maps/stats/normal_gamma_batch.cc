@@ -39,10 +39,9 @@ void ProcessOne(std::size_t i, const ChannelPlanes& c, float* surprise,
     p[k] = valid ? UpdateWithForgetting(p0[k], T(c.x[k][i]), o.update, &shift[k]) : p0[k];
   }
   // eq. 4.21: every channel's KL has its own α terms (α is shared, its terms are not).
-  const T kl = valid ? std::max(T(0), T(channels) * NormalGammaKLAlphaTerms(p[0].alpha,
-                                                                            p0[0].alpha, o.kl) +
-                                           NormalGammaKLOtherTerms(p, p0, shift, channels))
-                     : T(0);
+  const T sum = T(channels) * NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl) +
+                NormalGammaKLOtherTerms(p, p0, shift, channels);
+  const T kl = !valid ? T(0) : sum < T(0) ? T(0) : sum;  // rounding below 0 → 0; NaN stays
   for (int k = 0; k < channels; ++k) {
     const NormalGammaPlanes& q = c.posterior[std::size_t(k)];
     q.alpha[i] = static_cast<float>(p[k].alpha);
@@ -118,8 +117,9 @@ __attribute__((flatten)) void ProcessPacket(std::size_t i, const ChannelPlanes& 
     const float first = a0[0];
     if (all_equal(a0_part, [&](int) { return L::F16{} + first; })) cache = {first, terms};
   }
-  // KL ≥ 0 (Gibbs); float rounding of a near-zero sum must not make it negative.
-  kl = kl.max(0.0f);
+  // KL ≥ 0 (Gibbs); float rounding of a near-zero sum must not make it negative. A NaN (a state
+  // gone bad) stays NaN: max() would turn it into a silent 0.
+  kl = (kl < 0.0f).select(Packet::Zero(), kl);
   PacketMap s(surprise + i);
   for (int k = 0; k < channels; ++k) {
     const NormalGammaPlanes& q = c.posterior[std::size_t(k)];

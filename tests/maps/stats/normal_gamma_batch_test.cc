@@ -392,6 +392,27 @@ TEST(NormalGammaBatch, KnownThreeChannelCase) {
   }
 }
 
+// A prior gone bad (β = 0: no precision) gives NaN surprise, never a silent 0 from the clamp that
+// keeps rounding from making a KL negative.
+TEST(NormalGammaBatch, ABadPriorGivesNaNNotZero) {
+  for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
+    const std::size_t n = 40;
+    Planes prior(n, 3);
+    std::fill(prior.beta.begin(), prior.beta.end(), 0.0f);
+    std::fill(prior.sigma.begin(), prior.sigma.end(), 0.0f);
+    prior.x = prior.tau;  // the same value: 0/0 in the KL's β and σ terms
+    Planes post(n, 4);
+    std::vector<float> surprise(n, 0.0f);
+    SurpriseBatchOptions o;
+    o.kernel = kernel;
+    o.update.min_variance = 0.0;  // the thesis's update: nothing lifts β
+    o.update.sigma_min = 1e-30;
+    UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post.Mutable(), surprise.data(), n,
+                                o);
+    for (std::size_t i = 0; i < n; ++i) EXPECT_TRUE(std::isnan(surprise[i])) << i;
+  }
+}
+
 TEST(NormalGammaBatch, ChannelsMustShareAlpha) {
   Planes a(16, 1), b(16, 2);
   std::vector<float> surprise(16, 0.0f);
