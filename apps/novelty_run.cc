@@ -10,7 +10,8 @@
 // that novelty-poses put into the rawlog (depth may come from novelty-depth), or from wheel
 // odometry — and the products read back from the maps. It writes
 //   OUT/panels/NNNNNN.png  camera | expected | surprise | uncertainty | differencing
-//   OUT/metrics.csv        frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff for every
+//   OUT/metrics.csv        frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff,coverage
+//                          (share of pixels with a prediction, which AS is measured over) for every
 //                          changed object in view (regions from the ground-truth novelty masks:
 //                          added objects and the arm by id, "removed" where objects were taken)
 //   OUT/findings.csv       the findings of thesis 4.3, each over the first run after its change,
@@ -51,6 +52,7 @@
 #include "mrpt_plugins/c_differencing_map.h"
 #include "mrpt_plugins/rawlog_map_player.h"
 #include "mrpt_plugins/register_maps.h"
+#include "sensors/rawlog/brief_message.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 
 #include <mrpt/config/CConfigFile.h>
@@ -172,26 +174,21 @@ struct RunMaps {
           const std::vector<double>& factors)
       : sparser_factors(factors), sparser_rows(factors.size()) {
     mrpt_plugins::RegisterMaps();
+    CheckDeclarations(ini, source);
     mrpt::maps::TSetOfMetricMapInitializers inits;
     try {
       inits.loadFromConfigFile(ini, "map");
     } catch (const std::exception& e) {
-      throw std::runtime_error(source + ": [map]: " + e.what());
+      throw std::runtime_error(source + ": " + sensors::BriefMessage(e));
     }
+    // CheckDeclarations made these exactly one each.
     std::shared_ptr<mrpt_plugins::CAppearanceMap::TMapDefinition> appearance;
     std::shared_ptr<mrpt_plugins::CDifferencingMap::TMapDefinition> differencing;
     for (auto& def : inits) {
-      if (auto a = std::dynamic_pointer_cast<mrpt_plugins::CAppearanceMap::TMapDefinition>(def);
-          a && !appearance)
+      if (auto a = std::dynamic_pointer_cast<mrpt_plugins::CAppearanceMap::TMapDefinition>(def))
         appearance = a;
-      if (auto d = std::dynamic_pointer_cast<mrpt_plugins::CDifferencingMap::TMapDefinition>(def);
-          d && !differencing)
+      if (auto d = std::dynamic_pointer_cast<mrpt_plugins::CDifferencingMap::TMapDefinition>(def))
         differencing = d;
-    }
-    if (!appearance || !differencing) {
-      throw std::runtime_error(source +
-                               ": [map] must declare CAppearanceMap_count = 1 and "
-                               "CDifferencingMap_count = 1 (see share/novelty_run.ini)");
     }
     appearance->options.views.new_view_distance *= reduction;
     differencing->options.new_view_distance *= reduction;
@@ -204,6 +201,50 @@ struct RunMaps {
       inits.push_back(d);
     }
     multi.setListOfMaps(inits);
+  }
+
+  // What MRPT's loader passes over in silence is an error here: in [map] only <Class>_count keys
+  // of known map classes, exactly one CAppearanceMap and one CDifferencingMap (the sparser maps
+  // are copies of theirs), and no section no map reads (a misspelt or unclosed header).
+  static void CheckDeclarations(const mrpt::config::CConfigFileBase& ini,
+                                const std::string& source) {
+    std::vector<std::string> keys, sections;
+    ini.getAllKeys("map", keys);
+    ini.getAllSections(sections);
+    std::map<std::string, int> counts;
+    for (const std::string& key : keys) {
+      const std::string where = source + ": [map] " + key;
+      const auto suffix = key.rfind("_count");
+      if (suffix == std::string::npos || suffix + 6 != key.size())
+        throw std::runtime_error(where + ": only <MapClass>_count keys belong in [map]");
+      const std::string cls = key.substr(0, suffix);
+      const int n = ini.read_int("map", key, -1);
+      if (n < 0) throw std::runtime_error(where + ": not a count >= 0");
+      if (n > 0 && !std::unique_ptr<mrpt::maps::TMetricMapInitializer>(
+                       mrpt::maps::TMetricMapInitializer::factory(cls)))
+        throw std::runtime_error(where + ": unknown map class '" + cls + "'");
+      counts[cls] = n;
+    }
+    if (counts["CAppearanceMap"] != 1 || counts["CDifferencingMap"] != 1) {
+      throw std::runtime_error(source +
+                               ": [map] must declare CAppearanceMap_count = 1 and "
+                               "CDifferencingMap_count = 1 (see share/novelty_run.ini)");
+    }
+    for (const std::string& section : sections) {
+      if (section == "map" || section.empty()) continue;
+      bool read = false;
+      for (const auto& [cls, n] : counts) {
+        for (int k = 0; k < n; ++k) {
+          char prefix[128];
+          std::snprintf(prefix, sizeof prefix, "map_%s_%02d_", cls.c_str(), k);
+          for (const char* part : {"options", "insertOpts", "creationOpts", "likelihoodOpts"})
+            read = read || section == std::string(prefix) + part;
+        }
+      }
+      if (!read)
+        throw std::runtime_error(source + ": section [" + section +
+                                 "] is read by no declared map (misspelt?)");
+    }
   }
   mrpt_plugins::CAppearanceMap& appearance(std::size_t k = 0) const {
     return *multi.mapByClass<mrpt_plugins::CAppearanceMap>(k);
@@ -245,13 +286,14 @@ std::vector<eval::Finding> ThesisFindings(const std::vector<Phase>& phases,
 void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>& rows,
                  const std::vector<Phase>& phases, const std::vector<eval::Finding>& findings,
                  const RunMaps& maps, const std::vector<int>& panel_frames, int frames,
-                 double seconds, int views) {
+                 double seconds, int views, const std::vector<std::string>& notes) {
   eval::HtmlReport report("NoveltyMaps — Bayesian surprise vs image differencing");
   char summary[256];
   std::snprintf(summary, sizeof summary,
                 "%d frames in %.1f s (%.1f frames/s); %d reference views in the map at the end.",
                 frames, seconds, frames / seconds, views);
   report.Paragraph(summary);
+  for (const std::string& note : notes) report.Paragraph(note);
   std::ofstream csv(out + "/findings.csv");
   eval::FindingsReport findings_report(csv, &std::cout);
   findings_report.AddFindings(rows, findings, report);
@@ -289,7 +331,7 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
       table.push_back(line);
     }
     report.Table({"phase", "frames", "mean AS surprise", "mean AS differencing",
-                  "mean PAS surprise", "mean PAS differencing", "higher AS"},
+                  "mean PAS surprise", "mean PAS differencing", "coverage", "higher AS"},
                  table);
   }
   report.Heading("Panels: camera | expected (τ) | surprise | uncertainty Σβ | differencing");
@@ -315,7 +357,7 @@ int main(int argc, char** argv) {
       "CDifferencingMap_count; options in [map_CAppearanceMap_00_options] ...), e.g. "
       "share/novelty_run.ini; default: both maps with default options",
       false, "", "INI", cmd);
-  TCLAP::ValueArg<int> max_frames("", "frames", "Process only the first N frames", false, 0, "N",
+  TCLAP::ValueArg<int> max_frames("", "frames", "Stop after N frames inserted into the maps", false, 0, "N",
                                   cmd);
   TCLAP::ValueArg<int> panels_every("", "panels-every", "Write every K-th panel (default 10)",
                                     false, 10, "K", cmd);
@@ -346,29 +388,48 @@ int main(int argc, char** argv) {
     if (!(reduction.getValue() >= 1.0))
       throw std::invalid_argument("--view-reduction must be >= 1");
     if (panels_every.getValue() < 1) throw std::invalid_argument("--panels-every must be >= 1");
+    if (max_frames.isSet() && max_frames.getValue() < 1)
+      throw std::invalid_argument("--frames must be >= 1");
     std::unique_ptr<mrpt::config::CConfigFileBase> ini;
     std::string ini_name = "default maps";
     if (config.isSet()) {
       ini_name = config.getValue();
       if (!std::filesystem::is_regular_file(ini_name))
         throw std::runtime_error(ini_name + ": no such config file");
-      ini = std::make_unique<mrpt::config::CConfigFile>(ini_name);
+      try {
+        ini = std::make_unique<mrpt::config::CConfigFile>(ini_name);
+      } catch (const std::exception& e) {
+        throw std::runtime_error(ini_name + ": not a readable .ini file (" +
+                                 sensors::BriefMessage(e, 120) + ")");
+      }
     } else {
       ini = std::make_unique<mrpt::config::CConfigFileMemory>(kDefaultMaps);
     }
     RunMaps maps(*ini, ini_name, reduction.getValue(), ParseFactors(compare_views.getValue()));
     mrpt_plugins::CAppearanceMap& map = maps.appearance();
-    if (map_in.isSet()) map.LoadFromFile(map_in.getValue());  // its options come with it
+    if (map_in.isSet()) {
+      map.LoadFromFile(map_in.getValue());
+      std::fprintf(stderr,
+                   "novelty-run: continuing %s with the options saved in it (the .ini's options "
+                   "and --view-reduction apply to the other maps)\n",
+                   map_in.getValue().c_str());
+    }
     const std::string gt = truth.getValue(), dir = out.getValue();
+    // Where the map goes is checked before the run, not after it.
+    const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";
+    if (std::filesystem::is_directory(saved))
+      throw std::runtime_error("--map-out " + saved + ": is a directory");
     const auto poses = sensors::LoadGroundTruthPoses(gt + "/poses.csv");
     const auto names = ReadObjects(gt);
     const auto phases = ReadPhases(gt);
     std::filesystem::create_directories(dir + "/panels");
+    if (const auto parent = std::filesystem::path(saved).parent_path(); !parent.empty())
+      std::filesystem::create_directories(parent);
     mrpt_plugins::RawlogMapPlayer player(rawlog.getValue(),
                                          mrpt_plugins::ParsePoseSource(pose_source.getValue()),
                                          poses);
     std::ofstream csv(dir + "/metrics.csv");
-    csv << "frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff\n";
+    csv << "frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff,coverage\n";
     std::vector<eval::SelectivityRow> rows;
     std::vector<int> panel_frames;
     int frames = 0, index = 0;
@@ -389,7 +450,7 @@ int main(int argc, char** argv) {
           csv << r.frame << "," << PhaseOf(phases, index) << "," << r.region << ","
               << eval::FormatDb(r.surprise.as_db) << "," << eval::FormatDb(r.surprise.pas_db) << ","
               << eval::FormatDb(r.difference.as_db) << "," << eval::FormatDb(r.difference.pas_db)
-              << "\n";
+              << "," << r.surprise.coverage << "\n";
           rows.push_back(r);
           for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k) {
             maps.sparser_rows[k].push_back(
@@ -418,20 +479,36 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "\n");
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // Skipped frames: the first few reasons, then a count (one line per frame can be thousands).
+    constexpr std::size_t kReasonsShown = 10;
+    const auto& reasons = player.skip_reasons();
+    for (std::size_t k = 0; k < std::min(reasons.size(), kReasonsShown); ++k)
+      std::fprintf(stderr, "novelty-run: skipped %s\n", reasons[k].c_str());
+    if (reasons.size() > kReasonsShown)
+      std::fprintf(stderr, "novelty-run: … and %zu more frames skipped\n",
+                   reasons.size() - kReasonsShown);
+    std::vector<std::string> notes;
+    if (!reasons.empty())
+      notes.push_back(std::to_string(reasons.size()) + " frames skipped; the first: " +
+                      reasons.front());
+    if (!player.stopped_by().empty()) {
+      notes.push_back("The rawlog ends early: " + player.stopped_by() + ". Results cover the " +
+                      std::to_string(frames) + " frames read.");
+      std::fprintf(stderr, "novelty-run: %s\n", notes.back().c_str());
+    }
+    if (frames == 0) {  // nothing to report, and a saved map must not be replaced by an empty one
+      throw std::runtime_error(rawlog.getValue() + ": no frame was inserted into the maps" +
+                               (reasons.empty() ? std::string(" (no camera observation)")
+                                                : " (" + std::to_string(reasons.size()) +
+                                                      " skipped; the first: " + reasons.front() +
+                                                      ")"));
+    }
     std::printf(
         "Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");
     WriteReport(dir, rows, phases, ThesisFindings(phases, poses), maps, panel_frames, frames,
-                seconds, map.map().store().size());
-    const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";
+                seconds, map.map().store().size(), notes);
     map.SaveToFile(saved);
     map.SaveSceneFile(dir + "/map.3Dscene");  // for SceneViewer3D
-    for (const std::string& why : player.skip_reasons()) {
-      std::fprintf(stderr, "novelty-run: skipped %s\n", why.c_str());
-    }
-    if (!player.stopped_by().empty()) {
-      std::fprintf(stderr, "novelty-run: the rawlog ends early (%s); results cover the %d frames "
-                           "read\n", player.stopped_by().c_str(), frames);
-    }
     std::printf(
         "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
         "  map:     %s\n  report:  %s/report.html\n",
@@ -441,7 +518,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-run: %s\n", e.what());
+    std::fprintf(stderr, "novelty-run: %s\n", sensors::BriefMessage(e, 600).c_str());
     return 1;
   }
 }

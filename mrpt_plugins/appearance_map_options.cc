@@ -94,7 +94,9 @@ MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::
   try {
     u.Check();
     if (!(v.blend.depth_tolerance >= 0.0 && v.blend.angle_power >= 0.0))
-      throw std::invalid_argument("depth_tolerance and angle_power must be >= 0");
+      throw std::invalid_argument("depth_tolerance and angle_power must be >= 0, got " +
+                                  std::to_string(v.blend.depth_tolerance) + " and " +
+                                  std::to_string(v.blend.angle_power));
     stats::CheckNormalGamma(init, "initial prior");
     const auto& sweep = d.stereo.sweep;
     if (!(sweep.near > 0 && sweep.far > sweep.near) || sweep.hypotheses < 2 ||

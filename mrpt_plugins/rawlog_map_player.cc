@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "sensors/rawlog/brief_message.h"
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rgbd_observation.h"
@@ -106,7 +107,7 @@ bool RawlogMapPlayer::Next(mrpt::maps::CMultiMetricMap& maps, int& frame) {
       return true;
     } catch (const std::exception& e) {
       obs->unload();
-      skip_reasons_.push_back(where + ": " + e.what());
+      skip_reasons_.push_back(where + ": " + sensors::BriefMessage(e));
     }
   }
 }

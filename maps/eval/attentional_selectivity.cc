@@ -22,6 +22,7 @@ Selectivity AttentionalSelectivity(const cv::Mat& map, const cv::Mat& region,
     int in_region;  // pixels of the block in the mask
   };
   std::vector<Block> blocks;
+  long valid_pixels = 0, pixels = 0;
   for (int j = o.border_blocks; j < by - o.border_blocks; ++j) {
     for (int i = o.border_blocks; i < bx - o.border_blocks; ++i) {
       double sum = 0.0;
@@ -35,6 +36,8 @@ Selectivity AttentionalSelectivity(const cv::Mat& map, const cv::Mat& region,
           ++valid;
         }
       }
+      valid_pixels += valid;
+      pixels += b * b;
       if (valid > 0) blocks.push_back({sum / valid, in_region});
     }
   }
@@ -45,6 +48,7 @@ Selectivity AttentionalSelectivity(const cv::Mat& map, const cv::Mat& region,
   const int least = has_whole_block ? whole : (whole + 1) / 2;
   double region_sum = 0.0, region_max = 0.0, outside_max = 0.0;
   Selectivity s;
+  s.coverage = pixels > 0 ? double(valid_pixels) / double(pixels) : 0.0;
   for (const Block& k : blocks) {
     if (k.in_region >= least) {
       region_sum += k.mean;

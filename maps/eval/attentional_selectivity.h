@@ -26,6 +26,9 @@ struct Selectivity {
   int region_blocks = 0;
   int outside_blocks = 0;
   int border_blocks = 0;  ///< blocks partly in the region: neither region nor outside
+  /// Share of the evaluated pixels (all but the border) that have a value (not NaN): AS and PAS
+  /// are measured over those, so report this beside them.
+  double coverage = 0.0;
 };
 
 /// map: CV_32FC1 values ≥ 0; region: CV_8UC1 mask (non-zero = region) of the same size.

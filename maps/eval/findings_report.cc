@@ -32,15 +32,17 @@ std::string FormatDb(double v) {
 }
 
 std::vector<std::string> MeanCells(const MeanSelectivity& m) {
-  if (m.frames == 0) return {"0", "", "", "", ""};
-  return {std::to_string(m.frames), FormatDb(m.as_surprise), FormatDb(m.as_difference),
-          FormatDb(m.pas_surprise), FormatDb(m.pas_difference)};
+  if (m.frames == 0) return {"0", "", "", "", "", ""};
+  char coverage[16];
+  std::snprintf(coverage, sizeof coverage, "%.3f", m.coverage);
+  return {std::to_string(m.frames),   FormatDb(m.as_surprise),    FormatDb(m.as_difference),
+          FormatDb(m.pas_surprise),   FormatDb(m.pas_difference), coverage};
 }
 
 FindingsReport::FindingsReport(std::ostream& csv, std::ostream* console)
     : csv_(csv), console_(console) {
   csv_ << "finding,region,first_frame,last_frame,frames,AS_surprise,AS_diff,PAS_surprise,"
-          "PAS_diff,holds\n";
+          "PAS_diff,coverage,holds\n";
 }
 
 void FindingsReport::WriteRow(const std::string& what, const Finding& f, const MeanSelectivity& m,
@@ -71,14 +73,15 @@ void FindingsReport::AddFindings(const std::vector<SelectivityRow>& rows,
     Print(f.what, r.holds, r.mean.frames,
           "AS " + FormatDb(r.mean.as_surprise) + " vs " + FormatDb(r.mean.as_difference) +
               " dB, PAS " + FormatDb(r.mean.pas_surprise) + " vs " +
-              FormatDb(r.mean.pas_difference) + " dB, frames " + frames);
+              FormatDb(r.mean.pas_difference) + " dB, coverage " +
+              (r.mean.frames ? MeanCells(r.mean)[5] : "-") + ", frames " + frames);
   }
   report.Heading("Findings of thesis 4.3, over the first run after each change");
   report.Paragraph(
       "Means over the frames of the first run (Q1 to Q2) of each phase that show the region; "
       "surprise / differencing.");
   report.Table({"finding", "frames", "frames with region", "AS surprise", "AS differencing",
-                "PAS surprise", "PAS differencing", "holds"},
+                "PAS surprise", "PAS differencing", "coverage", "holds"},
                table);
 }
 

@@ -12,10 +12,12 @@ MeanSelectivity MeanOver(const std::vector<SelectivityRow>& rows, const std::str
     if (!std::isfinite(r.surprise.as_db) || !std::isfinite(r.difference.as_db)) continue;
     m.as_surprise += r.surprise.as_db, m.pas_surprise += r.surprise.pas_db;
     m.as_difference += r.difference.as_db, m.pas_difference += r.difference.pas_db;
+    m.coverage += r.surprise.coverage;
     ++m.frames;
   }
   if (m.frames > 0) {
-    for (double* v : {&m.as_surprise, &m.pas_surprise, &m.as_difference, &m.pas_difference})
+    for (double* v :
+         {&m.as_surprise, &m.pas_surprise, &m.as_difference, &m.pas_difference, &m.coverage})
       *v /= m.frames;
   }
   return m;

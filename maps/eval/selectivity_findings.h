@@ -21,6 +21,7 @@ struct SelectivityRow {
 struct MeanSelectivity {
   int frames = 0;
   double as_surprise = 0, pas_surprise = 0, as_difference = 0, pas_difference = 0;
+  double coverage = 0;  ///< mean share of the surprise map's evaluated pixels with a value
 };
 
 MeanSelectivity MeanOver(const std::vector<SelectivityRow>& rows, const std::string& region,

@@ -1,5 +1,7 @@
 #include "sensors/rawlog/rawlog_input.h"
 
+#include "sensors/rawlog/brief_message.h"
+
 #include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/serialization/CArchive.h>
@@ -38,7 +40,7 @@ mrpt::serialization::CSerializable::Ptr RawlogInput::Next() {
     return nullptr;
   } catch (const std::exception& e) {
     throw std::runtime_error(path_ + ": cannot read object " + std::to_string(objects_ + 1) + ": " +
-                             e.what());
+                             BriefMessage(e));
   }
   ++objects_;
   return obj;

@@ -22,7 +22,7 @@ TEST(FormatDb, TwoDecimalsAndBlankForNoValue) {
   EXPECT_EQ(FormatDb(4.186), "4.19");
   EXPECT_EQ(FormatDb(-0.005), "-0.01");
   EXPECT_EQ(FormatDb(std::numeric_limits<double>::quiet_NaN()), "");
-  EXPECT_EQ(MeanCells({}), (std::vector<std::string>{"0", "", "", "", ""}));
+  EXPECT_EQ(MeanCells({}), (std::vector<std::string>{"0", "", "", "", "", ""}));
 }
 
 // The glass (frames 10–11: AS surprise 0.5 > differencing −0.5 on average) holds; the cup has
@@ -39,11 +39,11 @@ TEST(FindingsReport, WritesEachFindingToTheCsvTheConsoleAndTheReportAlike) {
   FindingsReport(csv, &console).AddFindings(rows, findings, report);
   EXPECT_EQ(csv.str(),
             "finding,region,first_frame,last_frame,frames,AS_surprise,AS_diff,PAS_surprise,"
-            "PAS_diff,holds\n"
-            "\"glass: surprise more selective\",glass,10,12,2,0.50,-0.50,3.50,1.50,yes\n"
-            "\"cup: detected by both\",cup,10,12,0,,,,,no frames\n");
+            "PAS_diff,coverage,holds\n"
+            "\"glass: surprise more selective\",glass,10,12,2,0.50,-0.50,3.50,1.50,0.900,yes\n"
+            "\"cup: detected by both\",cup,10,12,0,,,,,,no frames\n");
   EXPECT_NE(console.str().find("glass: surprise more selective"), std::string::npos);
-  EXPECT_NE(console.str().find(" holds (AS 0.50 vs -0.50 dB, PAS 3.50 vs 1.50 dB, frames 10–12)"),
+  EXPECT_NE(console.str().find(" holds (AS 0.50 vs -0.50 dB, PAS 3.50 vs 1.50 dB, coverage 0.900, frames 10–12)"),
             std::string::npos)
       << console.str();
   EXPECT_NE(console.str().find(" no frames (AS"), std::string::npos) << console.str();
@@ -66,13 +66,13 @@ TEST(FindingsReport, ComparesSparserRunsWithTheFullMap) {
   out.AddSparser(full, 150, {{2, 75, &r2}, {4, 50, &r4}}, findings, report);
   const std::string kHeader =
       "finding,region,first_frame,last_frame,frames,AS_surprise,AS_diff,PAS_surprise,PAS_diff,"
-      "holds\n";
+      "coverage,holds\n";
   EXPECT_EQ(csv.str(),
             kHeader +
                 "\"glass, R2: surprise loses less PAS than differencing (fig. 4.13)\",glass,10,12,"
-                "1,0.00,0.00,3.00,0.50,yes\n"
+                "1,0.00,0.00,3.00,0.50,0.900,yes\n"
                 "\"glass, R4: surprise loses less PAS than differencing (fig. 4.13)\",glass,10,12,"
-                "1,0.00,0.00,1.50,0.50,no\n");
+                "1,0.00,0.00,1.50,0.50,0.900,no\n");
   EXPECT_NE(console.str().find("does NOT hold (PAS loss 2.00 vs 1.00 dB, 50 views)"),
             std::string::npos)
       << console.str();

@@ -1,0 +1,32 @@
+#include "sensors/rawlog/brief_message.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace novelty::sensors {
+namespace {
+
+TEST(BriefMessage, KeepsOurPrefixAndMrptsMessagesOnOneLine) {
+  const std::string mrpt =
+      "f.rawlog: cannot read object 40: ==== MRPT exception ====\n"
+      "Message:  Exception while parsing typed object 'CObservationBearingRange'\n"
+      "Location: /build/mrpt/CArchive.cpp:123: readObject\n"
+      "Call stack backtrace:\n"
+      "[0x7f] mrpt::serialization::CArchive::ReadObject()\n"
+      "==== MRPT exception ====\n"
+      "Message:  Unexpected end of file\n"
+      "Location: somewhere\n";
+  EXPECT_EQ(BriefMessage(std::runtime_error(mrpt)),
+            "f.rawlog: cannot read object 40: Exception while parsing typed object "
+            "'CObservationBearingRange': Unexpected end of file");
+}
+
+TEST(BriefMessage, PlainTextStaysAndBinaryBytesAreMasked) {
+  EXPECT_EQ(BriefMessage(std::string("no such rawlog")), "no such rawlog");
+  EXPECT_EQ(BriefMessage(std::string("class <\x01\xff> x\ny")), "class <?" "?> x y");
+  EXPECT_EQ(BriefMessage(std::string(500, 'a'), 10), std::string(10, 'a') + "…");
+}
+
+}  // namespace
+}  // namespace novelty::sensors
