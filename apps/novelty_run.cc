@@ -47,9 +47,9 @@
 #include "maps/eval/html_report.h"
 #include "maps/eval/selectivity_findings.h"
 #include "maps/eval/write_rgb_image.h"
-#include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
+#include "mrpt_plugins/multi_map_config.h"
 #include "mrpt_plugins/rawlog_map_player.h"
 #include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/brief_message.h"
@@ -174,14 +174,15 @@ struct RunMaps {
           const std::vector<double>& factors)
       : sparser_factors(factors), sparser_rows(factors.size()) {
     mrpt_plugins::RegisterMaps();
-    CheckDeclarations(ini, source);
+    // The sparser maps are copies of the one appearance and one differencing map.
+    mrpt_plugins::CheckMultiMapConfig(ini, "map", source, {"CAppearanceMap", "CDifferencingMap"});
     mrpt::maps::TSetOfMetricMapInitializers inits;
     try {
       inits.loadFromConfigFile(ini, "map");
     } catch (const std::exception& e) {
       throw std::runtime_error(source + ": " + sensors::BriefMessage(e));
     }
-    // CheckDeclarations made these exactly one each.
+    // CheckMultiMapConfig made these exactly one each.
     std::shared_ptr<mrpt_plugins::CAppearanceMap::TMapDefinition> appearance;
     std::shared_ptr<mrpt_plugins::CDifferencingMap::TMapDefinition> differencing;
     for (auto& def : inits) {
@@ -203,49 +204,6 @@ struct RunMaps {
     multi.setListOfMaps(inits);
   }
 
-  // What MRPT's loader passes over in silence is an error here: in [map] only <Class>_count keys
-  // of known map classes, exactly one CAppearanceMap and one CDifferencingMap (the sparser maps
-  // are copies of theirs), and no section no map reads (a misspelt or unclosed header).
-  static void CheckDeclarations(const mrpt::config::CConfigFileBase& ini,
-                                const std::string& source) {
-    std::vector<std::string> keys, sections;
-    ini.getAllKeys("map", keys);
-    ini.getAllSections(sections);
-    std::map<std::string, int> counts;
-    for (const std::string& key : keys) {
-      const std::string where = source + ": [map] " + key;
-      const auto suffix = key.rfind("_count");
-      if (suffix == std::string::npos || suffix + 6 != key.size())
-        throw std::runtime_error(where + ": only <MapClass>_count keys belong in [map]");
-      const std::string cls = key.substr(0, suffix);
-      const int n = ini.read_int("map", key, -1);
-      if (n < 0) throw std::runtime_error(where + ": not a count >= 0");
-      if (n > 0 && !std::unique_ptr<mrpt::maps::TMetricMapInitializer>(
-                       mrpt::maps::TMetricMapInitializer::factory(cls)))
-        throw std::runtime_error(where + ": unknown map class '" + cls + "'");
-      counts[cls] = n;
-    }
-    if (counts["CAppearanceMap"] != 1 || counts["CDifferencingMap"] != 1) {
-      throw std::runtime_error(source +
-                               ": [map] must declare CAppearanceMap_count = 1 and "
-                               "CDifferencingMap_count = 1 (see share/novelty_run.ini)");
-    }
-    for (const std::string& section : sections) {
-      if (section == "map" || section.empty()) continue;
-      bool read = false;
-      for (const auto& [cls, n] : counts) {
-        for (int k = 0; k < n; ++k) {
-          char prefix[128];
-          std::snprintf(prefix, sizeof prefix, "map_%s_%02d_", cls.c_str(), k);
-          for (const char* part : {"options", "insertOpts", "creationOpts", "likelihoodOpts"})
-            read = read || section == std::string(prefix) + part;
-        }
-      }
-      if (!read)
-        throw std::runtime_error(source + ": section [" + section +
-                                 "] is read by no declared map (misspelt?)");
-    }
-  }
   mrpt_plugins::CAppearanceMap& appearance(std::size_t k = 0) const {
     return *multi.mapByClass<mrpt_plugins::CAppearanceMap>(k);
   }
@@ -299,8 +257,8 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
   findings_report.AddFindings(rows, findings, report);
   std::vector<eval::SparserRun> sparser_runs;
   for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k)
-    sparser_runs.push_back({maps.sparser_factors[k],
-                            maps.appearance(k + 1).map().store().size(), &maps.sparser_rows[k]});
+    sparser_runs.push_back({maps.sparser_factors[k], maps.appearance(k + 1).map().store().size(),
+                            &maps.sparser_rows[k]});
   findings_report.AddSparser(rows, views, sparser_runs, findings, report);
   std::vector<eval::PlotBand> bands;
   for (const Phase& p : phases) bands.push_back({double(p.first), double(p.last), p.name});
@@ -357,8 +315,8 @@ int main(int argc, char** argv) {
       "CDifferencingMap_count; options in [map_CAppearanceMap_00_options] ...), e.g. "
       "share/novelty_run.ini; default: both maps with default options",
       false, "", "INI", cmd);
-  TCLAP::ValueArg<int> max_frames("", "frames", "Stop after N frames inserted into the maps", false, 0, "N",
-                                  cmd);
+  TCLAP::ValueArg<int> max_frames("", "frames", "Stop after N frames inserted into the maps", false,
+                                  0, "N", cmd);
   TCLAP::ValueArg<int> panels_every("", "panels-every", "Write every K-th panel (default 10)",
                                     false, 10, "K", cmd);
   TCLAP::ValueArg<std::string> map_in("", "map-in", "Continue from a saved appearance map", false,
@@ -425,9 +383,8 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(dir + "/panels");
     if (const auto parent = std::filesystem::path(saved).parent_path(); !parent.empty())
       std::filesystem::create_directories(parent);
-    mrpt_plugins::RawlogMapPlayer player(rawlog.getValue(),
-                                         mrpt_plugins::ParsePoseSource(pose_source.getValue()),
-                                         poses);
+    mrpt_plugins::RawlogMapPlayer player(
+        rawlog.getValue(), mrpt_plugins::ParsePoseSource(pose_source.getValue()), poses);
     std::ofstream csv(dir + "/metrics.csv");
     csv << "frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff,coverage\n";
     std::vector<eval::SelectivityRow> rows;
@@ -489,8 +446,8 @@ int main(int argc, char** argv) {
                    reasons.size() - kReasonsShown);
     std::vector<std::string> notes;
     if (!reasons.empty())
-      notes.push_back(std::to_string(reasons.size()) + " frames skipped; the first: " +
-                      reasons.front());
+      notes.push_back(std::to_string(reasons.size()) +
+                      " frames skipped; the first: " + reasons.front());
     if (!player.stopped_by().empty()) {
       notes.push_back("The rawlog ends early: " + player.stopped_by() + ". Results cover the " +
                       std::to_string(frames) + " frames read.");
@@ -498,10 +455,10 @@ int main(int argc, char** argv) {
     }
     if (frames == 0) {  // nothing to report, and a saved map must not be replaced by an empty one
       throw std::runtime_error(rawlog.getValue() + ": no frame was inserted into the maps" +
-                               (reasons.empty() ? std::string(" (no camera observation)")
-                                                : " (" + std::to_string(reasons.size()) +
-                                                      " skipped; the first: " + reasons.front() +
-                                                      ")"));
+                               (reasons.empty()
+                                    ? std::string(" (no camera observation)")
+                                    : " (" + std::to_string(reasons.size()) +
+                                          " skipped; the first: " + reasons.front() + ")"));
     }
     std::printf(
         "Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");

@@ -10,6 +10,11 @@
 
 namespace novelty::mrpt_plugins {
 
+std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config) {
+  const auto* file = dynamic_cast<const mrpt::config::CConfigFile*>(&config);
+  return file ? file->getAssociatedFile() : "map definition";
+}
+
 MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::string& section,
                         const std::string& source) {
   MapConfig result;
@@ -22,7 +27,12 @@ MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::
   auto number = [&](double* field) {
     return [field](const std::string& text) {
       std::size_t used = 0;
-      const double value = std::stod(text, &used);
+      double value = 0.0;
+      try {
+        value = std::stod(text, &used);
+      } catch (const std::exception&) {
+        throw std::invalid_argument("not a number");
+      }
       if (text.find_first_not_of(" \t", used) != std::string::npos || !std::isfinite(value)) {
         throw std::invalid_argument("not a number");
       }

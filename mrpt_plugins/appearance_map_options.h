@@ -19,6 +19,9 @@ struct MapConfig {
   DepthSourceOptions depth;
 };
 
+/// The file behind `config` (a CConfigFile), else "map definition": how errors name it.
+std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config);
+
 /// Reads `section` of `config` on top of the defaults. `source` names the file in errors.
 MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::string& section,
                         const std::string& source);

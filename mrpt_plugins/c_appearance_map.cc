@@ -122,7 +122,7 @@ CAppearanceMap::TMapDefinition::TMapDefinition() = default;
 
 void CAppearanceMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
-  const MapConfig config = LoadMapConfig(source, prefix + "_options", "map definition");
+  const MapConfig config = LoadMapConfig(source, prefix + "_options", ConfigSourceName(source));
   options = config.map;
   depth_source = config.depth;
 }

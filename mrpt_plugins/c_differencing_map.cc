@@ -61,7 +61,7 @@ CDifferencingMap::TMapDefinition::TMapDefinition() = default;
 
 void CDifferencingMap::TMapDefinition::loadFromConfigFile_map_specific(
     const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
-  const MapConfig config = LoadMapConfig(source, prefix + "_options", "map definition");
+  const MapConfig config = LoadMapConfig(source, prefix + "_options", ConfigSourceName(source));
   options = config.map.views;
   depth_source = config.depth;
 }

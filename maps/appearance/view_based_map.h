@@ -49,7 +49,7 @@ class ViewBasedMap {
     /// static camera) gets that view's own planes, shared and in their stored depth (half floats
     /// possibly): read them, never write into them.
     std::vector<cv::Mat> value;
-    cv::Mat valid;  ///< CV_8UC1
+    cv::Mat valid;        ///< CV_8UC1
     bool warped = false;  ///< views were warped (not an empty map, not a static camera)
   };
   /// The planes `names` (with their channel counts) predicted at `T_world_cam`: one warp per

@@ -35,8 +35,8 @@ std::vector<std::string> MeanCells(const MeanSelectivity& m) {
   if (m.frames == 0) return {"0", "", "", "", "", ""};
   char coverage[16];
   std::snprintf(coverage, sizeof coverage, "%.3f", m.coverage);
-  return {std::to_string(m.frames),   FormatDb(m.as_surprise),    FormatDb(m.as_difference),
-          FormatDb(m.pas_surprise),   FormatDb(m.pas_difference), coverage};
+  return {std::to_string(m.frames), FormatDb(m.as_surprise),    FormatDb(m.as_difference),
+          FormatDb(m.pas_surprise), FormatDb(m.pas_difference), coverage};
 }
 
 FindingsReport::FindingsReport(std::ostream& csv, std::ostream* console)

@@ -95,11 +95,11 @@ NormalGammaT<T> UpdateWithSigma(const NormalGammaT<T>& prior, const T& x,
   const T d = x - prior.tau;
   const T shift = sigma_p * weight * d;  // eq. 4.12 rewritten: τ = τ0 + σp (x − τ0) / (σp + 1)
   NormalGammaT<T> post;
-  post.alpha = f * prior.alpha + S(0.5);                 // eq. 4.10
-  post.beta = f * prior.beta + S(0.5) * d * d * weight;  // eq. 4.11
+  post.alpha = f * prior.alpha + S(0.5);                          // eq. 4.10
+  post.beta = f * prior.beta + S(0.5) * d * d * weight;           // eq. 4.11
   post.beta = Max(post.beta, T(post.alpha * S(o.min_variance)));  // the quantisation floor
-  post.tau = prior.tau + shift;                          // eq. 4.12
-  post.sigma = sigma_p * weight;                         // eq. 4.13
+  post.tau = prior.tau + shift;                                   // eq. 4.12
+  post.sigma = sigma_p * weight;                                  // eq. 4.13
   if (tau_shift) *tau_shift = shift;
   return post;
 }

@@ -49,8 +49,8 @@ void ProcessOne(std::size_t i, const ChannelPlanes& c, float* surprise,
     q.tau[i] = static_cast<float>(p[k].tau);
     q.sigma[i] = static_cast<float>(p[k].sigma);
   }
-  surprise[i] = valid ? surprise[i] + static_cast<float>(kl)
-                      : std::numeric_limits<float>::quiet_NaN();
+  surprise[i] =
+      valid ? surprise[i] + static_cast<float>(kl) : std::numeric_limits<float>::quiet_NaN();
 }
 
 // The KL's α terms depend on the prior α alone (the update of α does not see the data,
@@ -151,11 +151,10 @@ auto PacketKernelFor(int channels) {
 void CheckChannels(const ChannelPlanes& c) {
   const std::size_t n = c.x.size();
   if (n == 0 || n > std::size_t(kMaxChannels) || c.prior.size() != n || c.posterior.size() != n) {
-    throw std::invalid_argument("UpdateAndAccumulateSurprise: need 1 to " +
-                                std::to_string(kMaxChannels) +
-                                " channels with one prior and posterior each, got " +
-                                std::to_string(n) + "/" + std::to_string(c.prior.size()) + "/" +
-                                std::to_string(c.posterior.size()));
+    throw std::invalid_argument(
+        "UpdateAndAccumulateSurprise: need 1 to " + std::to_string(kMaxChannels) +
+        " channels with one prior and posterior each, got " + std::to_string(n) + "/" +
+        std::to_string(c.prior.size()) + "/" + std::to_string(c.posterior.size()));
   }
   for (std::size_t k = 1; k < n; ++k) {
     if (c.prior[k].alpha != c.prior[0].alpha || c.posterior[k].alpha != c.posterior[0].alpha) {

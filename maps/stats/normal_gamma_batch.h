@@ -53,9 +53,9 @@ inline constexpr int kMaxChannels = 4;
 
 /// For each of n pixels i and each channel k: posterior = UpdateWithForgetting(prior, x) and
 /// surprise[i] += Σ_k KL(posterior ‖ prior) (eq. 4.21 over channels). The KL's α terms are the
-/// same for all channels: computed once and counted once per channel. A pixel with NaN in any channel (no data) keeps its
-/// prior as posterior and gets NaN surprise, so it stays recognisably invalid. Throws
-/// std::invalid_argument when the channels' counts or α planes disagree.
+/// same for all channels: computed once and counted once per channel. A pixel with NaN in any
+/// channel (no data) keeps its prior as posterior and gets NaN surprise, so it stays recognisably
+/// invalid. Throws std::invalid_argument when the channels' counts or α planes disagree.
 void UpdateAndAccumulateSurprise(const ChannelPlanes& planes, float* surprise, std::size_t n,
                                  const SurpriseBatchOptions& options);
 

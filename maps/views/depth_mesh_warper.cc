@@ -152,7 +152,7 @@ class VertexProjector {
 struct Target {
   float* inv_z;
   float* source_depth;  // null: not asked for (WarpOptions::compute_source_depth)
-  float* uv;  // (u, v) interleaved, as WarpField::map
+  float* uv;            // (u, v) interleaved, as WarpField::map
   int width, height;
 };
 

@@ -25,13 +25,21 @@ using stats::lanes::kLanes;
 
 // Scalar (one pixel) and vector (sixteen) forms of the few operations the sampling kernel needs,
 // so that one kernel serves the row's body and its tail.
-inline float LoadLane(const float* p, float) { return *p; }
+inline float LoadLane(const float* p, float) {
+  return *p;
+}
 inline F16 LoadLane(const float* p, F16) {
   return stats::lanes::Load(p);
 }
-inline int ToInt(float x) { return int(x); }
-inline I16 ToInt(F16 x) { return stats::lanes::AsInt(x); }
-inline float ToFloat(int x) { return float(x); }
+inline int ToInt(float x) {
+  return int(x);
+}
+inline I16 ToInt(F16 x) {
+  return stats::lanes::AsInt(x);
+}
+inline float ToFloat(int x) {
+  return float(x);
+}
 inline F16 ToFloat(I16 x) {
   return stats::lanes::AsFloat(x);
 }

@@ -4,7 +4,8 @@
 
 namespace novelty::views {
 
-SynthesisResult SynthesiseView(DepthMeshWarper& warper, const std::vector<const ReferenceView*>& refs,
+SynthesisResult SynthesiseView(DepthMeshWarper& warper,
+                               const std::vector<const ReferenceView*>& refs,
                                const std::vector<const MeshPlan*>& plans,
                                const std::vector<double>& weights, const PinholeCamera& camera,
                                const Eigen::Isometry3d& T_world_virtual,

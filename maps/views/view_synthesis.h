@@ -31,7 +31,8 @@ struct SynthesisResult {
 /// mesh plans where a caller keeps them (else empty). The warper must have been made with
 /// WarpOptionsFor(options.blend, options.warp). Throws std::invalid_argument on a view without
 /// an "rgb" plane or inputs that do not fit (see BlendPlanes).
-SynthesisResult SynthesiseView(DepthMeshWarper& warper, const std::vector<const ReferenceView*>& refs,
+SynthesisResult SynthesiseView(DepthMeshWarper& warper,
+                               const std::vector<const ReferenceView*>& refs,
                                const std::vector<const MeshPlan*>& plans,
                                const std::vector<double>& weights, const PinholeCamera& camera,
                                const Eigen::Isometry3d& T_world_virtual,

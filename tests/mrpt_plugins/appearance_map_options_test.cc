@@ -38,7 +38,7 @@ TEST(AppearanceMapOptions, ReadsValuesAndNamesBadOnes) {
   EXPECT_FALSE(o.half_precision);
   EXPECT_EQ(ErrorOf("[AppearanceMap]\nforgeting_factor = 0.7\n"),
             "test.ini: [AppearanceMap] forgeting_factor: unknown option");
-  EXPECT_EQ(ErrorOf("[AppearanceMap]\nxi = lots\n"), "test.ini: [AppearanceMap] xi = 'lots': stod");
+  EXPECT_EQ(ErrorOf("[AppearanceMap]\nxi = lots\n"), "test.ini: [AppearanceMap] xi = 'lots': not a number");
   EXPECT_NE(ErrorOf("[AppearanceMap]\nforgetting_factor = 1.5\n").find("forgetting_factor"),
             std::string::npos);
   EXPECT_THROW(LoadAppearanceMapOptions("/nonexistent.ini"), std::runtime_error);

@@ -83,8 +83,7 @@ TEST(RawlogMapPlayer, MultiMetricMapPathEqualsTheLibraryApi) {
   for (sensors::Frame f; reader.Next(f);) {
     ASSERT_TRUE(player.Next(multi, index));
     ASSERT_EQ(index, f.index);
-    const cv::Mat expected =
-        library.Insert(f.rgb, f.depth, f.camera, poses.at(f.index)).surprise;
+    const cv::Mat expected = library.Insert(f.rgb, f.depth, f.camera, poses.at(f.index)).surprise;
     const cv::Mat got = mrpt_map->lastProducts().surprise;
     ASSERT_EQ(got.size(), expected.size());
     EXPECT_EQ(std::memcmp(got.data, expected.data, expected.total() * expected.elemSize()), 0)

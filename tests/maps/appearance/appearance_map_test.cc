@@ -195,9 +195,8 @@ TEST(AppearanceMap, DISABLED_HalfTheViewsHurtSurpriseLessThanDifferencing) {
 // Mean AS and PAS of the glass on its clip (320×240, a tin plate with moving highlights).
 Selectivities GlassSelectivity() {
   std::printf("glass: ");
-  return MeasureChangedRegion(GlassClip(),
-                              views::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180), {}, 9.5,
-                              255);
+  return MeasureChangedRegion(
+      GlassClip(), views::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180), {}, 9.5, 255);
 }
 
 // Thesis fig. 4.9: for the glass, Bayesian surprise gives a higher PAS than differencing, whose

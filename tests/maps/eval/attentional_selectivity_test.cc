@@ -30,7 +30,7 @@ TEST(AttentionalSelectivity, BorderBlocksAndNaNsAreLeftOut) {
   map(cv::Rect(40, 40, 4, 4)).setTo(std::nanf(""));
   const Selectivity s = AttentionalSelectivity(map, region);
   EXPECT_NEAR(s.as_db, 10 * std::log10(2.0), 1e-9);
-  EXPECT_EQ(s.outside_blocks, 12 * 12 - 4 - 1);  // the all-NaN block counts nowhere
+  EXPECT_EQ(s.outside_blocks, 12 * 12 - 4 - 1);                // the all-NaN block counts nowhere
   EXPECT_NEAR(s.coverage, 1.0 - 16.0 / (48.0 * 48.0), 1e-12);  // reported beside AS
   // Without the border rule the hot border dominates: AS < 0 dB.
   SelectivityOptions no_border;

@@ -43,7 +43,8 @@ TEST(FindingsReport, WritesEachFindingToTheCsvTheConsoleAndTheReportAlike) {
             "\"glass: surprise more selective\",glass,10,12,2,0.50,-0.50,3.50,1.50,0.900,yes\n"
             "\"cup: detected by both\",cup,10,12,0,,,,,,no frames\n");
   EXPECT_NE(console.str().find("glass: surprise more selective"), std::string::npos);
-  EXPECT_NE(console.str().find(" holds (AS 0.50 vs -0.50 dB, PAS 3.50 vs 1.50 dB, coverage 0.900, frames 10–12)"),
+  EXPECT_NE(console.str().find(
+                " holds (AS 0.50 vs -0.50 dB, PAS 3.50 vs 1.50 dB, coverage 0.900, frames 10–12)"),
             std::string::npos)
       << console.str();
   EXPECT_NE(console.str().find(" no frames (AS"), std::string::npos) << console.str();

@@ -1,5 +1,6 @@
 // Test helper: a row of per-frame selectivity (AS and PAS of surprise and differencing, dB) for
-// one region, as novelty-run's metrics.csv has them (coverage: the share of pixels they cover). Shared by the findings tests.
+// one region, as novelty-run's metrics.csv has them (coverage: the share of pixels they cover).
+// Shared by the findings tests.
 #pragma once
 
 #include <string>

@@ -64,11 +64,11 @@ struct BothKernels {
     const std::size_t n = prior.x.size();
     SurpriseBatchOptions o;
     o.kernel = BatchKernel::kScalar;
-    UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_s.Mutable(), s_scalar.data(),
-                                n, o);
+    UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_s.Mutable(), s_scalar.data(), n,
+                                o);
     o.kernel = BatchKernel::kVectorised;
-    UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_v.Mutable(), s_vector.data(),
-                                n, o);
+    UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_v.Mutable(), s_vector.data(), n,
+                                o);
   }
 };
 
@@ -349,8 +349,8 @@ TEST(NormalGammaBatch, ThreeChannelSurpriseIsTheSumOfTheChannelsKL) {
       }
     }
     EXPECT_LE(worst, 1e-4) << (kernel == BatchKernel::kScalar ? "scalar" : "vectorised")
-                           << " kernel, worst at pixel " << worst_at << ": S = "
-                           << surprise[worst_at] << ", eq. 4.21 "
+                           << " kernel, worst at pixel " << worst_at
+                           << ": S = " << surprise[worst_at] << ", eq. 4.21 "
                            << states.Reference(worst_at, o.update);
   }
 }

@@ -208,7 +208,8 @@ TEST(DepthMeshWarper, MeshPlansKeptByTheCallerAreUsedWhereTheyFit) {
   // or another size are ignored (planned anew).
   cv::Mat depth(kCam.height, kCam.width, CV_32FC1);
   for (int y = 0; y < depth.rows; ++y)
-    for (int x = 0; x < depth.cols; ++x) depth.at<float>(y, x) = 1.0f / (0.4f + 0.0008f * x + 0.0005f * y);
+    for (int x = 0; x < depth.cols; ++x)
+      depth.at<float>(y, x) = 1.0f / (0.4f + 0.0008f * x + 0.0005f * y);
   const Eigen::Isometry3d src = Forward(), virt = LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0});
   WarpOptions blocks_8;
   blocks_8.planar_block = 8;

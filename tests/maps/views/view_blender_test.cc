@@ -274,8 +274,9 @@ TEST(ViewBlender, MismatchedInputIsRejected) {
   BlendOptions tolerant = kThesis;
   tolerant.depth_tolerance = 0.05;
   EXPECT_THROW(BlendPlanes(map_only, {cv::Mat(2, 4, CV_8UC1)}, tolerant), std::invalid_argument);
-  EXPECT_EQ(BlendPlanes(map_only, {cv::Mat(2, 4, CV_8UC1, cv::Scalar(7))}, kThesis).value.at<float>(1, 3),
-            7.0f);
+  EXPECT_EQ(
+      BlendPlanes(map_only, {cv::Mat(2, 4, CV_8UC1, cv::Scalar(7))}, kThesis).value.at<float>(1, 3),
+      7.0f);
 }
 
 // Angle weights are relative to the pixel's best view: cos φ^10000 underflows to 0 for views a

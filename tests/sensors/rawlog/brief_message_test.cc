@@ -22,9 +22,24 @@ TEST(BriefMessage, KeepsOurPrefixAndMrptsMessagesOnOneLine) {
             "'CObservationBearingRange': Unexpected end of file");
 }
 
+// A message MRPT split at its '[': the text is in the Location line.
+TEST(BriefMessage, AMessageMrptTookForALocationIsKept) {
+  const std::string mrpt =
+      "f.rawlog: frame 1 (RGBD): ==== MRPT exception ====\n"
+      "Message: \n"
+      "Location: filesystem error: cannot get file size: No such file [x/000001_depth.bin\n"
+      "Call stack backtrace:\n"
+      "[0 ]     0x7f12265c3b19\n";
+  EXPECT_EQ(BriefMessage(mrpt),
+            "f.rawlog: frame 1 (RGBD): filesystem error: cannot get file size: No such file "
+            "[x/000001_depth.bin");
+}
+
 TEST(BriefMessage, PlainTextStaysAndBinaryBytesAreMasked) {
   EXPECT_EQ(BriefMessage(std::string("no such rawlog")), "no such rawlog");
-  EXPECT_EQ(BriefMessage(std::string("class <\x01\xff> x\ny")), "class <?" "?> x y");
+  EXPECT_EQ(BriefMessage(std::string("class <\x01\xff> x\ny")),
+            "class <?"
+            "?> x y");
   EXPECT_EQ(BriefMessage(std::string(500, 'a'), 10), std::string(10, 'a') + "…");
 }
 

@@ -1,0 +1,71 @@
+#include "mrpt_plugins/multi_map_config.h"
+
+#include <mrpt/maps/TMetricMapInitializer.h>
+
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include "mrpt_plugins/appearance_map_options.h"
+
+namespace novelty::mrpt_plugins {
+
+namespace {
+
+std::string MapSection(const std::string& section, const std::string& cls, int k,
+                       const char* part) {
+  char index[16];
+  std::snprintf(index, sizeof index, "%02d", k);
+  return section + "_" + cls + "_" + index + "_" + part;
+}
+
+}  // namespace
+
+std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBase& ini,
+                                               const std::string& section,
+                                               const std::string& source,
+                                               const std::vector<std::string>& exactly_one) {
+  std::vector<std::string> keys, sections;
+  ini.getAllKeys(section, keys);
+  ini.getAllSections(sections);
+  std::map<std::string, int> counts;
+  for (const std::string& key : keys) {
+    const std::string where = source + ": [" + section + "] " + key;
+    const auto suffix = key.rfind("_count");
+    if (suffix == std::string::npos || suffix + 6 != key.size())
+      throw std::runtime_error(where + ": only <MapClass>_count keys belong in [" + section + "]");
+    const std::string cls = key.substr(0, suffix);
+    const int n = ini.read_int(section, key, -1);
+    if (n < 0) throw std::runtime_error(where + ": not a count >= 0");
+    if (n > 0 && !std::unique_ptr<mrpt::maps::TMetricMapInitializer>(
+                     mrpt::maps::TMetricMapInitializer::factory(cls)))
+      throw std::runtime_error(where + ": unknown map class '" + cls + "'");
+    counts[cls] = n;
+  }
+  for (const std::string& cls : exactly_one) {
+    if (counts[cls] != 1)
+      throw std::runtime_error(source + ": [" + section + "] must declare " + cls +
+                               "_count = 1, got " + std::to_string(counts[cls]));
+  }
+  // Our maps' options, read here: through MRPT's loader an error loses its section.
+  for (const char* ours : {"CAppearanceMap", "CDifferencingMap"}) {
+    for (int k = 0; k < counts[ours]; ++k)
+      LoadMapConfig(ini, MapSection(section, ours, k, "options"), source);
+  }
+  for (const std::string& s : sections) {
+    if (s == section || s.empty()) continue;
+    bool read = false;
+    for (const auto& [cls, n] : counts) {
+      for (int k = 0; k < n && !read; ++k) {
+        for (const char* part : {"options", "insertOpts", "creationOpts", "likelihoodOpts"})
+          read = read || s == MapSection(section, cls, k, part);
+      }
+    }
+    if (!read)
+      throw std::runtime_error(source + ": section [" + s +
+                               "] is read by no declared map (misspelt or unclosed header?)");
+  }
+  return counts;
+}
+
+}  // namespace novelty::mrpt_plugins
