@@ -50,6 +50,14 @@ arc 0 0 1.6 -90 -100 0.15
   return dir;
 }
 
+// The maps of an .ini, as an MRPT program builds them.
+void BuildMaps(const mrpt::config::CConfigFileBase& ini, mrpt::maps::CMultiMetricMap& multi) {
+  RegisterMaps();
+  mrpt::maps::TSetOfMetricMapInitializers inits;
+  inits.loadFromConfigFile(ini, "map");
+  multi.setListOfMaps(inits);
+}
+
 const char* kIni = R"(
 [map]
 CAppearanceMap_count = 1
@@ -66,11 +74,8 @@ TEST(RawlogMapPlayer, MultiMetricMapPathEqualsTheLibraryApi) {
   const fs::path dir = SimulateClip("same");
   const auto poses = sensors::LoadGroundTruthPoses((dir / "groundtruth/poses.csv").string());
   const mrpt::config::CConfigFileMemory ini(kIni);
-  RegisterMaps();
-  mrpt::maps::TSetOfMetricMapInitializers inits;
-  inits.loadFromConfigFile(ini, "map");
   mrpt::maps::CMultiMetricMap multi;
-  multi.setListOfMaps(inits);
+  BuildMaps(ini, multi);
   const auto mrpt_map = multi.mapByClass<CAppearanceMap>();
   ASSERT_TRUE(mrpt_map);
   ASSERT_TRUE(multi.mapByClass<CDifferencingMap>());
@@ -109,12 +114,8 @@ TEST(RawlogMapPlayer, MissingPosesAndATruncatedRawlogAreReportedNotFatal) {
   fs::copy_file(dir / "clip.rawlog", cut);
   fs::resize_file(cut, fs::file_size(cut) / 2);
   fs::create_directory_symlink(dir / "clip_Images", dir / "cut" / "clip_Images");
-  const mrpt::config::CConfigFileMemory ini(kIni);
-  RegisterMaps();
-  mrpt::maps::TSetOfMetricMapInitializers inits;
-  inits.loadFromConfigFile(ini, "map");
   mrpt::maps::CMultiMetricMap multi;
-  multi.setListOfMaps(inits);
+  BuildMaps(mrpt::config::CConfigFileMemory(kIni), multi);
   {
     RawlogMapPlayer player((dir / "clip.rawlog").string(), PoseSource::kGroundTruth, poses);
     int index = 0, frames = 0;

@@ -250,6 +250,19 @@ TEST(NormalGammaBatch, ChannelsSharingAlphaEqualSeparateChannels) {
   }
 }
 
+// Channels `in` (observation, prior) updated into `out`, all sharing channel 0's α plane.
+ChannelPlanes SharedAlphaChannels(const std::vector<Planes>& in, std::vector<Planes>& out) {
+  ChannelPlanes planes;
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    planes.x.push_back(in[k].x.data());
+    planes.prior.push_back(
+        {in[0].alpha.data(), in[k].beta.data(), in[k].tau.data(), in[k].sigma.data()});
+    planes.posterior.push_back(
+        {out[0].alpha.data(), out[k].beta.data(), out[k].tau.data(), out[k].sigma.data()});
+  }
+  return planes;
+}
+
 // The states a map's pixels are in, three channels (Y, Cb, Cr) sharing α, with the observation
 // that arrives: a pixel's first ten updates from the initial prior (1, 1, 0, 5); α0 < 1 (an
 // initial prior set lower); blends of two or three views of different ages (the blend averages
@@ -312,17 +325,6 @@ struct ThreeChannelStates {
     }
     return sum;
   }
-  ChannelPlanes Channels(std::vector<Planes>& out) const {
-    ChannelPlanes planes;
-    for (int k = 0; k < 3; ++k) {
-      planes.x.push_back(c[k].x.data());
-      planes.prior.push_back(
-          {c[0].alpha.data(), c[k].beta.data(), c[k].tau.data(), c[k].sigma.data()});
-      planes.posterior.push_back(
-          {out[0].alpha.data(), out[k].beta.data(), out[k].tau.data(), out[k].sigma.data()});
-    }
-    return planes;
-  }
 };
 
 // eq. 4.21 against three double-precision KLs, for both kernels, over 120 000 pixel states: the
@@ -336,7 +338,7 @@ TEST(NormalGammaBatch, ThreeChannelSurpriseIsTheSumOfTheChannelsKL) {
     o.kernel = kernel;
     std::vector<Planes> out(3, Planes(n, 1));
     std::vector<float> surprise(n, 0.0f);
-    UpdateAndAccumulateSurprise(states.Channels(out), surprise.data(), n, o);
+    UpdateAndAccumulateSurprise(SharedAlphaChannels(states.c, out), surprise.data(), n, o);
     double worst = 0.0;
     std::size_t worst_at = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -368,14 +370,7 @@ TEST(NormalGammaBatch, KnownThreeChannelCase) {
       std::fill(c[k].sigma.begin(), c[k].sigma.end(), 0.01f);
       std::fill(c[k].x.begin(), c[k].x.end(), 100.7f);
     }
-    ChannelPlanes planes;
-    for (int k = 0; k < 3; ++k) {
-      planes.x.push_back(c[k].x.data());
-      planes.prior.push_back(
-          {c[0].alpha.data(), c[k].beta.data(), c[k].tau.data(), c[k].sigma.data()});
-      planes.posterior.push_back(
-          {out[0].alpha.data(), out[k].beta.data(), out[k].tau.data(), out[k].sigma.data()});
-    }
+    const ChannelPlanes planes = SharedAlphaChannels(c, out);
     SurpriseBatchOptions o;
     o.kernel = kernel;
     std::vector<float> s(n, 0.0f);
