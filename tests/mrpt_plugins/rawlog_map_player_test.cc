@@ -5,7 +5,6 @@
 
 #include <cstring>
 #include <filesystem>
-#include <sstream>
 
 #include "maps/appearance/appearance_map.h"
 #include "mrpt_plugins/appearance_map_options.h"
@@ -13,8 +12,7 @@
 #include "mrpt_plugins/c_differencing_map.h"
 #include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
-#include "sim/scenario/scenario_parser.h"
-#include "sim/scenario/scenario_runner.h"
+#include "tests/sim/scenario/simulated_run.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
@@ -22,9 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // A short arc there and back (the way back replaces views), simulated into a rawlog with ground
-// truth. Each test its own folder: ctest runs tests in parallel processes.
+// truth in the temp folder novelty_player_<name>.
 fs::path SimulateClip(const std::string& name) {
-  std::istringstream in(R"(
+  return sim::SimulateIntoTempFolder(R"(
 name clip
 frames 24
 fps 7
@@ -39,15 +37,8 @@ object box box 0.14 0.06 0.20 red at 0.25 0.20 on table mass 0.4
 lamp l1 -1.0 0.8 2.6 2.2 2.1 1.9
 arc 0 0 1.6 -100 -90 0.15
 arc 0 0 1.6 -90 -100 0.15
-)");
-  const sim::Scenario s = sim::ParseScenario(in, "clip.scn");
-  const fs::path dir = fs::temp_directory_path() / ("novelty_player_" + name);
-  fs::remove_all(dir);
-  sim::RunOptions o;
-  o.out_dir = dir.string();
-  o.progress = false;
-  sim::RunScenario(s, o);
-  return dir;
+)",
+                                     "novelty_player_" + name);
 }
 
 // The maps of an .ini, as an MRPT program builds them.

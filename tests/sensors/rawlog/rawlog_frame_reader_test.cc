@@ -8,17 +8,16 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
-#include "sim/scenario/scenario_parser.h"
-#include "sim/scenario/scenario_runner.h"
+#include "tests/sim/scenario/simulated_run.h"
 
 namespace novelty::sensors {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Each test its own folder: ctest runs tests in parallel processes.
+// A tiny run in the temp folder novelty_rawlog_reader_<name>.
 fs::path SimulateTinyRun(const std::string& name) {
-  std::istringstream in(R"(
+  return sim::SimulateIntoTempFolder(R"(
 name tiny
 frames 6
 fps 5
@@ -28,15 +27,8 @@ material wood phong 0.5 0.3 0.1
 object table box 1.0 0.6 0.70 wood at 0 0 fixed
 lamp l1 0.5 -0.5 2.5 1.5 1.5 1.5
 arc 0 0 1.5 -100 -80 0.1
-)");
-  const sim::Scenario s = sim::ParseScenario(in, "tiny.scn");
-  const fs::path dir = fs::temp_directory_path() / ("novelty_rawlog_reader_" + name);
-  fs::remove_all(dir);
-  sim::RunOptions o;
-  o.out_dir = dir.string();
-  o.progress = false;
-  sim::RunScenario(s, o);
-  return dir;
+)",
+                                     "novelty_rawlog_reader_" + name);
 }
 
 TEST(RawlogFrameReader, ReadsEveryRgbdFrameWithDepthAndIntrinsics) {
