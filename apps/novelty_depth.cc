@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "maps/eval/depth_accuracy.h"
+#include "eval/depth_accuracy.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rawlog_output.h"
 #include "sensors/rawlog/rig_frame_reader.h"

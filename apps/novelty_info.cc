@@ -105,15 +105,17 @@ int main(int argc, char** argv) {
   std::printf("  ODE      %s, %s\n", dGetConfiguration(), OdeInfo().c_str());
   std::printf(
       "\nBuilt components:\n"
+      "  core             image I/O\n"
       "  maps/stats       normal-gamma updates (eq. 4.4-4.13), KL surprise (4.15-4.23),\n"
       "                   gamma ML fit (eq. 2.14-2.17), special functions\n"
       "  maps/color       YCbCr (ICT) and back, HSV\n"
       "  maps/views       view selection, depth-mesh warping, blending (ch. 3)\n"
       "  maps/appearance  appearance map and image differencing (ch. 4)\n"
-      "  maps/eval        AS/PAS, PSNR, panels, HTML report\n"
-      "  sensors          RGB-D folders, rawlog frames, ground-truth poses\n"
+      "  eval             AS/PAS, findings, PSNR, depth accuracy, panels, HTML report\n"
+      "  sensors          RGB-D folders, rawlog frames, tracker, stereo, localization\n"
       "  sim              ODE world, Embree cameras, scenarios, rawlogs + ground truth\n"
-      "  apps             novelty-sim, novelty-synth, novelty-run, novelty-info\n");
+      "  mrpt_plugins     CAppearanceMap, CDifferencingMap, RawlogMapPlayer\n"
+      "  apps             novelty-sim, -synth, -run, -depth, -poses, -info\n");
   std::printf("\nStatistics core demo (one pixel, f=%.1f, xi=%.3g):\n", 0.8, 0.01);
   SurpriseDemo();
   return 0;

@@ -40,13 +40,13 @@
 
 #include "maps/appearance/appearance_map.h"
 #include "maps/appearance/differencing_map.h"
-#include "maps/eval/attentional_selectivity.h"
-#include "maps/eval/false_color.h"
-#include "maps/eval/findings_report.h"
-#include "maps/eval/first_run.h"
-#include "maps/eval/html_report.h"
-#include "maps/eval/selectivity_findings.h"
-#include "maps/eval/write_rgb_image.h"
+#include "eval/attentional_selectivity.h"
+#include "eval/false_color.h"
+#include "eval/findings_report.h"
+#include "eval/first_run.h"
+#include "eval/html_report.h"
+#include "eval/selectivity_findings.h"
+#include "core/write_rgb_image.h"
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
 #include "mrpt_plugins/multi_map_config.h"
@@ -423,7 +423,7 @@ int main(int argc, char** argv) {
         const cv::Mat panel = eval::SideBySide(
             {map.lastFrame().rgb, p.expected_rgb, eval::FalseColor(p.surprise, 20.0),
              eval::FalseColor(p.uncertainty, 1e4, true), eval::FalseColor(d.difference, 150.0)});
-        eval::WriteRgbImage(dir + "/panels/" + stem + ".png", panel);
+        core::WriteRgbImage(dir + "/panels/" + stem + ".png", panel);
         panel_frames.push_back(index);
       }
       if (frames % 50 == 0) {

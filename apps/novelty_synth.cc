@@ -26,8 +26,8 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
-#include "maps/eval/psnr.h"
-#include "maps/eval/write_rgb_image.h"
+#include "eval/psnr.h"
+#include "core/write_rgb_image.h"
 #include "maps/views/depth_mesh_warper.h"
 #include "maps/views/reference_view_store.h"
 #include "maps/views/view_blender.h"
@@ -71,7 +71,7 @@ int FolderMode(const std::string& dir, const views::PinholeCamera& intrinsics, d
   for (const auto& r : refs) ptrs.push_back(&r);
   const views::SynthesisResult r =
       views::SynthesiseView(warper, ptrs, {}, {}, cam, truth.T_world_cam, options);
-  eval::WriteRgbImage(out, r.rgb);
+  core::WriteRgbImage(out, r.rgb);
   std::printf("PSNR=%.2f coverage=%.4f\n", eval::Psnr(r.rgb, truth.rgb, r.valid), r.coverage);
   return 0;
 }
@@ -138,7 +138,7 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
     const double psnr = eval::Psnr(r.rgb, f.rgb, r.valid);
     char name[32];
     std::snprintf(name, sizeof name, "/%06d.png", f.index);
-    eval::WriteRgbImage(out_dir + name, r.rgb);
+    core::WriteRgbImage(out_dir + name, r.rgb);
     csv << f.index << "," << f.time - t_start << "," << ms << "," << refs.size() << "," << psnr
         << "," << r.coverage << "\n";
     psnr_sum += psnr;

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "maps/eval/write_rgb_image.h"
+#include "core/write_rgb_image.h"
 #include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
@@ -42,7 +42,7 @@ void RawlogOutput::Write(const mrpt::serialization::CSerializable& object) {
 }
 
 mrpt::img::CImage RawlogOutput::ExternalImage(const cv::Mat& rgb, const std::string& file) const {
-  eval::WriteRgbImage(images_dir_ + "/" + file, rgb);
+  core::WriteRgbImage(images_dir_ + "/" + file, rgb);
   mrpt::img::CImage img;
   img.setExternalStorage(file);
   return img;

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "maps/eval/write_rgb_image.h"
+#include "core/write_rgb_image.h"
 #include "sim/output/contact_sheet.h"
 #include "sim/output/ground_truth_writer.h"
 #include "sim/output/rawlog_writer.h"
@@ -119,7 +119,7 @@ RunSummary RunScenario(const Scenario& s, const RunOptions& o) {
   summary.observations = rawlog.observations();
   summary.rawlog = rawlog.rawlog_path();
   summary.contact_sheet = o.out_dir + "/" + s.name + "_contact_sheet.png";
-  eval::WriteRgbImage(summary.contact_sheet, ContactSheet(tiles, 6));
+  core::WriteRgbImage(summary.contact_sheet, ContactSheet(tiles, 6));
   summary.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return summary;

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "maps/appearance/differencing_map.h"
-#include "maps/eval/attentional_selectivity.h"
+#include "eval/attentional_selectivity.h"
 #include "maps/stats/normal_gamma_kl.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/simulate_frames.h"

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "maps/eval/psnr.h"
+#include "eval/psnr.h"
 #include "maps/views/depth_mesh_warper.h"
 #include "maps/views/view_blender.h"
 #include "maps/views/view_selection.h"

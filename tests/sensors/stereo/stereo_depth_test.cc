@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "maps/eval/depth_accuracy.h"
+#include "eval/depth_accuracy.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rig_frame_reader.h"
 #include "sim/scenario/scenario_parser.h"

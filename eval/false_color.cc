@@ -1,4 +1,4 @@
-#include "maps/eval/false_color.h"
+#include "eval/false_color.h"
 
 #include <cmath>
 #include <opencv2/imgproc.hpp>

@@ -1,4 +1,4 @@
-#include "maps/eval/attentional_selectivity.h"
+#include "eval/attentional_selectivity.h"
 
 #include <gtest/gtest.h>
 

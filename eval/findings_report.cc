@@ -1,4 +1,4 @@
-#include "maps/eval/findings_report.h"
+#include "eval/findings_report.h"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "maps/eval/html_report.h"
+#include "eval/html_report.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "maps/eval/attentional_selectivity.h"
+#include "eval/attentional_selectivity.h"
 
 namespace novelty::eval {
 

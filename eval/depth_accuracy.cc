@@ -1,4 +1,4 @@
-#include "maps/eval/depth_accuracy.h"
+#include "eval/depth_accuracy.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "maps/eval/first_run.h"
+#include "eval/first_run.h"
 
 #include <stdexcept>
 #include <string>

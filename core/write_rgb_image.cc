@@ -1,10 +1,10 @@
-#include "maps/eval/write_rgb_image.h"
+#include "core/write_rgb_image.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
-namespace novelty::eval {
+namespace novelty::core {
 
 void WriteRgbImage(const std::string& path, const cv::Mat& rgb) {
   cv::Mat bgr;
@@ -12,4 +12,4 @@ void WriteRgbImage(const std::string& path, const cv::Mat& rgb) {
   if (!cv::imwrite(path, bgr)) throw std::runtime_error(path + ": cannot write image");
 }
 
-}  // namespace novelty::eval
+}  // namespace novelty::core

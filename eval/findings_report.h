@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "maps/eval/html_report.h"
-#include "maps/eval/selectivity_findings.h"
+#include "eval/html_report.h"
+#include "eval/selectivity_findings.h"
 
 namespace novelty::eval {
 

@@ -1,4 +1,4 @@
-#include "maps/eval/findings_report.h"
+#include "eval/findings_report.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-#include "tests/maps/eval/selectivity_row.h"
+#include "tests/eval/selectivity_row.h"
 
 namespace novelty::eval {
 namespace {

@@ -1,4 +1,4 @@
-#include "maps/eval/psnr.h"
+#include "eval/psnr.h"
 
 #include <gtest/gtest.h>
 

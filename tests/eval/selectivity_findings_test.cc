@@ -1,10 +1,10 @@
-#include "maps/eval/selectivity_findings.h"
+#include "eval/selectivity_findings.h"
 
 #include <gtest/gtest.h>
 
 #include <limits>
 
-#include "tests/maps/eval/selectivity_row.h"
+#include "tests/eval/selectivity_row.h"
 
 namespace novelty::eval {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "maps/eval/selectivity_findings.h"
+#include "eval/selectivity_findings.h"
 
 namespace novelty::eval {
 

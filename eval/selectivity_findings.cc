@@ -1,4 +1,4 @@
-#include "maps/eval/selectivity_findings.h"
+#include "eval/selectivity_findings.h"
 
 #include <cmath>
 
