@@ -15,12 +15,15 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
+#include "core/frame_stem.h"
 #include "eval/depth_accuracy.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rawlog_output.h"
 #include "sensors/rawlog/rig_frame_reader.h"
 #include "sensors/stereo/stereo_depth.h"
+#include "sim/output/ground_truth_reader.h"
 
 using namespace novelty;
 
@@ -53,6 +56,8 @@ int main(int argc, char** argv) {
     if (std::filesystem::absolute(in.getValue()) == std::filesystem::absolute(out.getValue()))
       throw std::invalid_argument("--out must differ from the input rawlog");
 
+    std::optional<sim::GroundTruthReader> ground_truth;
+    if (truth.isSet()) ground_truth.emplace(truth.getValue());
     sensors::RigFrameReader reader(in.getValue());
     sensors::RawlogOutput output(out.getValue());
     const auto start = std::chrono::steady_clock::now();
@@ -68,13 +73,11 @@ int main(int argc, char** argv) {
         views.push_back({f.images[i], f.cameras[i], f.ref_from_camera[i]});
       const sensors::StereoDepth depth =
           sensors::ComputeStereoDepth(f.images[0], f.cameras[0], views, options);
-      char stem[32];
-      std::snprintf(stem, sizeof stem, "%06d", f.index);
       output.WriteRgbd(f.time, f.images[0], depth.depth, f.cameras[0], f.robot_from_reference,
-                       std::string(stem) + "_stereo", "STEREO_DEPTH");
+                       core::FrameStem(f.index) + "_stereo", "STEREO_DEPTH");
       ++frames;
-      if (truth.isSet()) {
-        const cv::Mat true_depth = sensors::LoadGroundTruthDepth(truth.getValue(), f.index);
+      if (ground_truth) {
+        const cv::Mat true_depth = ground_truth->Depth(f.index);
         if (!true_depth.empty()) {
           const auto a = eval::MeasureDepthAccuracy(depth.depth, true_depth, f.images[0], {});
           within_sum += a.within_fraction;

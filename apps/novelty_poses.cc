@@ -44,6 +44,7 @@
 #include "sensors/rawlog/rig_frame_reader.h"
 #include "sensors/tracker/led_pose_estimator.h"
 #include "sensors/tracker/pose_trajectory.h"
+#include "sim/output/ground_truth_reader.h"
 
 namespace {
 
@@ -161,7 +162,7 @@ int main(int argc, char** argv) {
     if (visual) {
       std::optional<Eigen::Isometry3d> first;
       if (truth.isSet()) {
-        const auto gt = sensors::LoadGroundTruthPoses(truth.getValue() + "/poses.csv");
+        const auto gt = sim::GroundTruthReader(truth.getValue()).CameraPoses();
         if (!gt.empty()) first = gt.begin()->second;
       }
       visual_poses = VisualPoses(in.getValue(), method.getValue(), first, &rejected);
@@ -212,7 +213,7 @@ int main(int argc, char** argv) {
     if (reasons.size() > 5) std::printf("  … and %zu more\n", reasons.size() - 5);
 
     if (truth.isSet()) {  // pose error per frame against novelty-sim's ground truth
-      const auto gt = sensors::LoadGroundTruthPoses(truth.getValue() + "/poses.csv");
+      const auto gt = sim::GroundTruthReader(truth.getValue()).CameraPoses();
       std::vector<std::pair<int, Eigen::Isometry3d>> estimated;  // frame index, pose
       int frame = 0;
       for (const auto& [t, pose] : frame_poses) {

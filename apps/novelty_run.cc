@@ -38,22 +38,23 @@
 #include <set>
 #include <sstream>
 
-#include "maps/appearance/appearance_map.h"
-#include "maps/appearance/differencing_map.h"
+#include "core/frame_stem.h"
+#include "core/write_rgb_image.h"
 #include "eval/attentional_selectivity.h"
 #include "eval/false_color.h"
 #include "eval/findings_report.h"
 #include "eval/first_run.h"
 #include "eval/html_report.h"
 #include "eval/selectivity_findings.h"
-#include "core/write_rgb_image.h"
+#include "maps/appearance/appearance_map.h"
+#include "maps/appearance/differencing_map.h"
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
 #include "mrpt_plugins/multi_map_config.h"
 #include "mrpt_plugins/rawlog_map_player.h"
 #include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/brief_message.h"
-#include "sensors/rawlog/rawlog_frame_reader.h"
+#include "sim/output/ground_truth_reader.h"
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -62,78 +63,6 @@
 namespace {
 
 using namespace novelty;
-
-struct Phase {
-  std::string name;
-  int first, last;
-};
-
-std::vector<std::vector<std::string>> ReadCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open");
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::vector<std::string> f;
-    std::stringstream s(line);
-    for (std::string item; std::getline(s, item, ',');) f.push_back(item);
-    rows.push_back(f);
-  }
-  return rows;
-}
-
-std::map<int, std::string> ReadObjects(const std::string& dir) {
-  std::map<int, std::string> names;
-  for (const auto& row : ReadCsv(dir + "/objects.csv")) {
-    if (row.size() >= 2) names[std::stoi(row[0])] = row[1];
-  }
-  return names;
-}
-
-std::vector<Phase> ReadPhases(const std::string& dir) {
-  std::vector<Phase> phases;
-  for (const auto& row : ReadCsv(dir + "/events.csv")) {
-    if (row.size() >= 4 && row[0] == "phase") {
-      phases.push_back({row[1], std::stoi(row[2]), std::stoi(row[3])});
-    }
-  }
-  return phases;
-}
-
-std::string PhaseOf(const std::vector<Phase>& phases, int frame) {
-  for (const Phase& p : phases) {
-    if (frame >= p.first && frame <= p.last) return p.name;
-  }
-  return "";
-}
-
-std::string Stem(int frame) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "%06d", frame);
-  return buf;
-}
-
-// Regions of changed objects in this frame: added objects (and the arm) by their ids, and the
-// pixels where removed objects were. Small regions (< min_pixels) are left out.
-std::map<std::string, cv::Mat> ChangedRegions(const cv::Mat& novelty, const cv::Mat& ids16,
-                                              const std::map<int, std::string>& names,
-                                              int min_pixels) {
-  std::map<std::string, cv::Mat> regions;
-  std::set<int> added;
-  for (int i = 0; i < novelty.rows * novelty.cols; ++i) {
-    if (novelty.at<uint8_t>(i) == 255) added.insert(int(ids16.at<uint16_t>(i)) - 1);
-  }
-  for (int id : added) {
-    cv::Mat region = (novelty == 255) & (ids16 == id + 1);
-    if (cv::countNonZero(region) < min_pixels) continue;
-    const auto n = names.find(id);
-    regions[n == names.end() ? "object " + std::to_string(id) : n->second] = region;
-  }
-  const cv::Mat removed = novelty == 128;
-  if (cv::countNonZero(removed) >= min_pixels) regions["removed"] = removed;
-  return regions;
-}
 
 // "2,4" → {2, 4}; each factor must be ≥ 1.
 std::vector<double> ParseFactors(const std::string& list) {
@@ -215,7 +144,7 @@ struct RunMaps {
 // The findings of thesis 4.3 for the glass-and-cup scenario, each read over the first run of its
 // phase (Q1 → Q2, found from the true camera positions). Phases or regions a sequence lacks are
 // left out.
-std::vector<eval::Finding> ThesisFindings(const std::vector<Phase>& phases,
+std::vector<eval::Finding> ThesisFindings(const std::vector<sim::GroundTruthReader::Phase>& phases,
                                           const std::map<int, Eigen::Isometry3d>& poses) {
   std::map<int, Eigen::Vector3d> positions;
   for (const auto& [frame, pose] : poses) positions[frame] = pose.translation();
@@ -232,7 +161,7 @@ std::vector<eval::Finding> ThesisFindings(const std::vector<Phase>& phases,
        "removed cup: less surprising than differencing makes it (fig. 4.12, phase D)"}};
   std::vector<eval::Finding> findings;
   for (const auto& spec : specs) {
-    for (const Phase& p : phases) {
+    for (const auto& p : phases) {
       if (p.name != spec.phase || !positions.count(p.first)) continue;
       findings.push_back({spec.what, spec.region, spec.claim, p.first,
                           eval::FirstRunEnd(positions, p.first, p.last)});
@@ -242,9 +171,10 @@ std::vector<eval::Finding> ThesisFindings(const std::vector<Phase>& phases,
 }
 
 void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>& rows,
-                 const std::vector<Phase>& phases, const std::vector<eval::Finding>& findings,
-                 const RunMaps& maps, const std::vector<int>& panel_frames, int frames,
-                 double seconds, int views, const std::vector<std::string>& notes) {
+                 const std::vector<sim::GroundTruthReader::Phase>& phases,
+                 const std::vector<eval::Finding>& findings, const RunMaps& maps,
+                 const std::vector<int>& panel_frames, int frames, double seconds, int views,
+                 const std::vector<std::string>& notes) {
   eval::HtmlReport report("NoveltyMaps — Bayesian surprise vs image differencing");
   char summary[256];
   std::snprintf(summary, sizeof summary,
@@ -261,7 +191,7 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
                             &maps.sparser_rows[k]});
   findings_report.AddSparser(rows, views, sparser_runs, findings, report);
   std::vector<eval::PlotBand> bands;
-  for (const Phase& p : phases) bands.push_back({double(p.first), double(p.last), p.name});
+  for (const auto& p : phases) bands.push_back({double(p.first), double(p.last), p.name});
   std::set<std::string> regions;
   for (const eval::SelectivityRow& r : rows) regions.insert(r.region);
   for (const std::string& region : regions) {
@@ -280,7 +210,7 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
     report.Raw(eval::SvgLinePlot("Peak attentional selectivity (eq. 4.25) — " + region, "frame",
                                  "dB", {pas_s, pas_d}, bands));
     std::vector<std::vector<std::string>> table;
-    for (const Phase& p : phases) {
+    for (const auto& p : phases) {
       const eval::MeanSelectivity m = eval::MeanOver(rows, region, p.first, p.last);
       if (m.frames == 0) continue;
       std::vector<std::string> line = {p.name};
@@ -294,7 +224,7 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
   }
   report.Heading("Panels: camera | expected (τ) | surprise | uncertainty Σβ | differencing");
   for (int f : panel_frames)
-    report.Image("panels/" + Stem(f) + ".png", "frame " + std::to_string(f));
+    report.Image("panels/" + core::FrameStem(f) + ".png", "frame " + std::to_string(f));
   report.Save(out + "/report.html");
 }
 
@@ -377,9 +307,9 @@ int main(int argc, char** argv) {
     const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";
     if (std::filesystem::is_directory(saved))
       throw std::runtime_error("--map-out " + saved + ": is a directory");
-    const auto poses = sensors::LoadGroundTruthPoses(gt + "/poses.csv");
-    const auto names = ReadObjects(gt);
-    const auto phases = ReadPhases(gt);
+    const sim::GroundTruthReader ground_truth(gt);
+    const auto& poses = ground_truth.CameraPoses();
+    const auto& phases = ground_truth.Phases();
     std::filesystem::create_directories(dir + "/panels");
     if (const auto parent = std::filesystem::path(saved).parent_path(); !parent.empty())
       std::filesystem::create_directories(parent);
@@ -396,27 +326,22 @@ int main(int argc, char** argv) {
       const appearance::AppearanceProducts& p = map.lastProducts();
       const appearance::DifferencingProducts& d = maps.differencing().lastProducts();
       ++frames;
-      const std::string stem = Stem(index);
-      const cv::Mat novelty = cv::imread(gt + "/novelty/" + stem + ".png", cv::IMREAD_UNCHANGED);
-      const cv::Mat ids = cv::imread(gt + "/ids/" + stem + ".png", cv::IMREAD_UNCHANGED);
-      if (!novelty.empty() && !ids.empty()) {
-        for (const auto& [object, region] : ChangedRegions(novelty, ids, names, 30)) {
-          const eval::SelectivityRow r{index, object,
-                                       eval::AttentionalSelectivity(p.surprise, region),
-                                       eval::AttentionalSelectivity(d.difference, region)};
-          csv << r.frame << "," << PhaseOf(phases, index) << "," << r.region << ","
-              << eval::FormatDb(r.surprise.as_db) << "," << eval::FormatDb(r.surprise.pas_db) << ","
-              << eval::FormatDb(r.difference.as_db) << "," << eval::FormatDb(r.difference.pas_db)
-              << "," << r.surprise.coverage << "\n";
-          rows.push_back(r);
-          for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k) {
-            maps.sparser_rows[k].push_back(
-                {index, object,
-                 eval::AttentionalSelectivity(maps.appearance(k + 1).lastProducts().surprise,
-                                              region),
-                 eval::AttentionalSelectivity(maps.differencing(k + 1).lastProducts().difference,
-                                              region)});
-          }
+      const std::string stem = core::FrameStem(index);
+      for (const auto& [object, region] : ground_truth.ChangedRegions(index, 30)) {
+        const eval::SelectivityRow r{index, object,
+                                     eval::AttentionalSelectivity(p.surprise, region),
+                                     eval::AttentionalSelectivity(d.difference, region)};
+        csv << r.frame << "," << ground_truth.PhaseOf(index) << "," << r.region << ","
+            << eval::FormatDb(r.surprise.as_db) << "," << eval::FormatDb(r.surprise.pas_db) << ","
+            << eval::FormatDb(r.difference.as_db) << "," << eval::FormatDb(r.difference.pas_db)
+            << "," << r.surprise.coverage << "\n";
+        rows.push_back(r);
+        for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k) {
+          maps.sparser_rows[k].push_back(
+              {index, object,
+               eval::AttentionalSelectivity(maps.appearance(k + 1).lastProducts().surprise, region),
+               eval::AttentionalSelectivity(maps.differencing(k + 1).lastProducts().difference,
+                                            region)});
         }
       }
       if (index % panels_every.getValue() == 0) {

@@ -26,8 +26,9 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
-#include "eval/psnr.h"
+#include "core/frame_stem.h"
 #include "core/write_rgb_image.h"
+#include "eval/psnr.h"
 #include "maps/views/depth_mesh_warper.h"
 #include "maps/views/reference_view_store.h"
 #include "maps/views/view_blender.h"
@@ -35,6 +36,7 @@
 #include "maps/views/view_synthesis.h"
 #include "sensors/dataset/rgbd_folder_reader.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
+#include "sim/output/ground_truth_reader.h"
 
 namespace {
 
@@ -80,7 +82,7 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
                const std::string& out_dir, views::DepthMeshWarper& warper,
                const views::SynthesisOptions& options) {
   if (every < 2) throw std::invalid_argument("--every must be >= 2");
-  const auto poses = sensors::LoadGroundTruthPoses(truth_dir + "/poses.csv");
+  const auto poses = sim::GroundTruthReader(truth_dir).CameraPoses();
   sensors::RawlogFrameReader reader(rawlog);
   views::ReferenceViewStore store;
   std::vector<sensors::Frame> path;
@@ -136,9 +138,7 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     const double psnr = eval::Psnr(r.rgb, f.rgb, r.valid);
-    char name[32];
-    std::snprintf(name, sizeof name, "/%06d.png", f.index);
-    core::WriteRgbImage(out_dir + name, r.rgb);
+    core::WriteRgbImage(out_dir + "/" + core::FrameStem(f.index) + ".png", r.rgb);
     csv << f.index << "," << f.time - t_start << "," << ms << "," << refs.size() << "," << psnr
         << "," << r.coverage << "\n";
     psnr_sum += psnr;

@@ -60,39 +60,4 @@ bool RawlogFrameReader::Next(Frame& frame) {
   }
 }
 
-std::map<int, Eigen::Isometry3d> LoadGroundTruthPoses(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open ground-truth poses");
-  std::map<int, Eigen::Isometry3d> poses;
-  std::string line;
-  std::getline(in, line);  // header
-  for (int n = 2; std::getline(in, line); ++n) {
-    std::vector<std::string> f;
-    std::stringstream s(line);
-    for (std::string item; std::getline(s, item, ',');) f.push_back(item);
-    try {
-      if (f.size() < 10) throw std::invalid_argument("too few columns");
-      const Eigen::Quaterniond q(std::stod(f[9]), std::stod(f[6]), std::stod(f[7]),
-                                 std::stod(f[8]));
-      Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-      T.linear() = q.normalized().toRotationMatrix();
-      T.translation() = Eigen::Vector3d(std::stod(f[3]), std::stod(f[4]), std::stod(f[5]));
-      poses[std::stoi(f[0])] = T;
-    } catch (const std::exception& e) {
-      throw std::runtime_error(path + ":" + std::to_string(n) + ": malformed row (" + e.what() +
-                               ")");
-    }
-  }
-  return poses;
-}
-
-cv::Mat LoadGroundTruthDepth(const std::string& groundtruth_dir, int frame) {
-  char name[32];
-  std::snprintf(name, sizeof name, "/depth/%06d.png", frame);
-  const cv::Mat png = cv::imread(groundtruth_dir + name, cv::IMREAD_UNCHANGED);
-  cv::Mat depth;
-  if (!png.empty()) png.convertTo(depth, CV_32F, 1.0 / 5000);
-  return depth;
-}
-
 }  // namespace novelty::sensors

@@ -1,7 +1,8 @@
 // Reads camera frames from an MRPT rawlog (observations format, as novelty-sim writes and MRPT's
 // tools read): each CObservation3DRangeScan with an intensity image becomes a Frame with RGB,
 // depth in metres and intrinsics. Externally stored images are looked up in MRPT's
-// `<name>_Images/` folder beside the rawlog. Poses come separately (ground truth, tracker).
+// `<name>_Images/` folder beside the rawlog. Poses come separately (ground truth:
+// sim/output/ground_truth_reader.h; tracker).
 // A CObservationRobotPose with the same timestamp before a frame gives its camera pose
 // (camera_pose_observation.h). Observations of other kinds are passed over; a range scan that
 // cannot be loaded or is inconsistent is skipped and counted, with the reason kept for the log.
@@ -50,13 +51,5 @@ class RawlogFrameReader {
   int frames_ = 0;
   std::vector<std::string> skip_reasons_;
 };
-
-/// T_world_cam per frame from novelty-sim's groundtruth/poses.csv (frame → pose). Throws
-/// std::runtime_error naming the file and line of a malformed row.
-std::map<int, Eigen::Isometry3d> LoadGroundTruthPoses(const std::string& poses_csv);
-
-/// True depth (CV_32F metres, 0 = no surface) of a 1-based frame from novelty-sim's
-/// groundtruth/depth/NNNNNN.png (metres × 5000); empty if the file is missing.
-cv::Mat LoadGroundTruthDepth(const std::string& groundtruth_dir, int frame);
 
 }  // namespace novelty::sensors

@@ -1,5 +1,8 @@
 #include "sim/output/ground_truth_writer.h"
 
+#include "core/frame_stem.h"
+#include "sim/output/ground_truth_format.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -16,12 +19,6 @@ void Write(const std::string& path, const cv::Mat& image) {
 }
 
 }  // namespace
-
-std::string GroundTruthWriter::FrameStem(int frame) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%06d", frame);
-  return buf;
-}
 
 GroundTruthWriter::GroundTruthWriter(const std::string& dir, const Scenario& scenario,
                                      const std::vector<Eigen::Isometry3d>& rig_offsets)
@@ -76,9 +73,9 @@ void GroundTruthWriter::WriteFrame(int frame, double t, const Eigen::Isometry3d&
     poses_ << ",,,,,,\n";
   }
   cv::Mat depth16, ids16;
-  depth.convertTo(depth16, CV_16U, 5000.0);  // saturates beyond 13.1 m
-  ids.convertTo(ids16, CV_16U, 1.0, 1.0);
-  const std::string name = FrameStem(frame) + ".png";
+  depth.convertTo(depth16, CV_16U, ground_truth::kDepthUnitsPerMetre);  // saturates at 13.1 m
+  ids.convertTo(ids16, CV_16U, 1.0, ground_truth::kIdOffset);
+  const std::string name = core::FrameStem(frame) + ".png";
   Write(dir_ + "/depth/" + name, depth16);
   Write(dir_ + "/ids/" + name, ids16);
   Write(dir_ + "/novelty/" + name, novelty);
@@ -106,7 +103,7 @@ void GroundTruthWriter::WriteObjects() {
   std::ofstream out(dir_ + "/objects.csv");
   out << "id,name\n0,room\n";
   for (const ObjectSpec& o : scenario_.objects) out << o.id << "," << o.name << "\n";
-  out << "1000,arm\n";
+  out << ground_truth::kArmId << ",arm\n";
   if (!out) throw std::runtime_error(dir_ + "/objects.csv: write failed");
 }
 
@@ -120,9 +117,9 @@ cv::Mat GroundTruthWriter::NoveltyMask(const cv::Mat& ids, const cv::Mat& refere
   for (int i = 0; i < ids.rows * ids.cols; ++i) {
     const int now = ids.at<int>(i), before = reference_ids.at<int>(i);
     if (contains(added, now)) {
-      mask.at<uint8_t>(i) = 255;
+      mask.at<uint8_t>(i) = ground_truth::kNoveltyAdded;
     } else if (contains(removed, before) && now != before) {
-      mask.at<uint8_t>(i) = 128;
+      mask.at<uint8_t>(i) = ground_truth::kNoveltyRemoved;
     }
   }
   return mask;

@@ -1,4 +1,5 @@
-// Ground truth beside a simulated rawlog, in DIR/groundtruth/ (format.txt there repeats this):
+// Ground truth beside a simulated rawlog, in DIR/groundtruth/ (format.txt there repeats this;
+// GroundTruthReader reads it; the constants: ground_truth_format.h):
 //   poses.csv     frame,time,phase,x,y,z,qx,qy,qz,qw,robot_x,robot_y,robot_phi,odo_x,odo_y,odo_phi
 //                 true T_world_cam of the rig's reference camera (mono/RGB-D camera, stereo left,
 //                 trinocular centre) as translation + unit quaternion; robot/odometry in the plane
@@ -38,9 +39,6 @@ class GroundTruthWriter {
   void WriteEvents(const std::vector<std::string>& applied_events);
   /// Writes objects.csv: every object id with its name.
   void WriteObjects();
-
-  /// Zero-padded frame number, the stem of every per-frame file ("000042").
-  static std::string FrameStem(int frame);
 
   /// Novelty mask from the current and reference id images (CV_32S) and the changed ids.
   static cv::Mat NoveltyMask(const cv::Mat& ids, const cv::Mat& reference_ids,

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/frame_stem.h"
 #include "core/write_rgb_image.h"
 #include "sim/output/contact_sheet.h"
 #include "sim/output/ground_truth_writer.h"
@@ -22,7 +23,7 @@ void WriteCameras(RawlogWriter& out, const Scenario& s, double t, int frame,
                   const std::vector<RenderedFrame>& renders,
                   const Eigen::Isometry3d& robot_from_head,
                   const std::vector<Eigen::Isometry3d>& offsets) {
-  const std::string stem = GroundTruthWriter::FrameStem(frame);
+  const std::string stem = core::FrameStem(frame);
   switch (s.rig.kind) {
     case RigKind::kMono:
       out.WriteImage(t, "CAMERA", renders[0].rgb, s.camera, robot_from_head, stem);

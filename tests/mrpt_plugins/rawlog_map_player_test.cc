@@ -13,6 +13,7 @@
 #include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "tests/sim/scenario/simulated_run.h"
+#include "sim/output/ground_truth_reader.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
@@ -63,7 +64,7 @@ xi = 0.02
 // with the same options) give the same surprise, bit for bit, frame after frame.
 TEST(RawlogMapPlayer, MultiMetricMapPathEqualsTheLibraryApi) {
   const fs::path dir = SimulateClip("same");
-  const auto poses = sensors::LoadGroundTruthPoses((dir / "groundtruth/poses.csv").string());
+  const auto poses = sim::GroundTruthReader((dir / "groundtruth").string()).CameraPoses();
   const mrpt::config::CConfigFileMemory ini(kIni);
   mrpt::maps::CMultiMetricMap multi;
   BuildMaps(ini, multi);
@@ -97,7 +98,7 @@ TEST(RawlogMapPlayer, MultiMetricMapPathEqualsTheLibraryApi) {
 // the reason, keeping the frames read.
 TEST(RawlogMapPlayer, MissingPosesAndATruncatedRawlogAreReportedNotFatal) {
   const fs::path dir = SimulateClip("faults");
-  auto poses = sensors::LoadGroundTruthPoses((dir / "groundtruth/poses.csv").string());
+  auto poses = sim::GroundTruthReader((dir / "groundtruth").string()).CameraPoses();
   poses.erase(3);
   // The same rawlog cut in half, beside its images (MRPT finds them by the rawlog's name).
   fs::create_directories(dir / "cut");

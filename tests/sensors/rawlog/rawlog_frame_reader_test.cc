@@ -8,6 +8,8 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
+#include "core/frame_stem.h"
+#include "sim/output/ground_truth_reader.h"
 #include "tests/sim/scenario/simulated_run.h"
 
 namespace novelty::sensors {
@@ -34,7 +36,7 @@ arc 0 0 1.5 -100 -80 0.1
 TEST(RawlogFrameReader, ReadsEveryRgbdFrameWithDepthAndIntrinsics) {
   const fs::path dir = SimulateTinyRun("complete");
   RawlogFrameReader reader((dir / "tiny.rawlog").string());
-  const auto poses = LoadGroundTruthPoses((dir / "groundtruth/poses.csv").string());
+  const sim::GroundTruthReader truth_reader((dir / "groundtruth").string());
   int n = 0;
   for (Frame f; reader.Next(f);) {
     ++n;
@@ -43,20 +45,15 @@ TEST(RawlogFrameReader, ReadsEveryRgbdFrameWithDepthAndIntrinsics) {
     EXPECT_EQ(f.rgb.type(), CV_8UC3);
     EXPECT_EQ(f.camera.width, 64);
     EXPECT_NEAR(f.camera.fx, 32.0 / std::tan(M_PI / 6), 1e-6);
-    // Depth equals the ground-truth PNG (metres × 5000) to its 0.2 mm step.
-    char name[32];
-    std::snprintf(name, sizeof name, "%06d.png", n);
-    const cv::Mat truth =
-        cv::imread((dir / "groundtruth/depth" / name).string(), cv::IMREAD_UNCHANGED);
-    cv::Mat truth_m;
-    truth.convertTo(truth_m, CV_32F, 1.0 / 5000);
-    EXPECT_LT(cv::norm(f.depth, truth_m, cv::NORM_INF), 0.00021);
+    // Depth equals the ground truth's (metres × 5000 in a PNG) to its 0.2 mm step.
+    const std::string name = core::FrameStem(n) + ".png";
+    EXPECT_LT(cv::norm(f.depth, truth_reader.Depth(n), cv::NORM_INF), 0.00021);
     // The colour image is the one stored beside the rawlog.
     const cv::Mat stored = cv::imread((dir / "tiny_Images" / name).string());
     cv::Mat stored_rgb;
     cv::cvtColor(stored, stored_rgb, cv::COLOR_BGR2RGB);
     EXPECT_EQ(cv::norm(f.rgb, stored_rgb, cv::NORM_INF), 0.0);
-    EXPECT_TRUE(poses.count(n));
+    EXPECT_TRUE(truth_reader.CameraPoses().count(n));
   }
   EXPECT_EQ(n, 6);
   EXPECT_EQ(reader.skipped(), 0);
@@ -76,14 +73,6 @@ TEST(RawlogFrameReader, MissingImagesAreSkippedAndCountedNotFatal) {
 
 TEST(RawlogFrameReader, BadFilesAreNamed) {
   EXPECT_THROW(RawlogFrameReader("/nonexistent/x.rawlog"), std::runtime_error);
-  const fs::path bad = fs::temp_directory_path() / "novelty_bad_poses.csv";
-  std::ofstream(bad) << "frame,time\n1,0,A,x\n";
-  try {
-    LoadGroundTruthPoses(bad.string());
-    FAIL();
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find(":2: malformed row"), std::string::npos) << e.what();
-  }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "sensors/rawlog/rig_frame_reader.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/scenario_runner.h"
+#include "sim/output/ground_truth_reader.h"
 
 namespace novelty::sensors {
 namespace {
@@ -42,7 +43,7 @@ void ExpectAccurateDepth(const std::string& scenario, size_t cameras) {
     StereoDepthOptions o;
     const StereoDepth depth = ComputeStereoDepth(f.images[0], f.cameras[0], others, o);
     const eval::DepthAccuracy a = eval::MeasureDepthAccuracy(
-        depth.depth, LoadGroundTruthDepth((dir / "groundtruth").string(), f.index), f.images[0],
+        depth.depth, sim::GroundTruthReader((dir / "groundtruth").string()).Depth(f.index), f.images[0],
         {});
     std::printf(
         "%s frame %d: %d textured pixels, %.1f %% within 3 %%, median error %.2f %%; "
