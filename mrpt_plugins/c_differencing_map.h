@@ -1,7 +1,8 @@
 // CDifferencingMap: the image-differencing baseline of 4.3.2 (maps/appearance) as an MRPT metric
 // map, the same way as CAppearanceMap: "CDifferencingMap" in CMultiMetricMap .ini files with the
 // view keys of share/appearance.ini in "[<prefix>_options]" (new_view_distance,
-// new_view_angle_deg, max_relative_depth_jump, depth_tolerance), RGB-D observations, MRPT
+// new_view_angle_deg, max_relative_depth_jump, depth_tolerance, angle_power, weight_by_rays;
+// the surprise keys are read and not used), RGB-D observations, MRPT
 // serialization with atomic saves, grey frusta for SceneViewer3D.
 #pragma once
 

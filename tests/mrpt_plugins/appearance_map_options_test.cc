@@ -30,6 +30,9 @@ TEST(AppearanceMapOptions, ShippedIniGivesTheDocumentedDefaults) {
   EXPECT_EQ(o.half_precision, d.half_precision);
   EXPECT_NEAR(o.views.new_view_angle, d.views.new_view_angle, 1e-12);
   EXPECT_EQ(o.views.blend.depth_tolerance, 0.0);
+  EXPECT_EQ(o.surprise.update.min_variance, 1.0 / 12.0);  // the file's digits give the default
+  EXPECT_EQ(o.views.blend.angle_power, d.views.blend.angle_power);
+  EXPECT_EQ(o.views.selection.weight_by_rays, d.views.selection.weight_by_rays);
 }
 
 TEST(AppearanceMapOptions, ReadsValuesAndNamesBadOnes) {
