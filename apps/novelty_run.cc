@@ -347,7 +347,10 @@ int main(int argc, char** argv) {
       if (index % panels_every.getValue() == 0) {
         const cv::Mat panel = eval::SideBySide(
             {map.lastFrame().rgb, p.expected_rgb, eval::FalseColor(p.surprise, 20.0),
-             eval::FalseColor(p.uncertainty, 1e4, true), eval::FalseColor(d.difference, 150.0)});
+             eval::FalseColor(p.uncertainty, 1e4, true), eval::FalseColor(d.difference, 150.0)},
+            4,
+            {"camera " + stem, "expected (tau)", "surprise (0-20)", "uncertainty (log, 1e4)",
+             "differencing (0-150)"});
         core::WriteRgbImage(dir + "/panels/" + stem + ".png", panel);
         panel_frames.push_back(index);
       }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <string>
 
 namespace novelty::eval {
 
@@ -11,7 +12,9 @@ namespace novelty::eval {
 /// shows log(1 + v) / log(1 + max_value) (for quantities spanning decades, like Σβ).
 cv::Mat FalseColor(const cv::Mat& map, double max_value, bool log_scale = false);
 
-/// Images side by side (all CV_8UC3 of one height), separated by `gap` dark pixels.
-cv::Mat SideBySide(const std::vector<cv::Mat>& images, int gap = 4);
+/// Images side by side (all CV_8UC3 of one height), separated by `gap` dark pixels; with
+/// `captions` (one per image, or none), each under a strip holding its caption.
+cv::Mat SideBySide(const std::vector<cv::Mat>& images, int gap = 4,
+                   const std::vector<std::string>& captions = {});
 
 }  // namespace novelty::eval

@@ -23,11 +23,21 @@ inline F16 Load(const float* p) {
   std::memcpy(&v, p, sizeof v);
   return v;
 }
-inline void Store(float* p, F16 v) { std::memcpy(p, &v, sizeof v); }
-inline F16 Min(F16 a, F16 b) { return a < b ? a : b; }
-inline F16 Max(F16 a, F16 b) { return a > b ? a : b; }
-inline F16 AsFloat(I16 m) { return __builtin_convertvector(m, F16); }
-inline I16 AsInt(F16 x) { return __builtin_convertvector(x, I16); }  // truncates
+inline void Store(float* p, F16 v) {
+  std::memcpy(p, &v, sizeof v);
+}
+inline F16 Min(F16 a, F16 b) {
+  return a < b ? a : b;
+}
+inline F16 Max(F16 a, F16 b) {
+  return a > b ? a : b;
+}
+inline F16 AsFloat(I16 m) {
+  return __builtin_convertvector(m, F16);
+}
+inline I16 AsInt(F16 x) {
+  return __builtin_convertvector(x, I16);
+}  // truncates
 /// 0, 1, …, 15.
 inline F16 Iota() {
   F16 v;
@@ -43,24 +53,6 @@ inline F16 Ceil(F16 x) {
   const F16 t = AsFloat(AsInt(x));
   return t - AsFloat(t < x);
 }
-/// p[index[k]] per lane for 32-bit floats (V = F16) or ints (V = I16): one gather instruction
-/// with AVX-512 (GCC does not emit one for the loop), the loop elsewhere.
-template <class V, class S>
-inline V GatherLanes(const S* p, I16 index) {
-  static_assert(sizeof(S) == 4, "32-bit elements");
-#if defined(__AVX512F__)
-  if constexpr (std::is_same_v<S, float>) {
-    return (V)_mm512_i32gather_ps((__m512i)index, p, 4);
-  } else {
-    return (V)_mm512_i32gather_epi32((__m512i)index, p, 4);
-  }
-#else
-  V v;
-  for (int k = 0; k < kLanes; ++k) v[k] = p[index[k]];
-  return v;
-#endif
-}
-inline F16 Gather(const float* p, I16 index) { return GatherLanes<F16>(p, index); }
 /// The 32-bit word at byte offset offset[k] of `base` per lane (unaligned reads).
 inline I16 GatherBytes(const char* base, I16 offset) {
 #if defined(__AVX512F__)
@@ -71,7 +63,6 @@ inline I16 GatherBytes(const char* base, I16 offset) {
   return v;
 #endif
 }
-inline I16 GatherInt(const int32_t* p, I16 index) { return GatherLanes<I16>(p, index); }
 /// An IEEE half float (the low 16 bits of `bits`) as float, exactly (one instruction with F16C).
 inline float HalfToFloat(uint32_t bits) {
 #if defined(__F16C__)
