@@ -76,8 +76,8 @@ std::vector<double> ParseFactors(const std::string& list) {
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used != item.size() || !(f >= 1.0))
-      throw std::invalid_argument("--compare-views: '" + item + "' is not a factor >= 1");
+    if (used != item.size() || !(f >= 1.0) || !std::isfinite(f))
+      throw std::invalid_argument("--compare-views: '" + item + "' is not a finite factor >= 1");
     factors.push_back(f);
   }
   return factors;
