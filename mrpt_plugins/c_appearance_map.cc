@@ -54,8 +54,7 @@ void VisitOptionsV1(Archive& a, appearance::AppearanceMapOptions& o, Double d, B
 // A version-0 map was made without these: no variance floor, the plain average of distinct views.
 void SetVersion0Behaviour(appearance::AppearanceMapOptions& o) {
   o.surprise.update.min_variance = 0.0;
-  o.views.blend.angle_power = 0.0;
-  o.views.selection.weight_by_rays = false;
+  SetVersion0ViewOptions(o.views);
 }
 
 // Mean Σβ of a view (its "ab_sigma" plane, channels 1…3), for the frustum colour.

@@ -48,9 +48,8 @@ void CDifferencingMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t 
       o.blend.depth_tolerance;
   if (version >= 1) {
     in >> o.blend.angle_power >> o.selection.weight_by_rays;
-  } else {  // made as the plain average of distinct views
-    o.blend.angle_power = 0.0;
-    o.selection.weight_by_rays = false;
+  } else {
+    SetVersion0ViewOptions(o);
   }
   auto map = std::make_unique<appearance::DifferencingMap>(o);
   ReadViewMap(in, map->view_map());

@@ -65,6 +65,11 @@ bool DecodeObservation(const mrpt::obs::CObservation& obs,
   return true;
 }
 
+void SetVersion0ViewOptions(appearance::ViewBasedMapOptions& o) {
+  o.blend.angle_power = 0.0;
+  o.selection.weight_by_rays = false;
+}
+
 void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map) {
   const views::ReferenceViewStore& store = map.store();
   out << int32_t(store.size());

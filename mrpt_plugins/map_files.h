@@ -35,6 +35,10 @@ void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBase
 /// Reads what WriteViewMap wrote into `map` (replacing its views only if all reads succeed).
 void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map);
 
+/// The view options a map file of version 0 was made with, where it stores none: each selected
+/// view once in the thesis's plain average.
+void SetVersion0ViewOptions(appearance::ViewBasedMapOptions& o);
+
 /// One frustum per reference view at its pose; `badness[j]` in [0, 1] colours view j from green
 /// to red (empty: all grey).
 void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<double>& badness,

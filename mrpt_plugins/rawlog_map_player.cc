@@ -47,6 +47,25 @@ class RawlogMapPlayer::Impl {
   mrpt::obs::CObservationRobotPose::Ptr last_pose;
   std::optional<mrpt::poses::CPose3D> odometry;
   int frames = 0;
+
+  // The robot pose for camera observation `obs`, frame `frame`, from the chosen source.
+  std::optional<mrpt::poses::CPose3D> RobotPose(const mrpt::obs::CObservation& obs,
+                                                int frame) const {
+    switch (source) {
+      case PoseSource::kGroundTruth: {
+        const auto it = camera_poses.find(frame);
+        if (it == camera_poses.end()) return std::nullopt;
+        // The robot pose that puts the camera there.
+        return sensors::ToMrpt(it->second * CameraOnRobotOf(obs).inverse());
+      }
+      case PoseSource::kRawlog:
+        if (!last_pose || last_pose->timestamp != obs.timestamp) return std::nullopt;
+        return sensors::ToMrpt(sensors::RobotPoseOf(*last_pose));
+      case PoseSource::kOdometry:
+        return odometry;
+    }
+    return std::nullopt;
+  }
 };
 
 RawlogMapPlayer::RawlogMapPlayer(const std::string& rawlog, PoseSource source,
@@ -81,23 +100,13 @@ bool RawlogMapPlayer::Next(mrpt::maps::CMultiMetricMap& maps, int& frame) {
     frame = ++m.frames;
     const std::string where =
         m.input.path() + ": frame " + std::to_string(frame) + " (" + obs->sensorLabel + ")";
-    std::optional<mrpt::poses::CPose3D> robot;
-    if (m.source == PoseSource::kGroundTruth) {
-      const auto it = m.camera_poses.find(frame);
-      if (it != m.camera_poses.end())  // the robot pose that puts the camera there
-        robot = sensors::ToMrpt(it->second * CameraOnRobotOf(*obs).inverse());
-    } else if (m.source == PoseSource::kRawlog) {
-      if (m.last_pose && m.last_pose->timestamp == obs->timestamp)
-        robot = sensors::ToMrpt(sensors::RobotPoseOf(*m.last_pose));
-    } else {
-      robot = m.odometry;
-    }
+    const std::optional<mrpt::poses::CPose3D> robot = m.RobotPose(*obs, frame);
     if (!robot) {
       skip_reasons_.push_back(where + ": no pose");
       continue;
     }
     try {
-      obs->load();
+      obs->load();  // once for all the maps that decode it; unloaded when they are done
       const bool used = maps.insertObservation(*obs, *robot);
       obs->unload();
       if (!used) {

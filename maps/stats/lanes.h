@@ -35,9 +35,9 @@ inline F16 Max(F16 a, F16 b) {
 inline F16 AsFloat(I16 m) {
   return __builtin_convertvector(m, F16);
 }
-inline I16 AsInt(F16 x) {
+inline I16 AsInt(F16 x) {  // truncates
   return __builtin_convertvector(x, I16);
-}  // truncates
+}
 /// 0, 1, …, 15.
 inline F16 Iota() {
   F16 v;

@@ -203,9 +203,8 @@ inline bool Usable(const Vertex& a, const Vertex& b, const Vertex& c, float max_
 
 // Per covered virtual pixel: cos of the angle between the rays from the surface point to the
 // virtual camera centre (origin) and to the source camera centre (in virtual coordinates), into
-// `cos_angle` (reused frame to frame). In float with one square root per pixel, in a loop the
-// compiler vectorises: a fresh image and a double unprojection per pixel made the seven-view
-// appearance frame 1.5× slower.
+// `cos_angle` (reused frame to frame: fresh images cost page faults). In float with one square
+// root per pixel, in a loop the compiler vectorises.
 void ViewAngles(const cv::Mat& depth, const PinholeCamera& cam, const Eigen::Vector3d& source,
                 cv::Mat& cos_angle) {
   cos_angle.create(depth.size(), CV_32FC1);

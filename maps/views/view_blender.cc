@@ -83,7 +83,8 @@ inline int StoreValid(uint8_t* p, I16 hit) {
   return stats::lanes::Count(hit);
 }
 // x^p for one pixel or sixteen. Whole powers up to 64 (the blend's usual ones) by repeated
-// squaring, in vector registers: std::pow per lane cost the seven-view appearance frame 7 ms.
+// squaring, in vector registers: std::pow lane by lane dominated a blend with angle_power
+// (BM_AppearanceMapSevenViews with angle_power set).
 template <typename T>
 inline T Pow(T x, float p) {
   const int n = int(p);
@@ -388,10 +389,9 @@ inline auto FootprintOf(const WarpField& w, const Plane& p, float view_weight,
                         const BlendOptions& o, const PixelLimits<T>& limits, int y, int x) {
   T u, v;
   LoadMap(w.map.ptr<cv::Vec2f>(y) + x, u, v);
-  // The map rows are streamed once per view; fetching ahead hides the misses (≈ 10–20 %). Every
-  // line the pixels span is fetched: sixteen pixels' (u, v) fill two lines, and fetching only the
-  // first left every other line a miss (that load then took 30 % of the half-float parameter
-  // blend's time; fetching both: seven-view appearance frame 4.77 → 3.99 ms).
+  // The map rows are streamed once per view; fetching ahead hides the misses. Every line the
+  // pixels span is fetched: sixteen pixels' (u, v) fill two lines, and fetching only the first
+  // left every other line a miss (BM_AppearanceMapSevenViews, docs/performance_history.md).
   const char* ahead = reinterpret_cast<const char*>(w.map.ptr<cv::Vec2f>(y) + x + 64);
   for (std::size_t b = 0; b < 2 * sizeof(T); b += 64) __builtin_prefetch(ahead + b);
   // Covered where the map holds source coordinates (uncovered: −1): the depth is read only when

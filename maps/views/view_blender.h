@@ -39,9 +39,9 @@ struct BlendOptions {
   /// views that saw the surface from the same direction get more say, which keeps
   /// view-dependent effects (highlights) right. Relative to the best view, so a weighting never
   /// uncovers a pixel that a view covers. 0 = no such weighting (the thesis's average), the
-  /// default: on ICL-NUIM (frame 2 from 1, 4, 5, coverage 0.286 either way) the best power, 10,
-  /// gains 0.15 dB (31.58 against 31.43), along the glass-and-cup path nothing (33.57 dB), and
-  /// it costs the appearance map's seven-view frame 2 ms (3.5 → 5.5 ms, over its 5 ms budget).
+  /// default: the weighting gains little on real data (view_synthesis_data_test.cc, ICL-NUIM) and
+  /// nothing along the simulated path, and it takes the appearance map's seven-view frame over
+  /// its budget (BM_AppearanceMapSevenViews); docs/experiments.md has the figures.
   double angle_power = 0.0;
 
   /// The thesis's rule: every covering view counts the same (3.3.2).
