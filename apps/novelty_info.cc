@@ -3,6 +3,8 @@
 // Links every external dependency and touches each at run time (an Embree device, an ODE world
 // configuration, an OctoMap tree, a Ceres problem, MRPT's version), so a broken install shows up
 // here first. Then it demonstrates the statistics core on one pixel (eq. 4.8-4.21).
+// `--dump-options CLASS` prints a map's options with their defaults and documentation as an
+// `.ini` section instead (share/appearance.ini and share/differencing.ini are that output).
 #include <ceres/ceres.h>
 #include <ceres/version.h>
 #include <embree3/rtcore.h>
@@ -13,11 +15,15 @@
 #include <octomap/OcTree.h>
 #include <Eigen/Core>
 #include <cstdio>
+#include <iostream>
 #include <opencv2/core.hpp>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "maps/stats/normal_gamma_kl.h"
+#include "mrpt_plugins/appearance_map_options.h"
+#include "mrpt_plugins/differencing_map_options.h"
 
 namespace {
 
@@ -85,13 +91,26 @@ void SurpriseDemo() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::vector<std::string> classes = {"CAppearanceMap", "CDifferencingMap"};
+  TCLAP::ValuesConstraint<std::string> allowed(classes);
+  TCLAP::ValueArg<std::string> dump_options(
+      "", "dump-options", "Print the map class's options with their defaults as an .ini section",
+      false, "", &allowed);
   try {
     TCLAP::CmdLine cmd("Prints what this NoveltyMaps build contains and the libraries it uses.",
                        ' ', NOVELTY_VERSION);
+    cmd.add(dump_options);
     cmd.parse(argc, argv);
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-info: %s (argument %s)\n", e.error().c_str(), e.argId().c_str());
     return 2;
+  }
+  if (dump_options.isSet()) {
+    if (dump_options.getValue() == "CAppearanceMap")
+      novelty::mrpt_plugins::AppearanceMapConfig().dumpToTextStream(std::cout);
+    else
+      novelty::mrpt_plugins::DifferencingMapConfig().dumpToTextStream(std::cout);
+    return 0;
   }
   std::printf("NoveltyMaps %s\n\nLibraries:\n", NOVELTY_VERSION);
   std::printf("  MRPT     %s\n", mrpt::system::MRPT_getVersion().c_str());
@@ -105,7 +124,7 @@ int main(int argc, char** argv) {
   std::printf("  ODE      %s, %s\n", dGetConfiguration(), OdeInfo().c_str());
   std::printf(
       "\nBuilt components:\n"
-      "  core             image I/O\n"
+      "  core             camera, rigid poses, Frame, image I/O, SIMD lanes and row helpers\n"
       "  maps/stats       normal-gamma updates (eq. 4.4-4.13), KL surprise (4.15-4.23),\n"
       "                   gamma ML fit (eq. 2.14-2.17), special functions\n"
       "  maps/color       YCbCr (ICT) and back, HSV\n"

@@ -120,13 +120,13 @@ struct RunMaps {
       if (auto d = std::dynamic_pointer_cast<mrpt_plugins::CDifferencingMap::TMapDefinition>(def))
         differencing = d;
     }
-    appearance->options.views.new_view_distance *= reduction;
-    differencing->options.new_view_distance *= reduction;
+    appearance->config.map.views.new_view_distance *= reduction;
+    differencing->config.map.new_view_distance *= reduction;
     for (const double f : factors) {
       auto a = *appearance;
-      a.options.views.new_view_distance *= f;
+      a.config.map.views.new_view_distance *= f;
       auto d = *differencing;
-      d.options.new_view_distance *= f;
+      d.config.map.new_view_distance *= f;
       inits.push_back(a);
       inits.push_back(d);
     }
@@ -196,8 +196,11 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
   for (const eval::SelectivityRow& r : rows) regions.insert(r.region);
   for (const std::string& region : regions) {
     report.Heading("Region: " + region);
-    eval::PlotSeries as_s{"AS surprise", "#c0392b", {}}, as_d{"AS differencing", "#2471a3", {}};
-    eval::PlotSeries pas_s{"PAS surprise", "#c0392b", {}}, pas_d{"PAS differencing", "#2471a3", {}};
+    // One point per frame that shows the region: no line across frames where it is not visible.
+    eval::PlotSeries as_s{"AS surprise", "#c0392b", {}, 1.0},
+        as_d{"AS differencing", "#2471a3", {}, 1.0};
+    eval::PlotSeries pas_s{"PAS surprise", "#c0392b", {}, 1.0},
+        pas_d{"PAS differencing", "#2471a3", {}, 1.0};
     for (const eval::SelectivityRow& r : rows) {
       if (r.region != region) continue;
       as_s.points.push_back({double(r.frame), r.surprise.as_db});

@@ -56,23 +56,23 @@ std::vector<int> ParseList(const std::string& text) {
   return out;
 }
 
-int FolderMode(const std::string& dir, const views::PinholeCamera& intrinsics, double depth_scale,
+int FolderMode(const std::string& dir, const core::PinholeCamera& intrinsics, double depth_scale,
                int target, const std::string& sources, const std::string& out,
                views::DepthMeshWarper& warper, const views::SynthesisOptions& options) {
-  views::PinholeCamera cam = intrinsics;
+  core::PinholeCamera cam = intrinsics;
   const std::string probe_path = dir + "/color/" + std::to_string(target) + ".png";
   const cv::Mat probe = cv::imread(probe_path);
   if (probe.empty()) throw std::runtime_error(probe_path + ": cannot read image");
   cam.width = probe.cols;
   cam.height = probe.rows;
   const sensors::RgbdFolderReader reader(dir, cam, depth_scale);
-  const sensors::RgbdFrame truth = reader.Read(target);
+  const core::Frame truth = reader.Read(target);
   std::vector<views::ReferenceView> refs;
-  for (int s : ParseList(sources)) refs.push_back(reader.ReadView(s));
+  for (int s : ParseList(sources)) refs.push_back(views::ReferenceViewOf(reader.Read(s)));
   std::vector<const views::ReferenceView*> ptrs;
   for (const auto& r : refs) ptrs.push_back(&r);
   const views::SynthesisResult r =
-      views::SynthesiseView(warper, ptrs, {}, {}, cam, truth.T_world_cam, options);
+      views::SynthesiseView(warper, ptrs, {}, {}, cam, *truth.T_world_cam, options);
   core::WriteRgbImage(out, r.rgb);
   std::printf("PSNR=%.2f coverage=%.4f\n", eval::Psnr(r.rgb, truth.rgb, r.valid), r.coverage);
   return 0;
@@ -85,8 +85,8 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
   const auto poses = sim::GroundTruthReader(truth_dir).CameraPoses();
   sensors::RawlogFrameReader reader(rawlog);
   views::ReferenceViewStore store;
-  std::vector<sensors::Frame> path;
-  for (sensors::Frame f; reader.Next(f);) {
+  std::vector<core::Frame> path;
+  for (core::Frame f; reader.Next(f);) {
     const auto pose = poses.find(f.index);
     if (pose == poses.end()) {
       std::fprintf(stderr, "novelty-synth: %s: frame %d has no ground-truth pose, skipped\n",
@@ -121,7 +121,7 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
   const views::ViewSelectionOptions selection;
   double psnr_sum = 0.0, coverage_sum = 0.0;
   int n = 0;
-  for (const sensors::Frame& f : path) {
+  for (const core::Frame& f : path) {
     const Eigen::Isometry3d& pose = poses.at(f.index);
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<const views::ReferenceView*> refs;
@@ -219,7 +219,7 @@ int main(int argc, char** argv) {
           "give either --rawlog R --groundtruth DIR, or --frames DIR with "
           "--fx --fy --cx --cy --target --sources");
     }
-    views::PinholeCamera cam;
+    core::PinholeCamera cam;
     cam.fx = fx.getValue();
     cam.fy = fy.getValue();
     cam.cx = cx.getValue();

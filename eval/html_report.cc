@@ -44,6 +44,22 @@ std::string Num(double v) {
 
 }  // namespace
 
+std::vector<double> NiceTicks(double lo, double hi, int count) {
+  if (!(hi > lo) || count < 1) return {lo};
+  const double raw = (hi - lo) / count;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = magnitude;
+  for (const double m : {1.0, 2.0, 5.0, 10.0}) {
+    step = m * magnitude;
+    if (step >= raw) break;
+  }
+  std::vector<double> ticks;
+  const long first = std::lround(std::ceil(lo / step - 1e-9)),
+             last = std::lround(std::floor(hi / step + 1e-9));
+  for (long k = first; k <= last; ++k) ticks.push_back(k == 0 ? 0.0 : double(k) * step);
+  return ticks;
+}
+
 std::string SvgLinePlot(const std::string& title, const std::string& x_label,
                         const std::string& y_label, const std::vector<PlotSeries>& series,
                         const std::vector<PlotBand>& bands, int width, int height) {
@@ -81,10 +97,12 @@ std::string SvgLinePlot(const std::string& title, const std::string& x_label,
   }
   o << "<rect x='" << l << "' y='" << t << "' width='" << pw << "' height='" << ph
     << "' fill='none' stroke='#333'/>\n";
-  for (int i = 0; i <= 4; ++i) {
-    const double xv = x0 + (x1 - x0) * i / 4, yv = y0 + (y1 - y0) * i / 4;
+  for (const double xv : NiceTicks(x0, x1)) {
     o << "<text x='" << X(xv) << "' y='" << t + ph + 14 << "' text-anchor='middle'>" << Num(xv)
-      << "</text>\n<text x='" << l - 5 << "' y='" << Y(yv) + 4 << "' text-anchor='end'>" << Num(yv)
+      << "</text>\n";
+  }
+  for (const double yv : NiceTicks(y0, y1)) {
+    o << "<text x='" << l - 5 << "' y='" << Y(yv) + 4 << "' text-anchor='end'>" << Num(yv)
       << "</text>\n";
   }
   o << "<text x='" << l + pw / 2 << "' y='" << height - 6 << "' text-anchor='middle'>"
@@ -95,11 +113,14 @@ std::string SvgLinePlot(const std::string& title, const std::string& x_label,
     const PlotSeries& s = series[k];
     std::string path;
     bool pen_down = false;
+    double last_x = 0.0;
     for (const auto& [x, y] : s.points) {
       if (!std::isfinite(y)) {
         pen_down = false;
         continue;
       }
+      if (s.max_step > 0.0 && std::abs(x - last_x) > s.max_step) pen_down = false;
+      last_x = x;
       path += (pen_down ? " L" : " M") + Num(X(x)) + " " + Num(Y(std::clamp(y, y0, y1)));
       pen_down = true;
     }

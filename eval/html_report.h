@@ -12,7 +12,13 @@ struct PlotSeries {
   std::string name;
   std::string color;                              ///< any CSS colour
   std::vector<std::pair<double, double>> points;  ///< (x, y); NaN y values leave gaps
+  /// > 0: points farther apart in x than this are not joined (e.g. 1 for per-frame values, so a
+  /// line never spans frames where the quantity was not measured); 0: all joined.
+  double max_step = 0.0;
 };
+
+/// Round tick values covering [lo, hi]: about `count` multiples of 1, 2 or 5 × 10^k.
+std::vector<double> NiceTicks(double lo, double hi, int count = 5);
 
 struct PlotBand {
   double from, to;

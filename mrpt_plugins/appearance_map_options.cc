@@ -1,142 +1,79 @@
 #include "mrpt_plugins/appearance_map_options.h"
 
-#include <mrpt/config/CConfigFile.h>
-
-#include <cmath>
-#include <filesystem>
-#include <functional>
-#include <map>
-#include <stdexcept>
+#include "mrpt_plugins/view_map_options.h"
 
 namespace novelty::mrpt_plugins {
 
-std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config) {
-  const auto* file = dynamic_cast<const mrpt::config::CConfigFile*>(&config);
-  return file ? file->getAssociatedFile() : "map definition";
+const OptionTable<AppearanceMapConfig>& AppearanceMapConfig::Table() {
+  using C = AppearanceMapConfig;
+  static const OptionTable<C> table = [] {
+    OptionTable<C> t;
+    t.Add(
+         "forgetting_factor",
+         [](C & c) -> auto& { return c.map.surprise.update.forgetting_factor; },
+         "f, eq. 4.10-4.11 (thesis value)")
+        .Add(
+            "xi", [](C & c) -> auto& { return c.map.surprise.update.xi; },
+            "xi, eq. 4.8, 1/variance (chosen: noise variance 4 -> tau averages ~25 frames)")
+        .Add(
+            "sigma_min", [](C & c) -> auto& { return c.map.surprise.update.sigma_min; },
+            "sigma_min, eq. 4.8 (chosen: keeps >= 1 % learning rate)")
+        .Add(
+            "sigma_max", [](C & c) -> auto& { return c.map.surprise.update.sigma_max; },
+            "sigma_max, eq. 4.8 (chosen: the initial sigma)")
+        .Add(
+            "min_variance", [](C & c) -> auto& { return c.map.surprise.update.min_variance; },
+            "floor of beta/alpha: 1/12, one quantisation level (0 = the thesis's update)", 1.0, 0.0)
+        .Add(
+            "initial_alpha", [](C & c) -> auto& { return c.map.initial_prior.alpha; },
+            "initial prior, thesis 4.3")
+        .Add(
+            "initial_beta", [](C & c) -> auto& { return c.map.initial_prior.beta; }, "")
+        .Add(
+            "initial_tau", [](C & c) -> auto& { return c.map.initial_prior.tau; }, "")
+        .Add(
+            "initial_sigma", [](C & c) -> auto& { return c.map.initial_prior.sigma; }, "")
+        .Add(
+            "fast_approximations",
+            [](C & c) -> auto& { return c.map.surprise.kl.fast_approximations; },
+            "eq. 4.22-4.23 instead of exact ln Gamma and psi")
+        .Add(
+            "half_precision", [](C & c) -> auto& { return c.map.half_precision; },
+            "alpha, beta, sigma stored as half floats (tau always float)")
+        .Include(
+            ViewMapOptionTable(), [](C & c) -> auto& { return c.map.views; })
+        .Include(
+            DepthSourceOptionTable(), [](C & c) -> auto& { return c.depth; })
+        .Check([](const C& c) {
+          c.map.surprise.update.Check();
+          stats::CheckNormalGamma(c.map.initial_prior, "initial prior");
+        });
+    return t;
+  }();
+  return table;
 }
 
-MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::string& section,
-                        const std::string& source) {
-  MapConfig result;
-  appearance::AppearanceMapOptions& o = result.map;
-  auto& u = o.surprise.update;
-  auto& init = o.initial_prior;
-  auto& v = o.views;
-  // Each key with the field it sets; booleans accept true/false/1/0.
-  std::map<std::string, std::function<void(const std::string&)>> keys;
-  auto number = [&](double* field) {
-    return [field](const std::string& text) {
-      std::size_t used = 0;
-      double value = 0.0;
-      try {
-        value = std::stod(text, &used);
-      } catch (const std::exception&) {
-        throw std::invalid_argument("not a number");
-      }
-      if (text.find_first_not_of(" \t", used) != std::string::npos || !std::isfinite(value)) {
-        throw std::invalid_argument("not a number");
-      }
-      *field = value;
-    };
-  };
-  auto flag = [](bool* field) {
-    return [field](const std::string& text) {
-      if (text == "true" || text == "1")
-        *field = true;
-      else if (text == "false" || text == "0")
-        *field = false;
-      else
-        throw std::invalid_argument("not true/false");
-    };
-  };
-  double angle_deg = v.new_view_angle * 180.0 / M_PI;
-  keys["forgetting_factor"] = number(&u.forgetting_factor);
-  keys["xi"] = number(&u.xi);
-  keys["sigma_min"] = number(&u.sigma_min);
-  keys["sigma_max"] = number(&u.sigma_max);
-  keys["min_variance"] = number(&u.min_variance);
-  keys["initial_alpha"] = number(&init.alpha);
-  keys["initial_beta"] = number(&init.beta);
-  keys["initial_tau"] = number(&init.tau);
-  keys["initial_sigma"] = number(&init.sigma);
-  keys["fast_approximations"] = flag(&o.surprise.kl.fast_approximations);
-  keys["half_precision"] = flag(&o.half_precision);
-  keys["new_view_distance"] = number(&v.new_view_distance);
-  keys["new_view_angle_deg"] = number(&angle_deg);
-  keys["max_relative_depth_jump"] = number(&v.warp.max_relative_depth_jump);
-  keys["depth_tolerance"] = number(&v.blend.depth_tolerance);
-  keys["angle_power"] = number(&v.blend.angle_power);
-  keys["weight_by_rays"] = flag(&v.selection.weight_by_rays);
-  DepthSourceOptions& d = result.depth;
-  keys["depth_source"] = [&d](const std::string& text) {
-    if (text == "rgbd")
-      d.kind = DepthSourceOptions::Kind::kRgbd;
-    else if (text == "stereo")
-      d.kind = DepthSourceOptions::Kind::kStereo;
-    else
-      throw std::invalid_argument("not rgbd or stereo");
-  };
-  double hypotheses = d.stereo.sweep.hypotheses, window = d.stereo.sweep.window;
-  keys["stereo_near"] = number(&d.stereo.sweep.near);
-  keys["stereo_far"] = number(&d.stereo.sweep.far);
-  keys["stereo_hypotheses"] = number(&hypotheses);
-  keys["stereo_window"] = number(&window);
-
-  std::vector<std::string> present;
-  config.getAllKeys(section, present);
-  for (const std::string& key : present) {
-    const auto it = keys.find(key);
-    const std::string where = source + ": [" + section + "] " + key;
-    if (it == keys.end()) throw std::runtime_error(where + ": unknown option");
-    std::string text = config.read_string(section, key, "", true);
-    // Inline comments (after ';', '#' or "//") are not part of the value.
-    for (const char* mark : {";", "#", "//"}) text = text.substr(0, text.find(mark));
-    text.erase(text.find_last_not_of(" \t\r") + 1);
-    try {
-      it->second(text);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(where + " = '" + text + "': " + e.what());
-    }
-  }
-  v.new_view_angle = angle_deg * M_PI / 180.0;
-  d.stereo.sweep.hypotheses = int(hypotheses);
-  d.stereo.sweep.window = int(window);
-  try {
-    u.Check();
-    if (!(v.blend.depth_tolerance >= 0.0 && v.blend.angle_power >= 0.0))
-      throw std::invalid_argument("depth_tolerance and angle_power must be >= 0, got " +
-                                  std::to_string(v.blend.depth_tolerance) + " and " +
-                                  std::to_string(v.blend.angle_power));
-    stats::CheckNormalGamma(init, "initial prior");
-    const auto& sweep = d.stereo.sweep;
-    if (!(sweep.near > 0 && sweep.far > sweep.near) || sweep.hypotheses < 2 ||
-        double(sweep.hypotheses) != hypotheses || sweep.window < 1 ||
-        double(sweep.window) != window) {
-      throw std::invalid_argument(
-          "stereo: need 0 < stereo_near < stereo_far, whole stereo_hypotheses ≥ 2 and "
-          "stereo_window ≥ 1");
-    }
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(source + ": [" + section + "] " + e.what());
-  }
-  return result;
+const std::vector<std::string>& AppearanceMapConfig::Version0Keys() {
+  static const std::vector<std::string> keys = {"forgetting_factor",
+                                                "xi",
+                                                "sigma_min",
+                                                "sigma_max",
+                                                "initial_alpha",
+                                                "initial_beta",
+                                                "initial_tau",
+                                                "initial_sigma",
+                                                "fast_approximations",
+                                                "half_precision",
+                                                "new_view_distance",
+                                                "new_view_angle_deg",
+                                                "max_relative_depth_jump",
+                                                "depth_tolerance"};
+  return keys;
 }
 
-appearance::AppearanceMapOptions LoadAppearanceMapOptions(
-    const mrpt::config::CConfigFileBase& config, const std::string& section,
-    const std::string& source) {
-  return LoadMapConfig(config, section, source).map;
-}
-
-MapConfig LoadMapConfig(const std::string& path, const std::string& section) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such config file");
-  const mrpt::config::CConfigFile config(path);
-  return LoadMapConfig(config, section, path);
-}
-
-appearance::AppearanceMapOptions LoadAppearanceMapOptions(const std::string& path,
-                                                          const std::string& section) {
-  return LoadMapConfig(path, section).map;
+const std::vector<std::string>& AppearanceMapConfig::Version1Keys() {
+  static const std::vector<std::string> keys = {"min_variance", "angle_power", "weight_by_rays"};
+  return keys;
 }
 
 }  // namespace novelty::mrpt_plugins

@@ -1,40 +1,30 @@
-// AppearanceMapOptions from an MRPT configuration file section (share/appearance.ini documents
-// every key and its default). Unknown keys and unreadable values are errors that name the file,
-// the section and the key: a misspelt option must not silently fall back to a default.
+// The options of CAppearanceMap: one table (option_table.h) from which its `.ini` section is read,
+// its defaults dumped (share/appearance.ini is that dump, tested) and its map file's options
+// written and read by key. MRPT's CLoadableOptions interface on top.
 #pragma once
 
-#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CLoadableOptions.h>
 
 #include <string>
 
 #include "maps/appearance/appearance_map.h"
 #include "mrpt_plugins/depth_source.h"
+#include "mrpt_plugins/option_table.h"
 
 namespace novelty::mrpt_plugins {
 
-/// Everything a map section configures: the map's options and where camera observations get
-/// their depth (depth_source.h).
-struct MapConfig {
+/// Everything a CAppearanceMap section configures: the map's options and where camera
+/// observations get their depth (depth_source.h).
+struct AppearanceMapConfig : public TabledOptions<AppearanceMapConfig> {
   appearance::AppearanceMapOptions map;
   DepthSourceOptions depth;
+
+  static const OptionTable<AppearanceMapConfig>& Table();
+  /// The section name of share/appearance.ini.
+  static constexpr const char* kSection = "AppearanceMap";
+  /// The keys a map file of version 0, and those version 1 added, stored one after another.
+  static const std::vector<std::string>& Version0Keys();
+  static const std::vector<std::string>& Version1Keys();
 };
-
-/// The file behind `config` (a CConfigFile), else "map definition": how errors name it.
-std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config);
-
-/// Reads `section` of `config` on top of the defaults. `source` names the file in errors.
-MapConfig LoadMapConfig(const mrpt::config::CConfigFileBase& config, const std::string& section,
-                        const std::string& source);
-/// The same from a file path; throws std::runtime_error if it cannot be read.
-MapConfig LoadMapConfig(const std::string& ini_path, const std::string& section = "AppearanceMap");
-
-/// The map's options alone (see LoadMapConfig).
-appearance::AppearanceMapOptions LoadAppearanceMapOptions(
-    const mrpt::config::CConfigFileBase& config, const std::string& section,
-    const std::string& source);
-
-/// The map's options alone, from a file path.
-appearance::AppearanceMapOptions LoadAppearanceMapOptions(
-    const std::string& ini_path, const std::string& section = "AppearanceMap");
 
 }  // namespace novelty::mrpt_plugins

@@ -11,7 +11,7 @@ namespace novelty::mrpt_plugins {
 
 bool DecodeWithDepthSource(const mrpt::obs::CObservation& obs,
                            const std::optional<const mrpt::poses::CPose3D>& robot_pose,
-                           const DepthSourceOptions& options, ObservedFrame& frame) {
+                           const DepthSourceOptions& options, core::Frame& frame) {
   if (options.kind != DepthSourceOptions::Kind::kStereo) return false;
   const auto* stereo = dynamic_cast<const mrpt::obs::CObservationStereoImages*>(&obs);
   if (!stereo) return false;
@@ -20,8 +20,7 @@ bool DecodeWithDepthSource(const mrpt::obs::CObservation& obs,
     // load() fills the external images: a copy, so the caller's observation stays as it was.
     mrpt::obs::CObservationStereoImages copy(*stereo);
     rig = sensors::RigFrameFromStereo(copy);
-    std::vector<sensors::SweepView> others{
-        {rig.images[1], rig.cameras[1], rig.ref_from_camera[1]}};
+    std::vector<sensors::SweepView> others{{rig.images[1], rig.cameras[1], rig.ref_from_camera[1]}};
     frame.depth =
         sensors::ComputeStereoDepth(rig.images[0], rig.cameras[0], others, options.stereo).depth;
   } catch (const std::exception& e) {

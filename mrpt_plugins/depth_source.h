@@ -29,6 +29,6 @@ struct DepthSourceOptions {
 /// sensor when the pair is unusable (no right image, sizes differ).
 bool DecodeWithDepthSource(const mrpt::obs::CObservation& obs,
                            const std::optional<const mrpt::poses::CPose3D>& robot_pose,
-                           const DepthSourceOptions& options, ObservedFrame& frame);
+                           const DepthSourceOptions& options, core::Frame& frame);
 
 }  // namespace novelty::mrpt_plugins

@@ -49,8 +49,7 @@ Eigen::Isometry3d ReadPose(mrpt::serialization::CArchive& in) {
 }  // namespace
 
 bool DecodeObservation(const mrpt::obs::CObservation& obs,
-                       const std::optional<const mrpt::poses::CPose3D>& robot,
-                       ObservedFrame& frame) {
+                       const std::optional<const mrpt::poses::CPose3D>& robot, core::Frame& frame) {
   const auto* scan = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obs);
   if (!scan) return false;
   scan->load();
@@ -63,11 +62,6 @@ bool DecodeObservation(const mrpt::obs::CObservation& obs,
       robot ? sensors::ToEigen(*robot) : Eigen::Isometry3d::Identity();
   frame.T_world_cam = world_from_robot * sensors::CameraOnRobot(*scan);
   return true;
-}
-
-void SetVersion0ViewOptions(appearance::ViewBasedMapOptions& o) {
-  o.blend.angle_power = 0.0;
-  o.selection.weight_by_rays = false;
 }
 
 void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map) {

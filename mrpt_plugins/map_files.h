@@ -12,32 +12,22 @@
 #include <string>
 #include <vector>
 
+#include "core/frame.h"
 #include "maps/appearance/view_based_map.h"
 
 namespace novelty::mrpt_plugins {
-
-/// A decoded RGB-D frame in world coordinates.
-struct ObservedFrame {
-  cv::Mat rgb, depth;
-  views::PinholeCamera camera;
-  Eigen::Isometry3d T_world_cam = Eigen::Isometry3d::Identity();
-};
 
 /// The frame of a CObservation3DRangeScan with an intensity image (loading external images),
 /// its camera at robot_pose ⊕ sensor pose (robot at the origin if no pose). Returns false for
 /// other observations; throws std::invalid_argument naming the sensor if the scan is unusable.
 bool DecodeObservation(const mrpt::obs::CObservation& obs,
                        const std::optional<const mrpt::poses::CPose3D>& robot_pose,
-                       ObservedFrame& frame);
+                       core::Frame& frame);
 
 /// Views (camera, pose, anchor, depth, named planes) of a view-based map.
 void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map);
 /// Reads what WriteViewMap wrote into `map` (replacing its views only if all reads succeed).
 void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map);
-
-/// The view options a map file of version 0 was made with, where it stores none: each selected
-/// view once in the thesis's plain average.
-void SetVersion0ViewOptions(appearance::ViewBasedMapOptions& o);
 
 /// One frustum per reference view at its pose; `badness[j]` in [0, 1] colours view j from green
 /// to red (empty: all grey).

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "mrpt_plugins/appearance_map_options.h"
+#include "mrpt_plugins/differencing_map_options.h"
 
 namespace novelty::mrpt_plugins {
 
@@ -48,10 +49,12 @@ std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBa
                                "_count = 1, got " + std::to_string(counts[cls]));
   }
   // Our maps' options, read here: through MRPT's loader an error loses its section.
-  for (const char* ours : {"CAppearanceMap", "CDifferencingMap"}) {
-    for (int k = 0; k < counts[ours]; ++k)
-      LoadMapConfig(ini, MapSection(section, ours, k, "options"), source);
-  }
+  for (int k = 0; k < counts["CAppearanceMap"]; ++k)
+    AppearanceMapConfig::FromConfig(ini, MapSection(section, "CAppearanceMap", k, "options"),
+                                    source);
+  for (int k = 0; k < counts["CDifferencingMap"]; ++k)
+    DifferencingMapConfig::FromConfig(ini, MapSection(section, "CDifferencingMap", k, "options"),
+                                      source);
   for (const std::string& s : sections) {
     if (s == section || s.empty()) continue;
     bool read = false;

@@ -8,11 +8,13 @@
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "mrpt_plugins/depth_source.h"
 #include "mrpt_plugins/map_files.h"
@@ -20,7 +22,9 @@
 
 namespace novelty::mrpt_plugins {
 
-template <class Map, class Options, class Products>
+// Config: the map's option table (appearance_map_options.h), with the map's options in `map`
+// and the depth source in `depth`.
+template <class Map, class Config, class Products>
 class ViewMapAdapter : public mrpt::maps::CMetricMap {
  public:
   bool isEmpty() const override { return map_->store().size() == 0; }
@@ -28,10 +32,14 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
   /// Inserts a decoded frame directly (what insertObservation does after decoding), for callers
   /// that read frames themselves. Same errors as the map's Insert.
   const Products& InsertFrame(const cv::Mat& rgb, const cv::Mat& depth,
-                              const views::PinholeCamera& camera,
+                              const core::PinholeCamera& camera,
                               const Eigen::Isometry3d& T_world_cam) {
     last_ = map_->Insert(rgb, depth, camera, T_world_cam);
-    frame_ = {rgb, depth, camera, T_world_cam};
+    frame_ = core::Frame();
+    frame_.rgb = rgb;
+    frame_.depth = depth;
+    frame_.camera = camera;
+    frame_.T_world_cam = T_world_cam;
     return last_;
   }
   /// Where camera observations without depth get it (default: they are not used).
@@ -41,7 +49,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
   const Products& lastProducts() const { return last_; }
   /// The last inserted frame as the map saw it: image, depth, camera and T_world_cam (decoded
   /// from the observation, the pose robot ⊕ sensor).
-  const ObservedFrame& lastFrame() const { return frame_; }
+  const core::Frame& lastFrame() const { return frame_; }
   const Map& map() const { return *map_; }
 
   /// MRPT-serialized map, written to a temporary file renamed into place.
@@ -62,8 +70,44 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
   }
 
  protected:
-  ViewMapAdapter(const Options& options, const char* name, const char* extension)
-      : map_(std::make_unique<Map>(options)), name_(name), extension_(extension) {}
+  ViewMapAdapter(const Config& config, const char* name, const char* extension)
+      : map_(std::make_unique<Map>(config.map)),
+        depth_source_(config.depth),
+        name_(name),
+        extension_(extension) {}
+
+  /// The options as the map uses them, in one table.
+  Config CurrentConfig() const {
+    Config c;
+    c.map = map_->options();
+    c.depth = depth_source_;
+    return c;
+  }
+  /// Map file, version 2: every option by key (option_table.h), then the views.
+  static constexpr uint8_t kFileVersion = 2;
+  void WriteMapFile(mrpt::serialization::CArchive& out) const {
+    Config::Table().Write(out, CurrentConfig());
+    WriteViewMap(out, map_->view_map());
+  }
+  /// Reads any version this class wrote: 0 and 1 stored some options one after another (the
+  /// others get the behaviour they had then: OptionEntry::legacy). The map is replaced only when
+  /// everything was read.
+  void ReadMapFile(mrpt::serialization::CArchive& in, uint8_t version) {
+    if (version > kFileVersion) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    Config c;
+    if (version == kFileVersion) {
+      Config::Table().Read(in, c);
+    } else {
+      std::vector<std::string> keys = Config::Version0Keys();
+      if (version == 1)
+        keys.insert(keys.end(), Config::Version1Keys().begin(), Config::Version1Keys().end());
+      Config::Table().ReadPositional(in, keys, c);
+    }
+    auto map = std::make_unique<Map>(c.map);
+    ReadViewMap(in, map->view_map());
+    ReplaceMap(std::move(map));  // only now: a failure above leaves the map as it was
+    depth_source_ = c.depth;
+  }
 
   /// Replaces this map by the `Derived` map in `path`; throws std::runtime_error naming the file,
   /// leaving this map unchanged.
@@ -82,7 +126,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
 
   std::unique_ptr<Map> map_;
   Products last_;
-  ObservedFrame frame_;
+  core::Frame frame_;
   DepthSourceOptions depth_source_;
 
  private:
@@ -90,7 +134,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
   bool internal_insertObservation(
       const mrpt::obs::CObservation& obs,
       const std::optional<const mrpt::poses::CPose3D>& robot_pose = std::nullopt) override {
-    ObservedFrame f;
+    core::Frame f;
     try {
       if (!DecodeObservation(obs, robot_pose, f) &&
           !DecodeWithDepthSource(obs, robot_pose, depth_source_, f))
@@ -98,7 +142,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(std::string(name_) + ": " + e.what());
     }
-    InsertFrame(f.rgb, f.depth, f.camera, f.T_world_cam);
+    InsertFrame(f.rgb, f.depth, f.camera, *f.T_world_cam);
     return true;
   }
   double internal_computeObservationLikelihood(const mrpt::obs::CObservation&,

@@ -10,13 +10,14 @@
 #include <stdexcept>
 #include <string>
 
-#include "maps/appearance/fill_where.h"
-#include "maps/appearance/interleave.h"
+#include "core/fill_where.h"
+#include "core/interleave.h"
+#include "core/rigid_pose.h"
 #include "maps/color/ycbcr_planes.h"
 
 namespace novelty::appearance {
 
-void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCamera& camera,
+void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const core::PinholeCamera& camera,
                 const Eigen::Isometry3d& T_world_cam, const char* what) {
   camera.Check();
   const cv::Size size(camera.width, camera.height);
@@ -28,7 +29,7 @@ void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCa
     throw std::invalid_argument(std::string(what) + ": depth must be CV_32FC1 of " +
                                 std::to_string(size.width) + "x" + std::to_string(size.height));
   }
-  if (!views::IsRigid(T_world_cam)) {
+  if (!core::IsRigid(T_world_cam)) {
     throw std::invalid_argument(std::string(what) + ": pose is not a rigid transform");
   }
 }
@@ -52,9 +53,8 @@ constexpr int kTileRows = 8;
 struct FrameRows {
   const cv::Mat& rgb;
   const cv::Mat& depth;
-  ViewBasedMap& map;                      // blends the prior's rows (PredictDeferred)
-  const ViewBasedMap::Prediction& prior;  // its rows hold nothing until blended
-  std::array<float, kChannels> initial;   // the initial prior, in Channel order
+  const Prediction& prior;               // its rows hold nothing until blended (BlendRows)
+  std::array<float, kChannels> initial;  // the initial prior, in Channel order
   cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau, stored_depth;
 };
 
@@ -84,7 +84,7 @@ cv::Mat RowsOf(const cv::Mat& m, const cv::Range& r) {
 void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options, int r0, int r1,
                  TileWork& t) {
   const cv::Range rows(r0, r1);
-  f.map.BlendRows(rows);
+  f.prior.BlendRows(rows);
   const cv::Mat valid = RowsOf(f.prior.valid, rows);
   cv::Mat uncovered;  // empty where the map covers every pixel of the tile
   if (cv::countNonZero(valid) < int(valid.total())) {
@@ -93,11 +93,12 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   }
   color::RgbToYCbCrPlanes(RowsOf(f.rgb, rows), t.x);
   // Half floats (a static camera reads its view's stored planes in place) or blended floats.
-  SplitToFloat(RowsOf(f.prior.value[0], rows), t.ab_sigma);
-  SplitToFloat(RowsOf(f.prior.value[1], rows), t.tau);
+  core::SplitToFloat(RowsOf(f.prior.value[0], rows), t.ab_sigma);
+  core::SplitToFloat(RowsOf(f.prior.value[1], rows), t.tau);
   const std::array<cv::Mat*, kChannels> p0 = InChannelOrder(t.ab_sigma, t.tau);
   if (!uncovered.empty()) {  // the initial prior where no view covers (a static camera: never)
-    for (int c = 0; c < kChannels; ++c) FillWhere(*p0[c], uncovered, f.initial[std::size_t(c)]);
+    for (int c = 0; c < kChannels; ++c)
+      core::FillWhere(*p0[c], uncovered, f.initial[std::size_t(c)]);
   }
   t.post_ab_sigma.resize(t.ab_sigma.size());
   t.post_tau.resize(t.tau.size());
@@ -125,15 +126,15 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   cv::add(*p0[kBeta], *p0[kBeta + 1], uncertainty);
   cv::add(uncertainty, *p0[kBeta + 2], uncertainty);
   if (!uncovered.empty()) {
-    FillWhere(surprise, uncovered, std::numeric_limits<float>::quiet_NaN());
-    FillWhere(expected_rgb, uncovered, cv::Scalar::all(0));
-    FillWhere(uncertainty, uncovered, std::numeric_limits<float>::quiet_NaN());
+    core::FillWhere(surprise, uncovered, std::numeric_limits<float>::quiet_NaN());
+    core::FillWhere(expected_rgb, uncovered, cv::Scalar::all(0));
+    core::FillWhere(uncertainty, uncovered, std::numeric_limits<float>::quiet_NaN());
   }
   // The posterior as the store keeps it.
   cv::Mat stored_ab_sigma = RowsOf(f.stored_ab_sigma, rows);
-  MergeInto(t.post_ab_sigma, stored_ab_sigma);
+  core::MergeInto(t.post_ab_sigma, stored_ab_sigma);
   cv::Mat stored_tau = RowsOf(f.stored_tau, rows);
-  MergeInto(t.post_tau, stored_tau);
+  core::MergeInto(t.post_tau, stored_tau);
   cv::Mat stored_depth = RowsOf(f.stored_depth, rows);  // the store keeps a copy: in parallel
   RowsOf(f.depth, rows).copyTo(stored_depth);
 }
@@ -168,20 +169,18 @@ AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
 }
 
 AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& depth,
-                                         const views::PinholeCamera& camera,
+                                         const core::PinholeCamera& camera,
                                          const Eigen::Isometry3d& T_world_cam) {
   CheckFrame(rgb, depth, camera, T_world_cam, "AppearanceMap::Insert");
   const int rows = camera.height, cols = camera.width;
   // Prior: blended reference parameters, each tile's rows by the tile; the initial prior where no
   // view covers.
-  const ViewBasedMap::Prediction prior =
-      map_.PredictDeferred(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}});
+  const Prediction prior = map_.PredictDeferred(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}});
   const stats::NormalGamma& init = options_.initial_prior;
   const float alpha0 = float(init.alpha), beta0 = float(init.beta), tau0 = float(init.tau),
               sigma0 = float(init.sigma);
   const FrameRows f{rgb,
                     depth,
-                    map_,
                     prior,
                     {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0},
                     cv::Mat(rows, cols, CV_32FC1),
@@ -202,7 +201,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
         std::unique_ptr<TileWork> t = tile_work_->Take();
         for (int i = r.start; i < r.end; ++i) {
           if (i < plan_tasks) {
-            plan = views::MeshPlanFor(depth, options_.views.warp);
+            plan = map_.PlanMesh(depth);
             continue;
           }
           const int r0 = (i - plan_tasks) * kTileRows;

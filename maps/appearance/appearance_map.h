@@ -49,7 +49,7 @@ class AppearanceMap {
   /// T_world_cam. Throws std::invalid_argument naming the problem (sizes, types, pose); the map
   /// is then unchanged.
   AppearanceProducts Insert(const cv::Mat& rgb, const cv::Mat& depth,
-                            const views::PinholeCamera& camera,
+                            const core::PinholeCamera& camera,
                             const Eigen::Isometry3d& T_world_cam);
 
   const views::ReferenceViewStore& store() const { return map_.store(); }
@@ -74,7 +74,7 @@ class AppearanceMap {
 
 /// Throws std::invalid_argument unless rgb is CV_8UC3 and depth CV_32FC1, both of the camera's
 /// size, and the pose is rigid. `what` names the caller.
-void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const views::PinholeCamera& camera,
+void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const core::PinholeCamera& camera,
                 const Eigen::Isometry3d& T_world_cam, const char* what);
 
 }  // namespace novelty::appearance

@@ -23,7 +23,7 @@ class DifferencingMap {
       : options_(options), map_(options) {}
   /// Same inputs and errors as AppearanceMap::Insert.
   DifferencingProducts Insert(const cv::Mat& rgb, const cv::Mat& depth,
-                              const views::PinholeCamera& camera,
+                              const core::PinholeCamera& camera,
                               const Eigen::Isometry3d& T_world_cam);
   const views::ReferenceViewStore& store() const { return map_.store(); }
   const ViewBasedMapOptions& options() const { return options_; }

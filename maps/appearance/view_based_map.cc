@@ -11,7 +11,7 @@ namespace novelty::appearance {
 
 namespace {
 
-bool SameCamera(const views::PinholeCamera& a, const views::PinholeCamera& b) {
+bool SameCamera(const core::PinholeCamera& a, const core::PinholeCamera& b) {
   return a.width == b.width && a.height == b.height && a.fx == b.fx && a.fy == b.fy &&
          a.cx == b.cx && a.cy == b.cy;
 }
@@ -22,23 +22,46 @@ bool SamePose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
 
 }  // namespace
 
+struct Prediction::Blend {
+  std::vector<views::WarpField> warps;
+  views::BlendOptions options;  // the map's, with the selected views' weights (ray counts)
+  // Per requested plane: the selected views' planes, and the blend's images (shared with the
+  // prediction's value and valid).
+  std::vector<std::vector<cv::Mat>> planes;
+  std::vector<views::BlendResult> results;
+};
+
+void Prediction::BlendRows(const cv::Range& rows) const {
+  if (!blend_) return;
+  for (std::size_t k = 0; k < blend_->planes.size(); ++k) {
+    views::BlendRows(blend_->warps, blend_->planes[k], blend_->options, rows, blend_->results[k]);
+  }
+}
+
 ViewBasedMap::ViewBasedMap(const ViewBasedMapOptions& options)
     : options_(options), warper_(views::WarpOptionsFor(options.blend, options.warp)) {}
 
-ViewBasedMap::Prediction ViewBasedMap::Predict(
-    const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
-    const std::vector<std::pair<std::string, int>>& names) {
+ViewBasedMap::~ViewBasedMap() = default;
+
+views::MeshPlan ViewBasedMap::PlanMesh(const cv::Mat& depth) const {
+  return views::MeshPlanFor(depth, options_.warp);
+}
+
+Prediction ViewBasedMap::Predict(const core::PinholeCamera& camera,
+                                 const Eigen::Isometry3d& T_world_cam,
+                                 const std::vector<std::pair<std::string, int>>& names) {
   Prediction p = PredictDeferred(camera, T_world_cam, names);
-  if (!pending_.empty()) {
-    cv::parallel_for_(cv::Range(0, camera.height), [&](const cv::Range& rows) { BlendRows(rows); });
+  if (!p.complete()) {
+    cv::parallel_for_(cv::Range(0, camera.height),
+                      [&](const cv::Range& rows) { p.BlendRows(rows); });
+    p.blend_.reset();
   }
   return p;
 }
 
-ViewBasedMap::Prediction ViewBasedMap::PredictDeferred(
-    const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
-    const std::vector<std::pair<std::string, int>>& names) {
-  pending_.clear();
+Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
+                                         const Eigen::Isometry3d& T_world_cam,
+                                         const std::vector<std::pair<std::string, int>>& names) {
   Prediction p;
   const views::ViewSelection selection =
       views::SelectViewsForRays(store_.Poses(), camera, T_world_cam, options_.selection);
@@ -68,30 +91,30 @@ ViewBasedMap::Prediction ViewBasedMap::PredictDeferred(
     const views::ReferenceView& v = store_.view(j);
     views::MeshPlan& plan = plans_[std::size_t(j)];
     if (!plan.Fits(v.depth.size(), options_.warp.planar_block, options_.warp.planar_tolerance)) {
-      plan = views::MeshPlanFor(v.depth, options_.warp);  // first warp
+      plan = PlanMesh(v.depth);  // first warp
     }
     sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &plan});
   }
-  warper_.WarpMany(sources, camera, T_world_cam, warps_);
+  // The last prediction's buffers, unless its caller still holds it.
+  if (!last_blend_ || last_blend_.use_count() > 1)
+    last_blend_ = std::make_shared<Prediction::Blend>();
+  Prediction::Blend& b = *last_blend_;
+  warper_.WarpMany(sources, camera, T_world_cam, b.warps);
   p.warped = true;
-  blend_ = options_.blend;
-  if (blend_.weights.empty()) blend_.weights = selection.Weights(options_.selection);
-  blended_.resize(std::max(blended_.size(), names.size()));
-  pending_.resize(names.size());
+  b.options = options_.blend;
+  if (b.options.weights.empty()) b.options.weights = selection.Weights(options_.selection);
+  b.results.resize(std::max(b.results.size(), names.size()));
+  b.planes.resize(names.size());
   for (std::size_t k = 0; k < names.size(); ++k) {
-    for (int j : p.selected) pending_[k].push_back(store_.view(j).planes.at(names[k].first));
-    views::BlendResult& b = blended_[k];  // last frame's images, unless a caller still holds them
-    views::PrepareBlend(warps_, pending_[k], blend_, b);
-    p.value[k] = b.value;
-    p.valid = b.valid;  // the same for every plane: it depends on the warps only
+    b.planes[k].clear();
+    for (int j : p.selected) b.planes[k].push_back(store_.view(j).planes.at(names[k].first));
+    views::BlendResult& r = b.results[k];  // written in place unless someone shares its images
+    views::PrepareBlend(b.warps, b.planes[k], b.options, r);
+    p.value[k] = r.value;
+    p.valid = r.valid;  // the same for every plane: it depends on the warps only
   }
+  p.blend_ = last_blend_;
   return p;
-}
-
-void ViewBasedMap::BlendRows(const cv::Range& rows) {
-  for (std::size_t k = 0; k < pending_.size(); ++k) {
-    views::BlendRows(warps_, pending_[k], blend_, rows, blended_[k]);
-  }
 }
 
 void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
@@ -104,14 +127,14 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
   std::vector<views::MeshPlan> plans;  // made now: a loaded map's views are meant to be warped
   for (views::ReferenceView& v : views) {
     const int added = store.Add(std::move(v));  // checks every view
-    plans.push_back(views::MeshPlanFor(store.view(added).depth, options_.warp));
+    plans.push_back(PlanMesh(store.view(added).depth));
   }
   store_ = std::move(store);
   anchors_ = std::move(anchors);
   plans_ = std::move(plans);
 }
 
-ViewBasedMap::UpdateResult ViewBasedMap::Update(const views::PinholeCamera& camera,
+ViewBasedMap::UpdateResult ViewBasedMap::Update(const core::PinholeCamera& camera,
                                                 const Eigen::Isometry3d& T_world_cam, cv::Mat depth,
                                                 std::map<std::string, cv::Mat> payload,
                                                 const std::vector<int>& selected,

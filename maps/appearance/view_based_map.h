@@ -16,6 +16,7 @@
 
 #include <Eigen/Geometry>
 #include <map>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -39,34 +40,55 @@ struct ViewBasedMapOptions {
   views::BlendOptions blend;  ///< the blend view synthesis uses (view_blender.h defaults)
 };
 
+/// What a view-based map predicts at one viewpoint: the selected views and, per requested plane,
+/// the values blended from them. A value that owns what its blend needs (the warps, the views'
+/// planes, the weights), so that whoever uses the prior can blend it where it uses it, a few rows
+/// at a time (BlendRows): a caller that works through a frame in row tiles then finds each tile's
+/// prior in cache. The planes of a view that a later Update replaces stay alive as long as the
+/// prediction does.
+class Prediction {
+ public:
+  std::vector<int> selected;  ///< views used, best for the central ray first
+  /// Per requested plane: CV_32FC(n), NaN where no view covers. A camera at a view's pose (a
+  /// static camera) gets that view's own planes, shared and in their stored depth (half floats
+  /// possibly): read them, never write into them. Rows hold nothing until blended, unless
+  /// complete().
+  std::vector<cv::Mat> value;
+  cv::Mat valid;        ///< CV_8UC1, 255 where a view covers; as `value`, filled by BlendRows
+  bool warped = false;  ///< views were warped (not an empty map, not a static camera)
+
+  /// True when nothing is left to blend (an empty map, a static camera, or a Predict).
+  bool complete() const { return blend_ == nullptr; }
+  /// Blends rows `rows` of every plane and of `valid`, on the calling thread; threads may blend
+  /// different rows at once. Nothing when complete().
+  void BlendRows(const cv::Range& rows) const;
+
+ private:
+  friend class ViewBasedMap;
+  struct Blend;  // the warps, the selected views' planes, the weights, the result images
+  std::shared_ptr<Blend> blend_;
+};
+
 class ViewBasedMap {
  public:
   explicit ViewBasedMap(const ViewBasedMapOptions& options = {});
+  ~ViewBasedMap();
+  const ViewBasedMapOptions& options() const { return options_; }
 
-  struct Prediction {
-    std::vector<int> selected;  ///< views used, best for the central ray first
-    /// Per requested plane: CV_32FC(n), NaN where no view covers. A camera at a view's pose (a
-    /// static camera) gets that view's own planes, shared and in their stored depth (half floats
-    /// possibly): read them, never write into them.
-    std::vector<cv::Mat> value;
-    cv::Mat valid;        ///< CV_8UC1
-    bool warped = false;  ///< views were warped (not an empty map, not a static camera)
-  };
-  /// The planes `names` (with their channel counts) predicted at `T_world_cam`: one warp per
-  /// selected view serves every plane. An empty map predicts nothing: all invalid.
-  Prediction Predict(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+  /// The planes `names` (with their channel counts) predicted at `T_world_cam`, complete: one
+  /// warp per selected view serves every plane. An empty map predicts nothing: all invalid.
+  Prediction Predict(const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                      const std::vector<std::pair<std::string, int>>& names);
-  /// As Predict, but the caller blends the planes, rows at a time (BlendRows), where it uses
-  /// them — a caller that works through the frame in row tiles then finds each tile's prior in
-  /// cache: the value and valid images are sized but hold nothing until their rows are blended.
-  /// A prediction that needs no blend (an empty map, a static camera) comes complete.
-  Prediction PredictDeferred(const views::PinholeCamera& camera,
+  /// As Predict, but the prediction is returned with its blend still to do (Prediction::
+  /// BlendRows), unless it needs none. The map reuses the previous prediction's buffers when
+  /// its caller has let it go.
+  Prediction PredictDeferred(const core::PinholeCamera& camera,
                              const Eigen::Isometry3d& T_world_cam,
                              const std::vector<std::pair<std::string, int>>& names);
-  /// Blends rows `rows` of every plane of the last PredictDeferred's prediction (and of its valid
-  /// image) on the calling thread; threads may blend different rows at once. Nothing when that
-  /// prediction came complete.
-  void BlendRows(const cv::Range& rows);
+
+  /// The mesh plan (mesh_plan.h) this map's warps use for `depth`: a caller may make it for the
+  /// frame it is about to Update with, beside other work, instead of the next warp making it.
+  views::MeshPlan PlanMesh(const cv::Mat& depth) const;
 
   struct UpdateResult {
     bool added = false;
@@ -74,10 +96,9 @@ class ViewBasedMap {
   };
   /// Applies the update policy with the frame's payload planes, depth and pose. The map keeps
   /// `depth` and the payload planes as given, sharing their buffers: pass images nobody writes to
-  /// afterwards (a copy of a caller's depth, made where it is cheapest). `plan`: the mesh plan of
-  /// `depth` (views::MeshPlanFor with the options' warp) if the caller made one, beside other
-  /// work; otherwise (or if it was made for other options) it is made at the view's next warp.
-  UpdateResult Update(const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+  /// afterwards (a copy of a caller's depth, made where it is cheapest). `plan`: PlanMesh(depth)
+  /// if the caller made it; otherwise (or if it does not fit) it is made at the view's next warp.
+  UpdateResult Update(const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                       cv::Mat depth, std::map<std::string, cv::Mat> payload,
                       const std::vector<int>& selected, views::MeshPlan plan = {});
 
@@ -97,17 +118,10 @@ class ViewBasedMap {
   // its view every frame and never warps it).
   std::vector<views::MeshPlan> plans_;
   views::DepthMeshWarper warper_;
-  std::vector<views::WarpField> warps_;  // reused from frame to frame
-  // The last prediction's blend: the options' with the selected views' weights (ray counts).
-  views::BlendOptions blend_;
-  // Per requested plane, the blend's images, shared with the Prediction handed out and written
-  // in place next frame when the caller has let it go (PrepareBlend): fresh megabytes every frame
-  // cost a tenth of a seven-view frame in page faults.
-  std::vector<views::BlendResult> blended_;
-  // Per requested plane, the selected views' planes still to be blended (PredictDeferred). Held
-  // until the next prediction, so a view that Update replaces keeps its old planes (2 MB for the
-  // appearance map) one frame longer.
-  std::vector<std::vector<cv::Mat>> pending_;
+  // The last deferred prediction's blend, reused (warp fields and result images written in
+  // place) when its caller has let go of it: fresh megabytes every frame cost a tenth of a
+  // seven-view frame in page faults.
+  std::shared_ptr<Prediction::Blend> last_blend_;
 };
 
 }  // namespace novelty::appearance

@@ -3,14 +3,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/lanes.h"
 #include "maps/color/ycbcr.h"
-#include "maps/stats/lanes.h"
 
 namespace novelty::color {
 
 namespace {
 
-namespace L = stats::lanes;
+namespace L = core::lanes;
 
 // The transform's coefficients in float, as cv::transform applies them.
 struct Affine {

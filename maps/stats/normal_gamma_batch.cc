@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "maps/stats/lanes.h"
-#include "maps/stats/with_count.h"
+#include "core/lanes.h"
+#include "core/with_count.h"
 
 namespace novelty::stats {
 
@@ -69,7 +69,7 @@ template <int channels>
 __attribute__((flatten)) void ProcessPacket(std::size_t i, const ChannelPlanes& c, float* surprise,
                                             const SurpriseBatchOptions& o, AlphaTermsCache& cache) {
   // Lane tests with vector extensions: Eigen compares boolean arrays lane by lane.
-  namespace L = lanes;
+  namespace L = core::lanes;
   constexpr int kParts = kLanes / L::kLanes;
   // Whether every lane of `values(part)` equals `to(part)`, part by part.
   const auto all_equal = [](auto values, auto to) {
@@ -145,7 +145,8 @@ __attribute__((flatten)) void ProcessPacket(std::size_t i, const ChannelPlanes& 
 // ProcessPacket compiled for each channel count (1 to kMaxChannels).
 auto PacketKernelFor(int channels) {
   static_assert(kMaxChannels == 4);
-  return WithCount<4, 1, 2, 3>(channels, [](auto n) { return &ProcessPacket<decltype(n)::value>; });
+  return core::WithCount<4, 1, 2, 3>(channels,
+                                     [](auto n) { return &ProcessPacket<decltype(n)::value>; });
 }
 
 void CheckChannels(const ChannelPlanes& c) {

@@ -14,14 +14,15 @@
 #include <utility>
 #include <vector>
 
-#include "maps/stats/lanes.h"
+#include "core/lanes.h"
+#include "core/rigid_pose.h"
 #include "maps/views/reference_view_store.h"
 
 namespace novelty::views {
 
 namespace {
 
-using namespace stats::lanes;  // F16, I16, Load, Min… (maps/stats/lanes.h)
+using namespace core::lanes;  // F16, I16, Load, Min… (core/lanes.h)
 
 // A source vertex in the virtual camera: screen position, 1/z, and the source depth (for the
 // discontinuity test). inv_z = 0 marks an unusable vertex.
@@ -84,8 +85,9 @@ struct Projection {
 // Projects source pixels into the virtual camera, sixteen at a time, a row at a time.
 class VertexProjector {
  public:
-  VertexProjector(const PinholeCamera& src, const Eigen::Isometry3d& T_vs, const cv::Mat& depth,
-                  const PinholeCamera& dst, double near_plane, Vertices& v)
+  VertexProjector(const core::PinholeCamera& src, const Eigen::Isometry3d& T_vs,
+                  const cv::Mat& depth, const core::PinholeCamera& dst, double near_plane,
+                  Vertices& v)
       : depth_(depth), v_(v), width_(src.width) {
     const Eigen::Matrix3f R = T_vs.linear().cast<float>();
     const Eigen::Vector3f t = T_vs.translation().cast<float>();
@@ -113,7 +115,7 @@ class VertexProjector {
     const float* d = depth_.ptr<float>(r);
     const std::size_t base = std::size_t(r) * width_;
     const Eigen::Vector3f row = b_ * float(r) + c_;
-    const F16 lane_u = stats::lanes::Iota();
+    const F16 lane_u = core::lanes::Iota();
     int u = 0;
     for (; u + kLanes <= width_; u += kLanes) {
       if (!all && !Needed(r, u)) continue;
@@ -131,7 +133,7 @@ class VertexProjector {
     for (const int qr : {r - 1, r}) {
       if (qr < 0) continue;
       const int8_t* skip = &v_.skip[std::size_t(qr) * width_ + u];
-      if (stats::lanes::Any(stats::lanes::LoadBytes(skip) == 0) || (u > 0 && skip[-1] == 0))
+      if (core::lanes::Any(core::lanes::LoadBytes(skip) == 0) || (u > 0 && skip[-1] == 0))
         return true;
     }
     return false;
@@ -205,7 +207,7 @@ inline bool Usable(const Vertex& a, const Vertex& b, const Vertex& c, float max_
 // virtual camera centre (origin) and to the source camera centre (in virtual coordinates), into
 // `cos_angle` (reused frame to frame: fresh images cost page faults). In float with one square
 // root per pixel, in a loop the compiler vectorises.
-void ViewAngles(const cv::Mat& depth, const PinholeCamera& cam, const Eigen::Vector3d& source,
+void ViewAngles(const cv::Mat& depth, const core::PinholeCamera& cam, const Eigen::Vector3d& source,
                 cv::Mat& cos_angle) {
   cos_angle.create(depth.size(), CV_32FC1);
   const float cx = float(source.x()), cy = float(source.y()), cz = float(source.z());
@@ -353,18 +355,18 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
   const F16 zero = F16{}, one = zero + 1.0f;
   const F16 x_max = zero + float(t.width - 1), y_max = zero + float(t.height - 1);
   const F16 lo = zero - 1e6f, hi = zero + 1e6f;
-  const F16 lane = stats::lanes::Iota();
+  const F16 lane = core::lanes::Iota();
   // Quads u … w−2; the last group's lanes past w−2 are masked (the vertex arrays are padded).
   // Each group starts at a quad drawn on its own: the quads that planar blocks leave to be drawn
   // (their edges towards a non-planar neighbour, and the neighbour) then share groups, where
   // groups aligned to sixteen held a block's edge quad alone in half the cases.
   for (int u = 0; u + 1 < w; u += kLanes) {
-    I16 skip = stats::lanes::LoadBytes(&v.skip[base + u]);
-    const unsigned drawn = stats::lanes::Bits(skip == 0);
+    I16 skip = core::lanes::LoadBytes(&v.skip[base + u]);
+    const unsigned drawn = core::lanes::Bits(skip == 0);
     if (!drawn) continue;  // sixteen quads inside planar blocks
     if (const int first = __builtin_ctz(drawn); first > 0) {
       u += first;
-      skip = stats::lanes::LoadBytes(&v.skip[base + u]);
+      skip = core::lanes::LoadBytes(&v.skip[base + u]);
     }
     const std::size_t i = base + u;
     const std::size_t c[4] = {i, i + 1, i + w, i + w + 1};  // p00, p10, p01, p11
@@ -390,7 +392,7 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
     const F16 nx = qx1 - qx0 + one, ny = qy1 - qy0 + one;
     const I16 any = ok[0] & ok[3] & (ok[1] | ok[2]) & (nx >= one) & (ny >= one);
     const I16 small = any & (nx <= one + one) & (ny <= one + one);
-    if (!stats::lanes::Any(any)) continue;
+    if (!core::lanes::Any(any)) continue;
     F16 z[4];
     for (int n = 0; n < 4; ++n) z[n] = Load(&v.source_depth[c[n]]);
     const QuadLanes q = MakeQuadLanes(x, y, iz, z, small, max_ratio);
@@ -399,17 +401,17 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
       const float ox = float(n & 1), oy = float(n >> 1);
       hits[n] = Evaluate(q, qx0 + ox, qy0 + oy, (zero + ox < nx) & (zero + oy < ny));
     }
-    for (unsigned big = stats::lanes::Bits(any & ~small); big; big &= big - 1) {
+    for (unsigned big = core::lanes::Bits(any & ~small); big; big &= big - 1) {
       const int k = __builtin_ctz(big);
       RasteriseQuadTiled(v, w, u + k, r, max_ratio, t, int(qx0[k]), int(qx1[k]), int(qy0[k]),
                          int(qy1[k]));
     }
     // The small quads' hits, candidate pixel by candidate pixel: only hits are visited.
-    const I16 j0 = stats::lanes::AsInt(small ? qy0 : zero) * t.width +  // (other lanes' boxes
-                   stats::lanes::AsInt(small ? qx0 : zero);             // may lie far outside)
+    const I16 j0 = core::lanes::AsInt(small ? qy0 : zero) * t.width +  // (other lanes' boxes
+                   core::lanes::AsInt(small ? qx0 : zero);             // may lie far outside)
     for (int n = 0; n < 4; ++n) {
       const std::size_t step = std::size_t(n >> 1) * t.width + std::size_t(n & 1);
-      for (unsigned hit = stats::lanes::Bits(hits[n].hit); hit; hit &= hit - 1) {
+      for (unsigned hit = core::lanes::Bits(hits[n].hit); hit; hit &= hit - 1) {
         const int k = __builtin_ctz(hit);
         Write(hits[n], k, std::size_t(j0[k]) + step, float(u + k), float(r), t);
       }
@@ -491,7 +493,7 @@ void RasteriseBlock(const Vertices& v, int w, const cv::Rect& block, float max_r
     slope[n] = y[m] == y[n] ? 0.0f : (x[m] - x[n]) / (y[m] - y[n]);
     left[n] = y[m] == y[n] ? -1.0f : float(x[n] + (my - y[n]) * slope[n] < mx);  // −1: level
   }
-  const F16 lane = stats::lanes::Iota();
+  const F16 lane = core::lanes::Iota();
   for (int py = y0; py <= y1; ++py) {
     const float fy = float(py);
     float xl = -1e30f, xr = 1e30f;
@@ -583,18 +585,18 @@ void Merge(const std::vector<Target>& targets, int threads) {
   ParallelBlocks(t.height, threads, [&](int y0, int y1) {
     const std::size_t end = std::size_t(y1) * t.width;
     for (std::size_t j = std::size_t(y0) * t.width; j < end; j += kLanes) {
-      const I16 in_rows = stats::lanes::Iota() < float(end - j);
+      const I16 in_rows = core::lanes::Iota() < float(end - j);
       for (std::size_t k = 1; k < targets.size(); ++k) {
         const Target& o = targets[k];
         const F16 iz = LoadMasked(o.inv_z + j, in_rows);
         const I16 nearer = in_rows & (iz > LoadMasked(t.inv_z + j, in_rows));
-        if (!stats::lanes::Any(nearer)) continue;
+        if (!core::lanes::Any(nearer)) continue;
         StoreMasked(t.inv_z + j, iz, nearer);
         if (t.source_depth) {
           StoreMasked(t.source_depth + j, LoadMasked(o.source_depth + j, nearer), nearer);
         }
         F16 u, v;
-        stats::lanes::LoadMaskedPairs(o.uv + 2 * j, nearer, u, v);
+        core::lanes::LoadMaskedPairs(o.uv + 2 * j, nearer, u, v);
         StoreMaskedPairs(t.uv + 2 * j, u, v, nearer);
       }
     }
@@ -612,14 +614,14 @@ int Finalise(const Target& t, float* depth, int threads) {
       int n = 0;
       for (int x = 0; x < t.width; x += kLanes) {
         const std::size_t j = row + std::size_t(x);
-        const I16 in_row = stats::lanes::Iota() < float(t.width - x);
+        const I16 in_row = core::lanes::Iota() < float(t.width - x);
         const F16 iz = LoadMasked(t.inv_z + j, in_row);
         const I16 hit = iz > zero, miss = in_row & ~hit;
         if (depth) StoreMasked(depth + j, hit ? Reciprocal(iz) : zero, in_row);
         StoreMasked(t.inv_z + j, zero, hit);  // the z-buffer clean for the next warp
         if (t.source_depth) StoreMasked(t.source_depth + j, zero, miss);
         StoreMaskedPairs(t.uv + 2 * j, zero - 1.0f, zero - 1.0f, miss);
-        n += stats::lanes::Count(hit);
+        n += core::lanes::Count(hit);
       }
       covered[std::size_t(y)] = n;
     }
@@ -635,15 +637,15 @@ DepthMeshWarper::DepthMeshWarper(const WarpOptions& options)
     : options_(options), scratch_(std::make_unique<Scratch>()) {}
 DepthMeshWarper::~DepthMeshWarper() = default;
 
-void DepthMeshWarper::Warp(const PinholeCamera& src, const Eigen::Isometry3d& T_world_src,
-                           const cv::Mat& depth, const PinholeCamera& dst,
+void DepthMeshWarper::Warp(const core::PinholeCamera& src, const Eigen::Isometry3d& T_world_src,
+                           const cv::Mat& depth, const core::PinholeCamera& dst,
                            const Eigen::Isometry3d& T_world_dst, WarpField& field) {
   WarpWith(*scratch_, ThreadCount(options_.threads), src, T_world_src, depth, nullptr, dst,
            T_world_dst, field);
 }
 
-void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const PinholeCamera& dst,
-                               const Eigen::Isometry3d& T_world_dst,
+void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources,
+                               const core::PinholeCamera& dst, const Eigen::Isometry3d& T_world_dst,
                                std::vector<WarpField>& fields) {
   fields.resize(sources.size());
   const int threads = ThreadCount(options_.threads);
@@ -681,14 +683,14 @@ void DepthMeshWarper::WarpMany(const std::vector<SourceView>& sources, const Pin
   }
 }
 
-void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamera& src,
+void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const core::PinholeCamera& src,
                                const Eigen::Isometry3d& T_world_src, const cv::Mat& depth,
-                               const MeshPlan* kept_plan, const PinholeCamera& dst,
+                               const MeshPlan* kept_plan, const core::PinholeCamera& dst,
                                const Eigen::Isometry3d& T_world_dst, WarpField& field) const {
   const WarpOptions& o = options_;
   src.Check();
   dst.Check();
-  if (!IsRigid(T_world_src) || !IsRigid(T_world_dst)) {
+  if (!core::IsRigid(T_world_src) || !core::IsRigid(T_world_dst)) {
     throw std::invalid_argument("WarpView: a camera pose is not a rigid transform");
   }
   if (o.compute_view_angles && !o.compute_depth) {
@@ -759,8 +761,9 @@ void DepthMeshWarper::WarpWith(Scratch& scratch, int threads, const PinholeCamer
   if (o.compute_view_angles) ViewAngles(field.depth, dst, T_vs.translation(), field.cos_angle);
 }
 
-WarpField WarpView(const PinholeCamera& source_camera, const Eigen::Isometry3d& T_world_source,
-                   const cv::Mat& source_depth, const PinholeCamera& virtual_camera,
+WarpField WarpView(const core::PinholeCamera& source_camera,
+                   const Eigen::Isometry3d& T_world_source, const cv::Mat& source_depth,
+                   const core::PinholeCamera& virtual_camera,
                    const Eigen::Isometry3d& T_world_virtual, const WarpOptions& options) {
   WarpField field;
   DepthMeshWarper(options).Warp(source_camera, T_world_source, source_depth, virtual_camera,

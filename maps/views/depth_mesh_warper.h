@@ -14,8 +14,8 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "core/pinhole_camera.h"
 #include "maps/views/mesh_plan.h"
-#include "maps/views/pinhole_camera.h"
 
 namespace novelty::views {
 
@@ -66,7 +66,7 @@ struct WarpField {
 
 /// One source view for DepthMeshWarper::WarpMany (pointers: the data stay where they are).
 struct SourceView {
-  const PinholeCamera* camera;
+  const core::PinholeCamera* camera;
   const Eigen::Isometry3d* T_world_cam;
   const cv::Mat* depth;  ///< CV_32FC1, the camera's size
   /// MeshPlanFor(*depth, options) kept by a caller whose views do not change between frames (a
@@ -93,21 +93,21 @@ class DepthMeshWarper {
   /// Warps the source view (camera, pose, depth CV_32F) into the virtual camera, writing `out`.
   /// A pose that is not rigid or a depth map of the wrong size throws std::invalid_argument; a
   /// source that sees nothing of the virtual view gives an all-uncovered field.
-  void Warp(const PinholeCamera& source_camera, const Eigen::Isometry3d& T_world_source,
-            const cv::Mat& source_depth, const PinholeCamera& virtual_camera,
+  void Warp(const core::PinholeCamera& source_camera, const Eigen::Isometry3d& T_world_source,
+            const cv::Mat& source_depth, const core::PinholeCamera& virtual_camera,
             const Eigen::Isometry3d& T_world_virtual, WarpField& out);
 
   /// Warps several source views into the same virtual camera, `fields[k]` from `sources[k]`
   /// (resized to match). With more than one thread each thread warps whole views, which scales
   /// better than splitting every view. Errors as Warp.
-  void WarpMany(const std::vector<SourceView>& sources, const PinholeCamera& virtual_camera,
+  void WarpMany(const std::vector<SourceView>& sources, const core::PinholeCamera& virtual_camera,
                 const Eigen::Isometry3d& T_world_virtual, std::vector<WarpField>& fields);
 
  private:
   struct Scratch;
-  void WarpWith(Scratch& scratch, int threads, const PinholeCamera& source_camera,
+  void WarpWith(Scratch& scratch, int threads, const core::PinholeCamera& source_camera,
                 const Eigen::Isometry3d& T_world_source, const cv::Mat& source_depth,
-                const MeshPlan* plan, const PinholeCamera& virtual_camera,
+                const MeshPlan* plan, const core::PinholeCamera& virtual_camera,
                 const Eigen::Isometry3d& T_world_virtual, WarpField& out) const;
   WarpOptions options_;
   std::unique_ptr<Scratch> scratch_;
@@ -115,8 +115,9 @@ class DepthMeshWarper {
 };
 
 /// One warp with a temporary DepthMeshWarper (see there).
-WarpField WarpView(const PinholeCamera& source_camera, const Eigen::Isometry3d& T_world_source,
-                   const cv::Mat& source_depth, const PinholeCamera& virtual_camera,
+WarpField WarpView(const core::PinholeCamera& source_camera,
+                   const Eigen::Isometry3d& T_world_source, const cv::Mat& source_depth,
+                   const core::PinholeCamera& virtual_camera,
                    const Eigen::Isometry3d& T_world_virtual, const WarpOptions& options = {});
 
 }  // namespace novelty::views

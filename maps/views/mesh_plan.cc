@@ -3,16 +3,16 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "maps/stats/lanes.h"
+#include "core/lanes.h"
 #include "maps/views/planar_blocks.h"
 
 namespace novelty::views {
 
 namespace {
 
-using stats::lanes::F16;
-using stats::lanes::I16;
-using stats::lanes::kLanes;
+using core::lanes::F16;
+using core::lanes::I16;
+using core::lanes::kLanes;
 
 // Marks the quads the planar blocks draw — all of a block's, except its outer row or column
 // towards a neighbour that is not planar — and collects the runs of blocks on one plane.
@@ -51,21 +51,21 @@ void MarkPlanarBlocks(const cv::Mat& flags, int size, MeshPlan& plan) {
 // Marks the quads with a vertex without depth, sixteen at a time: no surface there.
 void SkipQuadsWithoutDepth(const cv::Mat& depth, MeshPlan& plan) {
   const int w = depth.cols;
-  const F16 lane = stats::lanes::Iota();
+  const F16 lane = core::lanes::Iota();
   for (int r = 0; r + 1 < depth.rows; ++r) {
     const float *d0 = depth.ptr<float>(r), *d1 = depth.ptr<float>(r + 1);
     for (int u = 0; u + 1 < w; u += kLanes) {
       const I16 quads = lane < float(w - 1 - u);  // quads u … w − 2 of this group
       I16 with_depth = quads;
       for (const float* p : {d0 + u, d0 + u + 1, d1 + u, d1 + u + 1}) {
-        const F16 z = stats::lanes::LoadMasked(p, quads);
+        const F16 z = core::lanes::LoadMasked(p, quads);
         with_depth &= (z > 0.0f) & (z < 1e30f);
       }
       const I16 without = quads & ~with_depth;
-      if (!stats::lanes::Any(without)) continue;
+      if (!core::lanes::Any(without)) continue;
       int8_t* skip = &plan.skip[std::size_t(r) * w + u];  // (bytes past the row: unchanged)
-      stats::lanes::StoreMaskBytes(reinterpret_cast<uint8_t*>(skip),
-                                   (stats::lanes::LoadBytes(skip) != 0) | without);
+      core::lanes::StoreMaskBytes(reinterpret_cast<uint8_t*>(skip),
+                                  (core::lanes::LoadBytes(skip) != 0) | without);
     }
   }
 }

@@ -6,12 +6,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "maps/stats/lanes.h"
+#include "core/lanes.h"
 
 namespace novelty::views {
 namespace {
 
-using namespace stats::lanes;  // F16, I16, Iota, LoadMasked, Any (maps/stats/lanes.h)
+using namespace core::lanes;  // F16, I16, Iota, LoadMasked, Any (core/lanes.h)
 
 bool IsPlanar(const cv::Mat& depth, const cv::Rect& block, float tolerance) {
   const int u0 = block.x, v0 = block.y, u1 = block.x + block.width, v1 = block.y + block.height;

@@ -1,19 +1,13 @@
 #include "maps/views/reference_view_store.h"
+#include "core/rigid_pose.h"
 
 #include <stdexcept>
 
 namespace novelty::views {
 
-bool IsRigid(const Eigen::Isometry3d& T, double tolerance) {
-  const Eigen::Matrix3d r = T.linear();
-  return r.allFinite() && T.translation().allFinite() &&
-         (r.transpose() * r - Eigen::Matrix3d::Identity()).norm() < tolerance &&
-         std::abs(r.determinant() - 1.0) < tolerance;
-}
-
 void ReferenceView::Check(const std::string& what) const {
   camera.Check();
-  if (!IsRigid(T_world_cam)) {
+  if (!core::IsRigid(T_world_cam)) {
     throw std::invalid_argument(what + ": pose is not a rigid transform");
   }
   if (depth.type() != CV_32FC1 || depth.rows != camera.height || depth.cols != camera.width) {
@@ -29,6 +23,19 @@ void ReferenceView::Check(const std::string& what) const {
                                   std::to_string(depth.cols) + "x" + std::to_string(depth.rows));
     }
   }
+}
+
+ReferenceView ReferenceViewOf(const core::Frame& frame, const std::string& plane) {
+  if (!frame.T_world_cam) {
+    throw std::invalid_argument("frame " + std::to_string(frame.index) +
+                                ": no pose, cannot become a reference view");
+  }
+  ReferenceView v;
+  v.camera = frame.camera;
+  v.T_world_cam = *frame.T_world_cam;
+  v.depth = frame.depth;
+  v.planes[plane] = frame.rgb;
+  return v;
 }
 
 std::size_t ReferenceView::BytesUsed() const {

@@ -14,12 +14,13 @@
 #include <string>
 #include <vector>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/frame.h"
+#include "core/pinhole_camera.h"
 
 namespace novelty::views {
 
 struct ReferenceView {
-  PinholeCamera camera;
+  core::PinholeCamera camera;
   Eigen::Isometry3d T_world_cam = Eigen::Isometry3d::Identity();
   cv::Mat depth;                          ///< CV_32F metres along +Z; 0 or NaN = unknown
   std::map<std::string, cv::Mat> planes;  ///< same size as depth, any type
@@ -30,8 +31,9 @@ struct ReferenceView {
   std::size_t BytesUsed() const;
 };
 
-/// True if T is a rigid transform (orthonormal rotation with det +1, finite translation).
-bool IsRigid(const Eigen::Isometry3d& T, double tolerance = 1e-6);
+/// A frame with a pose as a reference view holding its image as plane `plane`. Throws
+/// std::invalid_argument naming the frame if it has no pose.
+ReferenceView ReferenceViewOf(const core::Frame& frame, const std::string& plane = "rgb");
 
 class ReferenceViewStore {
  public:

@@ -11,17 +11,17 @@
 #include <stdexcept>
 #include <string>
 
-#include "maps/stats/lanes.h"
-#include "maps/stats/with_count.h"
-#include "maps/views/row_windows.h"
+#include "core/lanes.h"
+#include "core/row_windows.h"
+#include "core/with_count.h"
 
 namespace novelty::views {
 
 namespace {
 
-using stats::lanes::F16;
-using stats::lanes::I16;
-using stats::lanes::kLanes;
+using core::lanes::F16;
+using core::lanes::I16;
+using core::lanes::kLanes;
 
 // Scalar (one pixel) and vector (sixteen) forms of the few operations the sampling kernel needs,
 // so that one kernel serves the row's body and its tail.
@@ -29,19 +29,19 @@ inline float LoadLane(const float* p, float) {
   return *p;
 }
 inline F16 LoadLane(const float* p, F16) {
-  return stats::lanes::Load(p);
+  return core::lanes::Load(p);
 }
 inline int ToInt(float x) {
   return int(x);
 }
 inline I16 ToInt(F16 x) {
-  return stats::lanes::AsInt(x);
+  return core::lanes::AsInt(x);
 }
 inline float ToFloat(int x) {
   return float(x);
 }
 inline F16 ToFloat(I16 x) {
-  return stats::lanes::AsFloat(x);
+  return core::lanes::AsFloat(x);
 }
 inline int GatherBytes(const char* base, int offset) {
   int v;
@@ -49,7 +49,7 @@ inline int GatherBytes(const char* base, int offset) {
   return v;
 }
 inline I16 GatherBytes(const char* base, I16 offset) {
-  return stats::lanes::GatherBytes(base, offset);
+  return core::lanes::GatherBytes(base, offset);
 }
 inline float AsFloatBits(int bits) {
   float f;
@@ -61,17 +61,17 @@ inline F16 AsFloatBits(I16 bits) {
 }
 // IEEE half floats (in the low 16 bits) to float (lanes.h).
 inline float HalfToFloat(int bits) {
-  return stats::lanes::HalfToFloat(uint32_t(bits));
+  return core::lanes::HalfToFloat(uint32_t(bits));
 }
 inline F16 HalfToFloat(I16 bits) {
-  return stats::lanes::HalfToFloat(bits);
+  return core::lanes::HalfToFloat(bits);
 }
 // Stores one value (T = float) or sixteen at `stride` floats apart (interleaved channels).
 inline void ScatterLane(float* p, int, float v) {
   *p = v;
 }
 inline void ScatterLane(float* p, int stride, F16 v) {
-  stats::lanes::Scatter(p, stats::lanes::AsInt(stats::lanes::Iota()) * stride, v);
+  core::lanes::Scatter(p, core::lanes::AsInt(core::lanes::Iota()) * stride, v);
 }
 // 255 where `hit`, 0 elsewhere, for one pixel or sixteen; returns how many are hit.
 inline int StoreValid(uint8_t* p, bool hit) {
@@ -79,8 +79,8 @@ inline int StoreValid(uint8_t* p, bool hit) {
   return hit;
 }
 inline int StoreValid(uint8_t* p, I16 hit) {
-  stats::lanes::StoreMaskBytes(p, hit);
-  return stats::lanes::Count(hit);
+  core::lanes::StoreMaskBytes(p, hit);
+  return core::lanes::Count(hit);
 }
 // x^p for one pixel or sixteen. Whole powers up to 64 (the blend's usual ones) by repeated
 // squaring, in vector registers: std::pow lane by lane dominated a blend with angle_power
@@ -124,7 +124,7 @@ inline void LoadMap(const cv::Vec2f* map, float& u, float& v) {
   v = (*map)[1];
 }
 inline void LoadMap(const cv::Vec2f* map, F16& u, F16& v) {
-  stats::lanes::LoadMaskedPairs(&(*map)[0], I16{} - 1, u, v);
+  core::lanes::LoadMaskedPairs(&(*map)[0], I16{} - 1, u, v);
 }
 
 // The channels one pass of the kernel sums in registers; planes with more take several passes.
@@ -147,9 +147,9 @@ struct GatherReader {
   static I16 Min(I16 a, int b) { return a < b ? a : I16{} + b; }
 };
 
-// ... or from RowWindows holding the source rows that sixteen pixels read (row_windows.h).
+// ... or from core::RowWindows holding the source rows that sixteen pixels read (row_windows.h).
 struct WindowReader {
-  const RowWindows& windows;
+  const core::RowWindows& windows;
   int row0, first;  // the windows' first row and first byte
   I16 Word(I16 x_byte, I16 y) const { return windows.Read(y - row0, x_byte - first); }
 };
@@ -294,18 +294,18 @@ constexpr bool kNarrowReads = true;
 // 64 bytes of a row and their top corners on two neighbouring rows: the usual case between views
 // of similar resolution and orientation. Three row registers (rows y_min … y_min + 2, from the
 // leftmost corner's byte) serve every corner with one two-register byte permute each — no
-// gather, and a fraction of RowWindows' work (its 256-byte rows and per-row selects). Returns
+// gather, and a fraction of core::RowWindows' work (its 256-byte rows and per-row selects). Returns
 // false, having read nothing, where the samples lie further apart.
 inline __attribute__((always_inline)) bool SampleBytesNarrow(const BytePlane& p,
                                                              const Corners<I16>& at, F16 w00,
                                                              F16 w10, F16 w01, F16 w11, I16 valid,
                                                              int n, F16* acc) {
-  const int x_min = stats::lanes::MinLane(at.x0, valid);
-  const int y_min = stats::lanes::MinLane(at.y0, valid);
+  const int x_min = core::lanes::MinLane(at.x0, valid);
+  const int y_min = core::lanes::MinLane(at.y0, valid);
   // Byte offsets from x_min (0 in uncovered lanes, whose reads are discarded).
   const I16 byte0 = valid ? (at.x0 - x_min) * n : I16{},
             byte1 = valid ? (at.x1 - x_min) * n : I16{};
-  if (stats::lanes::Any(valid & ((byte1 > 64 - 4) | (at.y0 - y_min > 1)))) return false;
+  if (core::lanes::Any(valid & ((byte1 > 64 - 4) | (at.y0 - y_min > 1)))) return false;
   const std::size_t total = p.TotalBytes();
   __m512i rows[3];
   for (int k = 0; k < 3; ++k) {
@@ -328,7 +328,7 @@ inline __attribute__((always_inline)) bool SampleBytesNarrow(const BytePlane& p,
   const I16 c01 = word(rows[1], rows[2], byte0 + second),
             c11 = word(rows[1], rows[2], byte1 + second);
   for (int c = 0; c < n; ++c) {
-    const auto value = [c](I16 w) { return stats::lanes::AsFloat((w >> (8 * c)) & 0xFF); };
+    const auto value = [c](I16 w) { return core::lanes::AsFloat((w >> (8 * c)) & 0xFF); };
     const F16 sample = w00 * value(c00) + w10 * value(c10) + w01 * value(c01) + w11 * value(c11);
     acc[c] += valid ? sample : F16{};
   }
@@ -342,7 +342,7 @@ inline bool SampleBytesNarrow(const BytePlane&, const Corners<I16>&, F16, F16, F
 }
 #endif
 
-// The rows and bytes that sixteen lanes' covered samples read, if RowWindows can hold them
+// The rows and bytes that sixteen lanes' covered samples read, if core::RowWindows can hold them
 // (rows = 0: it cannot — a magnified, shrunk or turned view, whose lanes then gather).
 struct WindowSpan {
   int row0 = 0, rows = 0, first = 0;
@@ -357,12 +357,11 @@ struct WindowSpan {
 template <class Plane>
 inline WindowSpan SpanOf(const Plane& p, I16 valid, const Corners<I16>& at) {
   WindowSpan s;
-  const int x_min = stats::lanes::MinLane(at.x0, valid),
-            x_max = stats::lanes::MaxLane(at.x1, valid);
-  const int y_min = stats::lanes::MinLane(at.y0, valid),
-            y_max = stats::lanes::MaxLane(at.y1, valid);
+  const int x_min = core::lanes::MinLane(at.x0, valid), x_max = core::lanes::MaxLane(at.x1, valid);
+  const int y_min = core::lanes::MinLane(at.y0, valid), y_max = core::lanes::MaxLane(at.y1, valid);
   const int last_read = (x_max - x_min) * p.pixel_bytes + p.LastWordOffset();
-  if (y_max - y_min >= RowWindows::kMaxRows || last_read > RowWindows::kBytes - 4) return s;
+  if (y_max - y_min >= core::RowWindows::kMaxRows || last_read > core::RowWindows::kBytes - 4)
+    return s;
   s.row0 = y_min;
   s.rows = y_max - y_min + 1;
   s.first = x_min * p.pixel_bytes;
@@ -439,18 +438,18 @@ inline __attribute__((always_inline)) void AddView(const WarpField& w, const Pla
       FootprintOf(w, p, view_weight, o, limits, y, x);
   weight_sum += weight;
   if constexpr (std::is_same_v<T, F16>) {
-    if (!stats::lanes::Any(valid)) return;  // sixteen uncovered pixels: nothing to read
+    if (!core::lanes::Any(valid)) return;  // sixteen uncovered pixels: nothing to read
   }
   if constexpr (std::is_same_v<T, F16> && std::is_same_v<Plane, BytePlane> && kNarrowReads) {
     if (c0 == 0 && n == p.pixel_bytes &&
         SampleBytesNarrow(p, at, w00, w10, w01, w11, valid, n, acc))
       return;
   }
-  if constexpr (std::is_same_v<T, F16> && RowWindows::kAvailable) {
+  if constexpr (std::is_same_v<T, F16> && core::RowWindows::kAvailable) {
     const WindowSpan span = SpanOf(p, valid, at);
     if (span.rows > 0) {
-      const RowWindows windows(p.data, p.TotalBytes(), std::size_t(p.RowBytes()), span.row0,
-                               span.rows, span.first);
+      const core::RowWindows windows(p.data, p.TotalBytes(), std::size_t(p.RowBytes()), span.row0,
+                                     span.rows, span.first);
       const Corners<I16> inside = span.Inside(valid, at);
       Sample(p, WindowReader{windows, span.row0, span.first}, inside, w00, w10, w01, w11, valid, c0,
              n, acc);
@@ -520,7 +519,7 @@ inline void AddViewPixels(const WarpField& w, const Plane& p, float view_weight,
                           F8* acc, F16& weight_sum) {
   const auto f = FootprintOf(w, p, view_weight, o, limits, y, x);
   weight_sum += f.weight;
-  unsigned lanes = stats::lanes::Bits(f.valid);
+  unsigned lanes = core::lanes::Bits(f.valid);
   if (!lanes) return;
   const I16 row0 = f.at.y0 * p.RowBytes(), row1 = f.at.y1 * p.RowBytes();
   const I16 col0 = f.at.x0 * p.pixel_bytes, col1 = f.at.x1 * p.pixel_bytes;
@@ -613,7 +612,7 @@ inline int BlendPixels(const std::vector<const WarpField*>& warps, const std::ve
 template <class Plane>
 auto GroupKernelFor(const Plane& p) {
   if constexpr (std::is_same_v<Plane, BytePlane>) {
-    return stats::WithCount<4, 1, 2, 3>(
+    return core::WithCount<4, 1, 2, 3>(
         p.channels, [](auto n) { return &BlendPixels<F16, Plane, decltype(n)::value>; });
   }
   return &BlendPixels<F16, Plane>;

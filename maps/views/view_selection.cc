@@ -20,7 +20,7 @@ std::vector<double> ViewSelection::Weights(const ViewSelectionOptions& options) 
 }
 
 ViewSelection SelectViewsForRays(const std::vector<Eigen::Isometry3d>& poses,
-                                 const PinholeCamera& camera,
+                                 const core::PinholeCamera& camera,
                                  const Eigen::Isometry3d& T_world_virtual,
                                  const ViewSelectionOptions& options) {
   const Eigen::Vector3d centre = T_world_virtual.translation();
@@ -56,7 +56,8 @@ ViewSelection SelectViewsForRays(const std::vector<Eigen::Isometry3d>& poses,
 }
 
 std::vector<int> SelectViews(const std::vector<Eigen::Isometry3d>& poses,
-                             const PinholeCamera& camera, const Eigen::Isometry3d& T_world_virtual,
+                             const core::PinholeCamera& camera,
+                             const Eigen::Isometry3d& T_world_virtual,
                              const ViewSelectionOptions& options) {
   return SelectViewsForRays(poses, camera, T_world_virtual, options).views;
 }

@@ -14,7 +14,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 
 namespace novelty::views {
 
@@ -45,13 +45,14 @@ double ViewCost(const Eigen::Vector3d& centre, const Eigen::Vector3d& dir,
 /// The best view for each ray, each view once with its ray count. Empty if no view faces the
 /// virtual camera's rays.
 ViewSelection SelectViewsForRays(const std::vector<Eigen::Isometry3d>& reference_poses,
-                                 const PinholeCamera& camera,
+                                 const core::PinholeCamera& camera,
                                  const Eigen::Isometry3d& T_world_virtual,
                                  const ViewSelectionOptions& options = {});
 
 /// SelectViewsForRays' views alone.
 std::vector<int> SelectViews(const std::vector<Eigen::Isometry3d>& reference_poses,
-                             const PinholeCamera& camera, const Eigen::Isometry3d& T_world_virtual,
+                             const core::PinholeCamera& camera,
+                             const Eigen::Isometry3d& T_world_virtual,
                              const ViewSelectionOptions& options = {});
 
 }  // namespace novelty::views

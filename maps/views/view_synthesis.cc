@@ -7,7 +7,8 @@ namespace novelty::views {
 SynthesisResult SynthesiseView(DepthMeshWarper& warper,
                                const std::vector<const ReferenceView*>& refs,
                                const std::vector<const MeshPlan*>& plans,
-                               const std::vector<double>& weights, const PinholeCamera& camera,
+                               const std::vector<double>& weights,
+                               const core::PinholeCamera& camera,
                                const Eigen::Isometry3d& T_world_virtual,
                                const SynthesisOptions& options) {
   std::vector<SourceView> sources;
@@ -36,7 +37,7 @@ SynthesisResult SynthesiseView(DepthMeshWarper& warper,
 }
 
 SynthesisResult SynthesiseView(const std::vector<const ReferenceView*>& refs,
-                               const PinholeCamera& camera,
+                               const core::PinholeCamera& camera,
                                const Eigen::Isometry3d& T_world_virtual,
                                const SynthesisOptions& options) {
   DepthMeshWarper warper(WarpOptionsFor(options.blend, options.warp));

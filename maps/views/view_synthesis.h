@@ -34,13 +34,14 @@ struct SynthesisResult {
 SynthesisResult SynthesiseView(DepthMeshWarper& warper,
                                const std::vector<const ReferenceView*>& refs,
                                const std::vector<const MeshPlan*>& plans,
-                               const std::vector<double>& weights, const PinholeCamera& camera,
+                               const std::vector<double>& weights,
+                               const core::PinholeCamera& camera,
                                const Eigen::Isometry3d& T_world_virtual,
                                const SynthesisOptions& options);
 
 /// The same with a warper made here (one-off syntheses, tests).
 SynthesisResult SynthesiseView(const std::vector<const ReferenceView*>& refs,
-                               const PinholeCamera& camera,
+                               const core::PinholeCamera& camera,
                                const Eigen::Isometry3d& T_world_virtual,
                                const SynthesisOptions& options = {});
 

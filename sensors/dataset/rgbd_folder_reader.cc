@@ -8,7 +8,7 @@
 
 namespace novelty::sensors {
 
-RgbdFolderReader::RgbdFolderReader(const std::string& folder, const views::PinholeCamera& camera,
+RgbdFolderReader::RgbdFolderReader(const std::string& folder, const core::PinholeCamera& camera,
                                    double depth_scale)
     : folder_(folder), camera_(camera), depth_scale_(depth_scale) {
   camera_.Check();
@@ -37,14 +37,16 @@ RgbdFolderReader::RgbdFolderReader(const std::string& folder, const views::Pinho
   if (poses_.empty()) throw std::runtime_error(path + ": no poses");
 }
 
-RgbdFrame RgbdFolderReader::Read(int index) const {
+core::Frame RgbdFolderReader::Read(int index) const {
   if (index < 1 || index > size()) {
     throw std::out_of_range(folder_ + ": no frame " + std::to_string(index) + " (1…" +
                             std::to_string(size()) + ")");
   }
-  RgbdFrame f;
+  core::Frame f;
   f.index = index;
+  f.camera = camera_;
   f.T_world_cam = poses_[std::size_t(index - 1)];
+  f.pose_source = "pose.txt";
   const std::string color = folder_ + "/color/" + std::to_string(index) + ".png";
   const std::string depth = folder_ + "/depth/" + std::to_string(index) + ".png";
   const cv::Mat bgr = cv::imread(color, cv::IMREAD_COLOR);
@@ -61,16 +63,6 @@ RgbdFrame RgbdFolderReader::Read(int index) const {
   cv::cvtColor(bgr, f.rgb, cv::COLOR_BGR2RGB);
   raw.convertTo(f.depth, CV_32F, 1.0 / depth_scale_);
   return f;
-}
-
-views::ReferenceView RgbdFolderReader::ReadView(int index) const {
-  RgbdFrame f = Read(index);
-  views::ReferenceView v;
-  v.camera = camera_;
-  v.T_world_cam = f.T_world_cam;
-  v.depth = f.depth;
-  v.planes["rgb"] = f.rgb;
-  return v;
 }
 
 }  // namespace novelty::sensors

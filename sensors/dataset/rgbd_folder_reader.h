@@ -8,34 +8,25 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "maps/views/pinhole_camera.h"
-#include "maps/views/reference_view_store.h"
+#include "core/frame.h"
+#include "core/pinhole_camera.h"
 
 namespace novelty::sensors {
-
-struct RgbdFrame {
-  int index = 0;
-  cv::Mat rgb;    ///< CV_8UC3, R G B
-  cv::Mat depth;  ///< CV_32FC1 metres, 0 = unknown
-  Eigen::Isometry3d T_world_cam = Eigen::Isometry3d::Identity();
-};
 
 class RgbdFolderReader {
  public:
   /// Throws std::runtime_error naming the folder if pose.txt is missing or malformed (the line).
-  RgbdFolderReader(const std::string& folder, const views::PinholeCamera& camera,
+  RgbdFolderReader(const std::string& folder, const core::PinholeCamera& camera,
                    double depth_scale);
   int size() const { return static_cast<int>(poses_.size()); }
   /// Frame `index` (1-based). Throws std::runtime_error naming the file that is missing, has the
   /// wrong size or type.
-  RgbdFrame Read(int index) const;
-  /// The frame as a reference view with its RGB image as plane "rgb".
-  views::ReferenceView ReadView(int index) const;
-  const views::PinholeCamera& camera() const { return camera_; }
+  core::Frame Read(int index) const;
+  const core::PinholeCamera& camera() const { return camera_; }
 
  private:
   std::string folder_;
-  views::PinholeCamera camera_;
+  core::PinholeCamera camera_;
   double depth_scale_;
   std::vector<Eigen::Isometry3d> poses_;
 };

@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 
 #include "sensors/localization/bilinear_sample.h"
 
@@ -12,7 +12,7 @@ namespace {
 
 // The search segment in the `to` image for pixel `px` of the `from` camera: from the far
 // depth's projection to the near depth's; false if either lies behind the `to` camera.
-bool EpipolarSegment(const views::PinholeCamera& from, const views::PinholeCamera& to,
+bool EpipolarSegment(const core::PinholeCamera& from, const core::PinholeCamera& to,
                      const Eigen::Isometry3d& to_from_from, const cv::Point2f& px,
                      const StereoTriangulationOptions& range, Eigen::Vector2d& far,
                      Eigen::Vector2d& near) {
@@ -32,8 +32,10 @@ bool ClipToImage(Eigen::Vector2d& a, Eigen::Vector2d& b, int width, int height, 
   auto clip = [&](double p, double q) {  // Liang–Barsky
     if (std::abs(p) < 1e-12) return q >= 0;
     const double t = q / p;
-    if (p < 0) t0 = std::max(t0, t);
-    else t1 = std::min(t1, t);
+    if (p < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
     return t0 <= t1;
   };
   if (!clip(-d.x(), a.x() - lo_x) || !clip(d.x(), hi_x - a.x()) || !clip(-d.y(), a.y() - lo_y) ||
@@ -91,8 +93,7 @@ std::optional<Eigen::Vector2d> SearchSegment(const cv::Mat& from, const cv::Poin
 }  // namespace
 
 std::vector<EpipolarPoint> EpipolarDepths(const StereoPair& pair, const cv::Mat& reference,
-                                          const cv::Mat& other,
-                                          const EpipolarDepthOptions& o) {
+                                          const cv::Mat& other, const EpipolarDepthOptions& o) {
   CV_Assert(reference.type() == CV_32F && other.type() == CV_32F);
   const Eigen::Isometry3d other_from_ref = pair.reference_from_other.inverse();
   cv::Mat gx, gy;
@@ -110,8 +111,8 @@ std::vector<EpipolarPoint> EpipolarDepths(const StereoPair& pair, const cv::Mat&
         for (int x = bx; x < bx + o.block; ++x) {
           Eigen::Vector2d far, near;
           const cv::Point2f px{float(x), float(y)};
-          if (!EpipolarSegment(pair.reference_camera, pair.other_camera, other_from_ref, px, o.range,
-                               far, near))
+          if (!EpipolarSegment(pair.reference_camera, pair.other_camera, other_from_ref, px,
+                               o.range, far, near))
             continue;
           const Eigen::Vector2d e = (near - far).normalized();
           const float g = float(std::abs(gx.at<float>(y, x) * e.x() + gy.at<float>(y, x) * e.y()));

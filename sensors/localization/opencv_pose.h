@@ -7,11 +7,11 @@
 #include <opencv2/core.hpp>
 #include <opencv2/core/eigen.hpp>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 
 namespace novelty::sensors {
 
-inline cv::Mat CameraMatrix(const views::PinholeCamera& c) {
+inline cv::Mat CameraMatrix(const core::PinholeCamera& c) {
   return (cv::Mat_<double>(3, 3) << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1);
 }
 

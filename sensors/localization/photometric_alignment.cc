@@ -11,7 +11,7 @@ namespace {
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-views::PinholeCamera AtLevel(views::PinholeCamera c, int level) {
+core::PinholeCamera AtLevel(core::PinholeCamera c, int level) {
   const double s = std::ldexp(1.0, -level);
   c.fx *= s, c.fy *= s, c.cx *= s, c.cy *= s;
   c.width = int(std::ceil(c.width * s)), c.height = int(std::ceil(c.height * s));
@@ -43,7 +43,7 @@ struct Normal {
 // at one pyramid level to the normal equations of T ← exp(ξ)·T.
 void Accumulate(const std::vector<Eigen::Vector3d>& points, const std::vector<float>& reference,
                 const cv::Mat& image, const cv::Mat& gx, const cv::Mat& gy,
-                const views::PinholeCamera& c, const Eigen::Isometry3d& view_from_reference,
+                const core::PinholeCamera& c, const Eigen::Isometry3d& view_from_reference,
                 const Eigen::Isometry3d& t, double huber, double textured_gradient,
                 bool count_visible, Normal& n) {
   const float max_x = float(image.cols - 2), max_y = float(image.rows - 2);
@@ -115,7 +115,7 @@ GradientPyramid GradientPyramid::Build(const cv::Mat& grey, int levels) {
 AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
                                  const std::vector<cv::Point2f>& intensity_px,
                                  const GradientPyramid& keyframe, const GradientPyramid& current,
-                                 const views::PinholeCamera& camera,
+                                 const core::PinholeCamera& camera,
                                  const Eigen::Isometry3d& initial,
                                  const PhotometricAlignmentOptions& o) {
   return AlignPhotometric(points, intensity_px, keyframe, {{&current, camera}}, initial, o);

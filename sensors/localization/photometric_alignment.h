@@ -10,7 +10,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 
 namespace novelty::sensors {
 
@@ -34,8 +34,8 @@ struct GradientPyramid {
 
 struct AlignmentResult {
   Eigen::Isometry3d current_from_keyframe = Eigen::Isometry3d::Identity();
-  int visible = 0;         ///< points projecting into the current image at level 0
-  double rms = 0.0;        ///< RMS photometric residual over all views (grey levels)
+  int visible = 0;               ///< points projecting into the current image at level 0
+  double rms = 0.0;              ///< RMS photometric residual over all views (grey levels)
   double inlier_fraction = 0.0;  ///< residuals under the Huber threshold, over all views
   /// Residuals where the current image is textured, over all views: near 0 for a blank or
   /// blacked-out image, which otherwise leaves an RMS like that of another lighting.
@@ -46,7 +46,7 @@ struct AlignmentResult {
 /// camera of the rig at the same instant (its residuals then constrain the same pose).
 struct AlignmentView {
   const GradientPyramid* pyramid = nullptr;
-  views::PinholeCamera camera;
+  core::PinholeCamera camera;
   Eigen::Isometry3d view_from_reference = Eigen::Isometry3d::Identity();  ///< the rig offset
 };
 
@@ -56,7 +56,7 @@ struct AlignmentView {
 AlignmentResult AlignPhotometric(const std::vector<Eigen::Vector3d>& points,
                                  const std::vector<cv::Point2f>& intensity_px,
                                  const GradientPyramid& keyframe, const GradientPyramid& current,
-                                 const views::PinholeCamera& camera,
+                                 const core::PinholeCamera& camera,
                                  const Eigen::Isometry3d& initial,
                                  const PhotometricAlignmentOptions& options = {});
 

@@ -6,14 +6,14 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 
 namespace novelty::sensors {
 
 struct StereoPair {
   double time = 0.0;
   cv::Mat reference, other;  ///< CV_8UC3 RGB or CV_8UC1, same size
-  views::PinholeCamera reference_camera, other_camera;
+  core::PinholeCamera reference_camera, other_camera;
   Eigen::Isometry3d reference_from_other = Eigen::Isometry3d::Identity();
 };
 

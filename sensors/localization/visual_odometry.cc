@@ -117,7 +117,7 @@ class VisualOdometry::Impl {
   // of "corners" at occlusion boundaries that no 3D point explains); nullopt if it fails.
   std::optional<Eigen::Isometry3d> RansacPose(const std::vector<Eigen::Vector3d>& world,
                                               const std::vector<cv::Point2f>& image,
-                                              const views::PinholeCamera& c,
+                                              const core::PinholeCamera& c,
                                               std::vector<bool>& inlier) {
     std::vector<cv::Point3f> object;
     for (const auto& w : world) object.push_back(ToCv(w));
@@ -199,7 +199,6 @@ class VisualOdometry::Impl {
       }
     if (any) anchors[frame] = grey;
   }
-
 };
 
 VisualOdometry::VisualOdometry(const VisualOdometryOptions& options,

@@ -27,7 +27,7 @@ RawlogFrameReader::RawlogFrameReader(const std::string& path)
 
 RawlogFrameReader::~RawlogFrameReader() = default;
 
-bool RawlogFrameReader::Next(Frame& frame) {
+bool RawlogFrameReader::Next(core::Frame& frame) {
   while (true) {
     // A truncated or foreign file throws, naming the object; what was read is kept.
     const auto obj = impl_->input.Next();
@@ -46,10 +46,10 @@ bool RawlogFrameReader::Next(Frame& frame) {
       frame.index = index;
       frame.time = mrpt::Clock::toDouble(scan->timestamp);
       frame.label = scan->sensorLabel;
-      frame.pose.reset();
+      frame.T_world_cam.reset();
       frame.pose_source.clear();
       if (const auto& p = impl_->last_pose; p && p->timestamp == scan->timestamp) {
-        frame.pose = RobotPoseOf(*p) * CameraOnRobot(*scan);
+        frame.T_world_cam = RobotPoseOf(*p) * CameraOnRobot(*scan);
         frame.pose_source = p->sensorLabel;
       }
       scan->unload();

@@ -1,5 +1,5 @@
 // Reads camera frames from an MRPT rawlog (observations format, as novelty-sim writes and MRPT's
-// tools read): each CObservation3DRangeScan with an intensity image becomes a Frame with RGB,
+// tools read): each CObservation3DRangeScan with an intensity image becomes a core::Frame with RGB,
 // depth in metres and intrinsics. Externally stored images are looked up in MRPT's
 // `<name>_Images/` folder beside the rawlog. Poses come separately (ground truth:
 // sim/output/ground_truth_reader.h; tracker).
@@ -16,22 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/frame.h"
 
 namespace novelty::sensors {
-
-struct Frame {
-  int index = 0;      ///< 1-based among the rawlog's RGB-D observations
-  double time = 0.0;  ///< seconds (MRPT timestamp as a double)
-  std::string label;  ///< sensor label
-  cv::Mat rgb;        ///< CV_8UC3 R G B
-  cv::Mat depth;      ///< CV_32FC1 metres along +Z, 0 = unknown
-  views::PinholeCamera camera;
-  /// T_world_cam from a CObservationRobotPose with the frame's timestamp just before it
-  /// (camera_pose_observation.h: novelty-poses), if there is one; its label in pose_source.
-  std::optional<Eigen::Isometry3d> pose;
-  std::string pose_source;
-};
 
 class RawlogFrameReader {
  public:
@@ -40,7 +27,7 @@ class RawlogFrameReader {
   ~RawlogFrameReader();
 
   /// The next RGB-D frame; false at the end of the rawlog.
-  bool Next(Frame& frame);
+  bool Next(core::Frame& frame);
   int skipped() const { return static_cast<int>(skip_reasons_.size()); }
   const std::vector<std::string>& skip_reasons() const { return skip_reasons_; }
 

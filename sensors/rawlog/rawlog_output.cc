@@ -49,7 +49,7 @@ mrpt::img::CImage RawlogOutput::ExternalImage(const cv::Mat& rgb, const std::str
 }
 
 void RawlogOutput::WriteRgbd(double time, const cv::Mat& rgb, const cv::Mat& depth,
-                             const views::PinholeCamera& camera,
+                             const core::PinholeCamera& camera,
                              const Eigen::Isometry3d& robot_from_camera, const std::string& stem,
                              const std::string& label) {
   mrpt::obs::CObservation3DRangeScan obs =

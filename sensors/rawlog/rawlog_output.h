@@ -13,7 +13,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 
 namespace novelty::sensors {
 
@@ -31,7 +31,7 @@ class RawlogOutput {
   /// An RGB-D frame as CObservation3DRangeScan (rgbd_observation.h) with its range image and
   /// colour image stored externally under `stem`. `time`: seconds since the Unix epoch.
   void WriteRgbd(double time, const cv::Mat& rgb, const cv::Mat& depth,
-                 const views::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
+                 const core::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
                  const std::string& stem, const std::string& label = "RGBD");
 
   /// Makes the external images of `input_rawlog` (its NAME_Images/) available to this rawlog by

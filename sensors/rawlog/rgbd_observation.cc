@@ -34,7 +34,7 @@ mrpt::poses::CPose3D ToMrpt(const Eigen::Isometry3d& p) {
   return mrpt::poses::CPose3D(m);
 }
 
-mrpt::img::TCamera ToMrpt(const views::PinholeCamera& camera) {
+mrpt::img::TCamera ToMrpt(const core::PinholeCamera& camera) {
   mrpt::img::TCamera k;
   k.ncols = uint32_t(camera.width);
   k.nrows = uint32_t(camera.height);
@@ -47,7 +47,7 @@ mrpt::img::TCamera ToMrpt(const views::PinholeCamera& camera) {
 
 mrpt::obs::CObservation3DRangeScan MakeRgbdObservation(double time, const cv::Mat& rgb,
                                                        const cv::Mat& depth,
-                                                       const views::PinholeCamera& camera,
+                                                       const core::PinholeCamera& camera,
                                                        const Eigen::Isometry3d& robot_from_camera) {
   mrpt::obs::CObservation3DRangeScan obs;
   obs.timestamp = mrpt::Clock::fromDouble(time);
@@ -78,7 +78,7 @@ Eigen::Isometry3d CameraOnRobot(const mrpt::obs::CObservation3DRangeScan& obs) {
 }
 
 void DecodeRgbd(const mrpt::obs::CObservation3DRangeScan& obs, cv::Mat& rgb, cv::Mat& depth,
-                views::PinholeCamera& camera) {
+                core::PinholeCamera& camera) {
   if (!obs.hasRangeImage || !obs.hasIntensityImage) {
     throw std::runtime_error("no range or no intensity image");
   }
@@ -94,8 +94,8 @@ void DecodeRgbd(const mrpt::obs::CObservation3DRangeScan& obs, cv::Mat& rgb, cv:
   camera = FromMrpt(obs.cameraParamsIntensity);
 }
 
-views::PinholeCamera FromMrpt(const mrpt::img::TCamera& k) {
-  views::PinholeCamera camera;
+core::PinholeCamera FromMrpt(const mrpt::img::TCamera& k) {
+  core::PinholeCamera camera;
   camera.width = int(k.ncols);
   camera.height = int(k.nrows);
   camera.fx = k.fx();

@@ -10,14 +10,14 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 
 namespace novelty::sensors {
 
 /// An observation holding the images in memory. `time` is seconds since the Unix epoch.
 mrpt::obs::CObservation3DRangeScan MakeRgbdObservation(double time, const cv::Mat& rgb,
                                                        const cv::Mat& depth,
-                                                       const views::PinholeCamera& camera,
+                                                       const core::PinholeCamera& camera,
                                                        const Eigen::Isometry3d& robot_from_camera);
 
 /// T_robot_cam of the observation's colour camera (+Z forward).
@@ -26,15 +26,15 @@ Eigen::Isometry3d CameraOnRobot(const mrpt::obs::CObservation3DRangeScan& obs);
 /// Decoded images and intrinsics; the observation must be loaded. Throws std::runtime_error
 /// saying what is missing or inconsistent.
 void DecodeRgbd(const mrpt::obs::CObservation3DRangeScan& obs, cv::Mat& rgb, cv::Mat& depth,
-                views::PinholeCamera& camera);
+                core::PinholeCamera& camera);
 
 /// Intrinsics from MRPT's; throws std::invalid_argument for a bad camera (PinholeCamera::Check).
-views::PinholeCamera FromMrpt(const mrpt::img::TCamera& camera);
+core::PinholeCamera FromMrpt(const mrpt::img::TCamera& camera);
 /// A loaded CImage (colour or grey) as CV_8UC3 R G B; throws std::runtime_error if it is empty.
 cv::Mat RgbFromImage(const mrpt::img::CImage& image);
 
 Eigen::Isometry3d ToEigen(const mrpt::poses::CPose3D& pose);
 mrpt::poses::CPose3D ToMrpt(const Eigen::Isometry3d& pose);
-mrpt::img::TCamera ToMrpt(const views::PinholeCamera& camera);
+mrpt::img::TCamera ToMrpt(const core::PinholeCamera& camera);
 
 }  // namespace novelty::sensors

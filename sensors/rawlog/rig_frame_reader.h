@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 
 namespace novelty::sensors {
 
@@ -25,7 +25,7 @@ struct RigFrame {
   double time = 0.0;  ///< seconds since the Unix epoch
   /// Images CV_8UC3 R G B, reference camera first.
   std::vector<cv::Mat> images;
-  std::vector<views::PinholeCamera> cameras;
+  std::vector<core::PinholeCamera> cameras;
   /// T_ref_cam of each camera (identity for the reference).
   std::vector<Eigen::Isometry3d> ref_from_camera;
   /// T_robot_ref: where the reference camera sits on the robot (+Z forward).

@@ -8,12 +8,12 @@
 #include <opencv2/core/utility.hpp>
 #include <stdexcept>
 
-#include "maps/stats/lanes.h"
+#include "core/lanes.h"
 
 namespace novelty::sensors {
 namespace {
 
-using namespace stats::lanes;  // F16, I16, Load, Min… (maps/stats/lanes.h)
+using namespace core::lanes;  // F16, I16, Load, Min… (core/lanes.h)
 
 enum Direction { kFromLeft = 0, kFromRight = 1, kFromUp = 2, kFromDown = 3 };
 
@@ -76,7 +76,7 @@ struct Scratch {
 // before (shift −1) or after (+1). Lanes `keep` (senders past the row's end) leave what is there.
 template <class Msg>
 void StoreMessage(float* dest, std::size_t block_size, int shift, int labels, I16 keep, Msg msg) {
-  const I16 lane = stats::lanes::AsInt(stats::lanes::Iota());
+  const I16 lane = core::lanes::AsInt(core::lanes::Iota());
   for (int l = 0; l < labels; ++l) {
     float* d = dest + std::size_t(l) * kLanes;
     const F16 m = msg(l);
@@ -87,7 +87,7 @@ void StoreMessage(float* dest, std::size_t block_size, int shift, int labels, I1
       const I16 own = (lane < 15) & ~__builtin_shuffle(keep, kRotateDown);
       Store(d, own ? r : Load(d));
       if (!keep[0]) d[int(kLanes) - 1 - int(block_size)] = m[0];  // lane 15 of the block before
-    } else {                 // receiver of lane k is lane k + 1
+    } else {  // receiver of lane k is lane k + 1
       const F16 r = __builtin_shuffle(m, kRotateUp);
       const I16 own = (lane > 0) & ~__builtin_shuffle(keep, kRotateUp);
       Store(d, own ? r : Load(d));
@@ -130,7 +130,7 @@ void SendVector(Level& lv, int y, int half, int j, const BeliefPropagationOption
   // right neighbours are in the other half: x − 1 is its pixel j − 1 for half 0 and j for half 1;
   // x + 1 is j for half 0 and j + 1 for half 1.
   // Senders past the row's end.
-  const I16 keep = stats::lanes::Iota() + float(j) >= float(lv.Count(half));
+  const I16 keep = core::lanes::Iota() + float(j) >= float(lv.Count(half));
   const std::size_t block = lv.BlockSize();
   const int other = 1 - half;
   const float cap = opt.smoothness_truncation;
@@ -294,9 +294,8 @@ void ReadLabels(const Level& lv, const BeliefPropagationOptions& o, Labeling& re
             }
             result.label.at<float>(y, x) = refined;
             result.confidence.at<float>(y, x) =
-                std::isfinite(runner_up[k])
-                    ? std::min(1.0f, (runner_up[k] - best_value[k]) / scale)
-                    : 1.0f;
+                std::isfinite(runner_up[k]) ? std::min(1.0f, (runner_up[k] - best_value[k]) / scale)
+                                            : 1.0f;
           }
         }
       }

@@ -7,7 +7,7 @@
 namespace novelty::sensors {
 namespace {
 
-Eigen::Matrix3d Intrinsics(const views::PinholeCamera& c) {
+Eigen::Matrix3d Intrinsics(const core::PinholeCamera& c) {
   Eigen::Matrix3d k;
   k << c.fx, 0, c.cx, 0, c.fy, c.cy, 0, 0, 1;
   return k;
@@ -21,7 +21,7 @@ cv::Mat WithAlpha(const cv::Mat& image) {
   return rgba;
 }
 
-void CheckInput(const cv::Mat& reference, const views::PinholeCamera& camera,
+void CheckInput(const cv::Mat& reference, const core::PinholeCamera& camera,
                 const std::vector<SweepView>& others, const PlaneSweepOptions& o) {
   camera.Check();
   if (reference.type() != CV_8UC3 && reference.type() != CV_8UC1)
@@ -48,7 +48,7 @@ double DepthOfLabel(const PlaneSweepOptions& o, double label) {
   return 1.0 / (inv_near + (inv_far - inv_near) * label / (o.hypotheses - 1));
 }
 
-CostVolume PlaneSweep(const cv::Mat& reference, const views::PinholeCamera& camera,
+CostVolume PlaneSweep(const cv::Mat& reference, const core::PinholeCamera& camera,
                       const std::vector<SweepView>& others, const PlaneSweepOptions& o) {
   CheckInput(reference, camera, others, o);
   const int w = reference.cols, h = reference.rows, labels = o.hypotheses;

@@ -10,7 +10,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 #include "sensors/stereo/cost_volume.h"
 
 namespace novelty::sensors {
@@ -32,7 +32,7 @@ struct PlaneSweepOptions {
 /// intrinsics and T_ref_other (its pose in the reference camera's frame).
 struct SweepView {
   cv::Mat image;
-  views::PinholeCamera camera;
+  core::PinholeCamera camera;
   Eigen::Isometry3d ref_from_view = Eigen::Isometry3d::Identity();
 };
 
@@ -43,7 +43,7 @@ double DepthOfLabel(const PlaneSweepOptions& options, double label);
 /// The cost volume of `reference` against `others`. Pixels that fall outside every other image
 /// for a plane get the truncation cost. Throws std::invalid_argument for images of different
 /// sizes or types, no other view, or a bad depth range.
-CostVolume PlaneSweep(const cv::Mat& reference, const views::PinholeCamera& camera,
+CostVolume PlaneSweep(const cv::Mat& reference, const core::PinholeCamera& camera,
                       const std::vector<SweepView>& others, const PlaneSweepOptions& options);
 
 }  // namespace novelty::sensors

@@ -19,7 +19,7 @@ double RefineLabel(const CostVolume& cost, int x, int y, float bp_label) {
 
 }  // namespace
 
-StereoDepth ComputeStereoDepth(const cv::Mat& reference, const views::PinholeCamera& camera,
+StereoDepth ComputeStereoDepth(const cv::Mat& reference, const core::PinholeCamera& camera,
                                const std::vector<SweepView>& others,
                                const StereoDepthOptions& options) {
   BeliefPropagationOptions bp = options.propagation;
@@ -30,8 +30,7 @@ StereoDepth ComputeStereoDepth(const cv::Mat& reference, const views::PinholeCam
   for (int y = 0; y < reference.rows; ++y)
     for (int x = 0; x < reference.cols; ++x) {
       const bool keep = labeling.confidence.at<float>(y, x) >= options.min_confidence;
-      const double label =
-          RefineLabel(volume, x, y, labeling.label.at<float>(y, x));
+      const double label = RefineLabel(volume, x, y, labeling.label.at<float>(y, x));
       result.depth.at<float>(y, x) = keep ? float(DepthOfLabel(options.sweep, label)) : 0.0f;
     }
   return result;

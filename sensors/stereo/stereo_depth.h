@@ -24,7 +24,7 @@ struct StereoDepth {
 };
 
 /// Throws std::invalid_argument for inconsistent input (plane_sweep.h).
-StereoDepth ComputeStereoDepth(const cv::Mat& reference, const views::PinholeCamera& camera,
+StereoDepth ComputeStereoDepth(const cv::Mat& reference, const core::PinholeCamera& camera,
                                const std::vector<SweepView>& others,
                                const StereoDepthOptions& options);
 

@@ -32,7 +32,7 @@ GroundTruthWriter::GroundTruthWriter(const std::string& dir, const Scenario& sce
   poses_.precision(9);
   std::ofstream rig(dir_ + "/rig.csv");
   rig << "camera,width,height,fx,fy,cx,cy,tx,ty,tz\n";
-  const views::PinholeCamera& c = scenario.camera;
+  const core::PinholeCamera& c = scenario.camera;
   for (std::size_t i = 0; i < rig_offsets.size(); ++i) {
     const Eigen::Vector3d t = rig_offsets[i].translation();
     rig << i << "," << c.width << "," << c.height << "," << c.fx << "," << c.fy << "," << c.cx

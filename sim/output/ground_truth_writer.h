@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 #include "sim/scenario/scenario.h"
 #include "sim/world/pioneer3dx.h"
 

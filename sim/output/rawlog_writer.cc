@@ -36,7 +36,7 @@ void RawlogWriter::Close() {
 }
 
 void RawlogWriter::WriteImage(double t, const std::string& label, const cv::Mat& rgb,
-                              const views::PinholeCamera& camera,
+                              const core::PinholeCamera& camera,
                               const Eigen::Isometry3d& robot_from_camera, const std::string& stem) {
   mrpt::obs::CObservationImage obs;
   obs.timestamp = Stamp(t);
@@ -48,7 +48,7 @@ void RawlogWriter::WriteImage(double t, const std::string& label, const cv::Mat&
 }
 
 void RawlogWriter::WriteStereo(double t, const cv::Mat& left, const cv::Mat& right,
-                               const views::PinholeCamera& camera,
+                               const core::PinholeCamera& camera,
                                const Eigen::Isometry3d& robot_from_left, double baseline,
                                const std::string& stem) {
   mrpt::obs::CObservationStereoImages obs;
@@ -64,7 +64,7 @@ void RawlogWriter::WriteStereo(double t, const cv::Mat& left, const cv::Mat& rig
 }
 
 void RawlogWriter::WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth,
-                             const views::PinholeCamera& camera,
+                             const core::PinholeCamera& camera,
                              const Eigen::Isometry3d& robot_from_camera, const std::string& stem) {
   out_->WriteRgbd(kEpoch + t, rgb, depth, camera, robot_from_camera, stem);
 }

@@ -23,7 +23,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 #include "sim/world/led_tracker.h"
 #include "sim/world/pioneer3dx.h"
 
@@ -39,14 +39,14 @@ class RawlogWriter {
 
   /// `stem`: file name of the image without extension (unique per image).
   void WriteImage(double t, const std::string& label, const cv::Mat& rgb,
-                  const views::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
+                  const core::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
                   const std::string& stem);
   void WriteStereo(double t, const cv::Mat& left, const cv::Mat& right,
-                   const views::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_left,
+                   const core::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_left,
                    double baseline, const std::string& stem);
   /// depth: CV_32F metres (0 = unknown).
   void WriteRgbd(double t, const cv::Mat& rgb, const cv::Mat& depth,
-                 const views::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
+                 const core::PinholeCamera& camera, const Eigen::Isometry3d& robot_from_camera,
                  const std::string& stem);
   void WriteTracker(double t, const sensors::LedMeasurement& leds, double noise_std);
   void WriteOdometry(double t, const Odometry& odometry);

@@ -165,7 +165,7 @@ void ForEachRowBlock(int rows, int threads, const std::function<void(int, int)>&
 
 }  // namespace
 
-cv::Mat RenderIds(const RayScene& scene, const views::PinholeCamera& camera,
+cv::Mat RenderIds(const RayScene& scene, const core::PinholeCamera& camera,
                   const Eigen::Isometry3d& T_world_cam, int threads) {
   camera.Check();
   CheckPose(T_world_cam);
@@ -190,7 +190,7 @@ Eigen::Vector3f TraceRadiance(const RayScene& scene, const Lighting& lighting,
 }
 
 RenderedFrame Render(const RayScene& scene, const Lighting& lighting,
-                     const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+                     const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                      const RenderOptions& options) {
   camera.Check();
   CheckPose(T_world_cam);

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <opencv2/core.hpp>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 #include "sim/render/lighting.h"
 #include "sim/render/ray_scene.h"
 
@@ -47,11 +47,11 @@ struct RenderedFrame {
 /// Renders the scene seen by `camera` at `T_world_cam`. Throws std::invalid_argument for a bad
 /// camera or a pose that is not a rigid transform.
 RenderedFrame Render(const RayScene& scene, const Lighting& lighting,
-                     const views::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+                     const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                      const RenderOptions& options = {});
 
 /// Only the object-id image (first surface per pixel, -1 = none): for ground-truth masks.
-cv::Mat RenderIds(const RayScene& scene, const views::PinholeCamera& camera,
+cv::Mat RenderIds(const RayScene& scene, const core::PinholeCamera& camera,
                   const Eigen::Isometry3d& T_world_cam, int threads = 0);
 
 /// Linear radiance leaving the first surface along a ray (no noise, no gamma): the shading model

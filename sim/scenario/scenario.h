@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 #include "sim/render/lighting.h"
 #include "sim/render/material.h"
 #include "sim/render/renderer.h"
@@ -88,7 +88,7 @@ struct Scenario {
   int frames = 100;
   double fps = 7.0;
   std::uint64_t seed = 1;
-  views::PinholeCamera camera = views::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180.0);
+  core::PinholeCamera camera = core::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180.0);
   RigSpec rig;
   RenderOptions render;
   MountSpec mount;

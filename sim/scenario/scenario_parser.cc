@@ -1,4 +1,5 @@
 #include "sim/scenario/scenario_parser.h"
+#include "core/rigid_pose.h"
 
 #include <cmath>
 #include <fstream>
@@ -181,7 +182,7 @@ class Parser {
     const int w = PositiveInt(l, "width"), h = PositiveInt(l, "height");
     const double fov = l.Positive("horizontal field of view");
     if (fov >= 179) l.Fail("field of view must be < 179 degrees");
-    s_.camera = views::PinholeCamera::FromFov(w, h, fov * kDeg);
+    s_.camera = core::PinholeCamera::FromFov(w, h, fov * kDeg);
   }
 
   void Rig(Line& l) {
@@ -226,7 +227,7 @@ class Parser {
   void StaticCamera(Line& l) {
     const Eigen::Vector3d eye = l.Vec3("camera position"), target = l.Vec3("target");
     try {
-      s_.static_camera = views::LookAt(eye, target);
+      s_.static_camera = core::LookAt(eye, target);
     } catch (const std::invalid_argument& e) {
       l.Fail(e.what());
     }

@@ -3,12 +3,17 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <fstream>
+#include <sstream>
+
+#include "mrpt_plugins/differencing_map_options.h"
+
 namespace novelty::mrpt_plugins {
 namespace {
 
-appearance::AppearanceMapOptions Load(const std::string& text) {
-  const mrpt::config::CConfigFileMemory config(text);
-  return LoadAppearanceMapOptions(config, "AppearanceMap", "test.ini");
+AppearanceMapConfig Load(const std::string& text) {
+  return AppearanceMapConfig::FromConfig(mrpt::config::CConfigFileMemory(text), "AppearanceMap",
+                                         "test.ini");
 }
 
 std::string ErrorOf(const std::string& text) {
@@ -20,51 +25,92 @@ std::string ErrorOf(const std::string& text) {
   return "";
 }
 
-TEST(AppearanceMapOptions, ShippedIniGivesTheDocumentedDefaults) {
-  const auto o =
-      LoadAppearanceMapOptions(std::string(NOVELTY_SOURCE_DIR) + "/share/appearance.ini");
-  const appearance::AppearanceMapOptions d;
-  EXPECT_EQ(o.surprise.update.forgetting_factor, d.surprise.update.forgetting_factor);
-  EXPECT_EQ(o.surprise.update.xi, d.surprise.update.xi);
-  EXPECT_EQ(o.initial_prior.sigma, 5.0);
-  EXPECT_EQ(o.half_precision, d.half_precision);
-  EXPECT_NEAR(o.views.new_view_angle, d.views.new_view_angle, 1e-12);
-  EXPECT_EQ(o.views.blend.depth_tolerance, 0.0);
-  EXPECT_EQ(o.surprise.update.min_variance, 1.0 / 12.0);  // the file's digits give the default
-  EXPECT_EQ(o.views.blend.angle_power, d.views.blend.angle_power);
-  EXPECT_EQ(o.views.selection.weight_by_rays, d.views.selection.weight_by_rays);
+// The file without its leading comment lines.
+std::string Body(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, body;
+  while (std::getline(in, line))
+    if (!(body.empty() && line.rfind('#', 0) == 0)) body += line + "\n";
+  return body;
 }
 
-TEST(AppearanceMapOptions, ReadsValuesAndNamesBadOnes) {
-  const auto o = Load("[AppearanceMap]\nforgetting_factor = 0.7\nhalf_precision = false\n");
-  EXPECT_EQ(o.surprise.update.forgetting_factor, 0.7);
-  EXPECT_FALSE(o.half_precision);
+TEST(AppearanceMapOptions, ShippedIniIsTheDumpOfTheDefaults) {
+  std::ostringstream dump;
+  AppearanceMapConfig().dumpToTextStream(dump);
+  EXPECT_EQ(Body(std::string(NOVELTY_SOURCE_DIR) + "/share/appearance.ini"), dump.str())
+      << "regenerate with: build/bin/novelty-info --dump-options CAppearanceMap";
+  std::ostringstream diff_dump;
+  DifferencingMapConfig().dumpToTextStream(diff_dump);
+  EXPECT_EQ(Body(std::string(NOVELTY_SOURCE_DIR) + "/share/differencing.ini"), diff_dump.str())
+      << "regenerate with: build/bin/novelty-info --dump-options CDifferencingMap";
+}
+
+TEST(AppearanceMapOptions, ShippedIniGivesTheThesisValues) {
+  const auto c =
+      AppearanceMapConfig::FromFile(std::string(NOVELTY_SOURCE_DIR) + "/share/appearance.ini");
+  const auto& o = c.map;
+  EXPECT_EQ(o.surprise.update.forgetting_factor, 0.8);  // thesis 4.1.2
+  EXPECT_EQ(o.initial_prior.alpha, 1.0);                // thesis 4.3: α=1, β=1, τ=0, σ=5
+  EXPECT_EQ(o.initial_prior.beta, 1.0);
+  EXPECT_EQ(o.initial_prior.tau, 0.0);
+  EXPECT_EQ(o.initial_prior.sigma, 5.0);
+  EXPECT_EQ(o.surprise.update.min_variance, 1.0 / 12.0);  // the file's digits give 1/12 exactly
+  EXPECT_NEAR(o.views.new_view_angle, 5.0 * M_PI / 180.0, 1e-15);
+  EXPECT_EQ(o.views.blend.depth_tolerance, 0.0);  // the thesis's average
+  EXPECT_EQ(o.views.blend.angle_power, 0.0);
+  EXPECT_TRUE(o.views.selection.weight_by_rays);
+  EXPECT_EQ(c.depth.kind, DepthSourceOptions::Kind::kRgbd);
+  EXPECT_EQ(c.depth.stereo.sweep.hypotheses, 64);
+}
+
+TEST(AppearanceMapOptions, EveryFieldTheOptionsHoldCanBeSetFromTheIni) {
+  const AppearanceMapConfig c = Load(
+      "[AppearanceMap]\nforgetting_factor = 0.7\nhalf_precision = false\nplanar_block = 4\n"
+      "planar_tolerance = 0.01\nnear_plane = 0.1\nmax_view_distance = 3\nresolution_power = 1\n");
+  EXPECT_EQ(c.map.surprise.update.forgetting_factor, 0.7);
+  EXPECT_FALSE(c.map.half_precision);
+  EXPECT_EQ(c.map.views.warp.planar_block, 4);
+  EXPECT_EQ(c.map.views.warp.planar_tolerance, 0.01);
+  EXPECT_EQ(c.map.views.warp.near_plane, 0.1);
+  EXPECT_EQ(c.map.views.selection.max_distance, 3.0);
+  EXPECT_EQ(c.map.views.blend.resolution_power, 1.0);
+}
+
+TEST(AppearanceMapOptions, NamesBadValues) {
   EXPECT_EQ(ErrorOf("[AppearanceMap]\nforgeting_factor = 0.7\n"),
             "test.ini: [AppearanceMap] forgeting_factor: unknown option");
-  EXPECT_EQ(ErrorOf("[AppearanceMap]\nxi = lots\n"), "test.ini: [AppearanceMap] xi = 'lots': not a number");
+  EXPECT_EQ(ErrorOf("[AppearanceMap]\nxi = lots\n"),
+            "test.ini: [AppearanceMap] xi = 'lots': not a number");
   EXPECT_NE(ErrorOf("[AppearanceMap]\nforgetting_factor = 1.5\n").find("forgetting_factor"),
             std::string::npos);
-  EXPECT_THROW(LoadAppearanceMapOptions("/nonexistent.ini"), std::runtime_error);
-}
-
-TEST(AppearanceMapOptions, ReadsTheDepthSource) {
-  const mrpt::config::CConfigFileMemory stereo(
-      "[AppearanceMap]\ndepth_source = stereo\nstereo_hypotheses = 32\nstereo_far = 4 ; m\n");
-  const MapConfig c = LoadMapConfig(stereo, "AppearanceMap", "test.ini");
-  EXPECT_EQ(c.depth.kind, DepthSourceOptions::Kind::kStereo);
-  EXPECT_EQ(c.depth.stereo.sweep.hypotheses, 32);
-  EXPECT_EQ(c.depth.stereo.sweep.far, 4.0);
-  EXPECT_EQ(c.depth.stereo.sweep.near, 0.5);  // default kept
-  const MapConfig shipped =
-      LoadMapConfig(std::string(NOVELTY_SOURCE_DIR) + "/share/appearance.ini");
-  EXPECT_EQ(shipped.depth.kind, DepthSourceOptions::Kind::kRgbd);
-  EXPECT_EQ(shipped.depth.stereo.sweep.hypotheses, 64);
+  for (const char* bad : {"new_view_distance = 0", "new_view_angle_deg = -1", "near_plane = 0",
+                          "depth_tolerance = -0.1", "planar_block = 2.5", "initial_beta = 0"}) {
+    EXPECT_NE(ErrorOf(std::string("[AppearanceMap]\n") + bad + "\n"), "") << bad;
+  }
   EXPECT_EQ(ErrorOf("[AppearanceMap]\ndepth_source = lidar\n"),
             "test.ini: [AppearanceMap] depth_source = 'lidar': not rgbd or stereo");
   EXPECT_NE(ErrorOf("[AppearanceMap]\nstereo_hypotheses = 2.5\n").find("stereo_hypotheses"),
             std::string::npos);
-  EXPECT_NE(ErrorOf("[AppearanceMap]\nstereo_near = 6\n").find("stereo_near"),
-            std::string::npos);
+  EXPECT_NE(ErrorOf("[AppearanceMap]\nstereo_near = 6\n").find("stereo_near"), std::string::npos);
+  EXPECT_THROW(AppearanceMapConfig::FromFile("/nonexistent.ini"), std::runtime_error);
+}
+
+TEST(AppearanceMapOptions, ReadsTheDepthSource) {
+  const AppearanceMapConfig c =
+      Load("[AppearanceMap]\ndepth_source = stereo\nstereo_hypotheses = 32\nstereo_far = 4 ; m\n");
+  EXPECT_EQ(c.depth.kind, DepthSourceOptions::Kind::kStereo);
+  EXPECT_EQ(c.depth.stereo.sweep.hypotheses, 32);
+  EXPECT_EQ(c.depth.stereo.sweep.far, 4.0);
+  EXPECT_EQ(c.depth.stereo.sweep.near, 0.5);  // default kept
+}
+
+TEST(AppearanceMapOptions, TheDifferencingMapTakesOnlyItsOwnKeys) {
+  const auto c = DifferencingMapConfig::FromConfig(
+      mrpt::config::CConfigFileMemory("[d]\nnew_view_distance = 0.02\n"), "d", "d.ini");
+  EXPECT_EQ(c.map.new_view_distance, 0.02);
+  EXPECT_THROW(DifferencingMapConfig::FromConfig(
+                   mrpt::config::CConfigFileMemory("[d]\nxi = 0.01\n"), "d", "d.ini"),
+               std::runtime_error);
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ arc 0 0 1.6 -80 -100 0.15
 // The frame as an observation from a sensor at its true pose, the robot at the origin.
 inline mrpt::obs::CObservation3DRangeScan Observation(const sim::SimulatedFrame& f) {
   return sensors::MakeRgbdObservation(f.time, f.rgb, f.depth,
-                                      views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180),
+                                      core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180),
                                       f.T_world_cam);
 }
 

@@ -15,7 +15,7 @@ namespace {
 
 // A stereo pair of a textured wall 2 m in front of the rig (left camera the reference, right
 // camera 12 cm to its right), as a CObservationStereoImages.
-const views::PinholeCamera kCam{160, 120, 140.0, 140.0, 79.5, 59.5};
+const core::PinholeCamera kCam{160, 120, 140.0, 140.0, 79.5, 59.5};
 constexpr double kBaseline = 0.12, kWall = 2.0;
 
 mrpt::img::CImage ToImage(const cv::Mat& rgb) {
@@ -55,9 +55,9 @@ DepthSourceOptions Stereo() {
 }
 
 TEST(DepthSource, StereoPairsGiveFramesWithStereoDepth) {
-  ObservedFrame f;
-  ASSERT_TRUE(DecodeWithDepthSource(WallPair(), mrpt::poses::CPose3D(1, 2, 0, 0, 0, 0), Stereo(),
-                                    f));
+  core::Frame f;
+  ASSERT_TRUE(
+      DecodeWithDepthSource(WallPair(), mrpt::poses::CPose3D(1, 2, 0, 0, 0, 0), Stereo(), f));
   ASSERT_EQ(f.depth.size(), cv::Size(kCam.width, kCam.height));
   // Interior pixels (away from the border the right image does not cover): the wall's depth.
   std::vector<float> d;
@@ -65,11 +65,11 @@ TEST(DepthSource, StereoPairsGiveFramesWithStereoDepth) {
     for (int x = 20; x < kCam.width - 10; ++x) d.push_back(f.depth.at<float>(y, x));
   std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
   EXPECT_NEAR(d[d.size() / 2], kWall, 0.03 * kWall);
-  const auto within = std::count_if(d.begin(), d.end(),
-                                    [](float z) { return std::abs(z - kWall) < 0.03 * kWall; });
+  const auto within =
+      std::count_if(d.begin(), d.end(), [](float z) { return std::abs(z - kWall) < 0.03 * kWall; });
   EXPECT_GT(double(within) / d.size(), 0.9);
-  EXPECT_NEAR(f.T_world_cam.translation().x(), 1.0, 1e-9);  // robot pose ⊕ camera pose
-  EXPECT_NEAR(f.T_world_cam.translation().y(), 2.0, 1e-9);
+  EXPECT_NEAR(f.T_world_cam->translation().x(), 1.0, 1e-9);  // robot pose ⊕ camera pose
+  EXPECT_NEAR(f.T_world_cam->translation().y(), 2.0, 1e-9);
   // Without a stereo source the pair is not used.
   EXPECT_FALSE(DecodeWithDepthSource(WallPair(), std::nullopt, DepthSourceOptions{}, f));
 }

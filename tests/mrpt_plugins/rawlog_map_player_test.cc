@@ -12,8 +12,8 @@
 #include "mrpt_plugins/c_differencing_map.h"
 #include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
-#include "tests/sim/scenario/simulated_run.h"
 #include "sim/output/ground_truth_reader.h"
+#include "tests/sim/scenario/simulated_run.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
@@ -73,11 +73,11 @@ TEST(RawlogMapPlayer, MultiMetricMapPathEqualsTheLibraryApi) {
   ASSERT_TRUE(multi.mapByClass<CDifferencingMap>());
 
   appearance::AppearanceMap library(
-      LoadAppearanceMapOptions(ini, "map_CAppearanceMap_00_options", "test"));
+      AppearanceMapConfig::FromConfig(ini, "map_CAppearanceMap_00_options", "test").map);
   sensors::RawlogFrameReader reader((dir / "clip.rawlog").string());
   RawlogMapPlayer player((dir / "clip.rawlog").string(), PoseSource::kGroundTruth, poses);
   int frames = 0, index = 0;
-  for (sensors::Frame f; reader.Next(f);) {
+  for (core::Frame f; reader.Next(f);) {
     ASSERT_TRUE(player.Next(multi, index));
     ASSERT_EQ(index, f.index);
     const cv::Mat expected = library.Insert(f.rgb, f.depth, f.camera, poses.at(f.index)).surprise;

@@ -8,6 +8,7 @@
 #include <opencv2/video/background_segm.hpp>
 #include <sstream>
 
+#include "core/rigid_pose.h"
 #include "maps/appearance/appearance_map.h"
 #include "maps/appearance/differencing_map.h"
 #include "maps/views/view_selection.h"
@@ -46,7 +47,7 @@ std::vector<Frame> Simulate(const std::string& camera_line) {
   return sim::SimulateFrames(BenchScenario(camera_line));
 }
 
-const views::PinholeCamera kCam = views::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180);
+const core::PinholeCamera kCam = core::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180);
 
 void BM_AppearanceMapMovingCamera(benchmark::State& state) {
   static const std::vector<Frame> frames =
@@ -86,7 +87,7 @@ SevenViewMap MakeSevenViewMap() {
   sim::RayScene scene;
   world.AddToScene(scene);
   scene.Commit();
-  const Eigen::Isometry3d virtual_pose = views::LookAt({1.6, -0.6, 1.3}, {0, 0, 0.75});
+  const Eigen::Isometry3d virtual_pose = core::LookAt({1.6, -0.6, 1.3}, {0, 0, 0.75});
   auto render = [&](const Eigen::Isometry3d& pose) {
     const sim::RenderedFrame r = sim::Render(scene, world.CurrentLighting(), kCam, pose, s.render);
     Frame f;
@@ -98,10 +99,9 @@ SevenViewMap MakeSevenViewMap() {
   AppearanceMap builder;
   for (const Eigen::Vector2d& p : views::ViewSelectionOptions{}.ray_points) {
     const Eigen::Vector3d ray =
-        (virtual_pose.linear() * kCam.RayCam(p.x() * kCam.width, p.y() * kCam.height))
-            .normalized();
+        (virtual_pose.linear() * kCam.RayCam(p.x() * kCam.width, p.y() * kCam.height)).normalized();
     const Eigen::Vector3d eye = virtual_pose.translation() + 0.25 * ray;
-    const Frame f = render(views::LookAt(eye, eye + ray));
+    const Frame f = render(core::LookAt(eye, eye + ray));
     builder.Insert(f.rgb, f.depth, kCam, f.T_world_cam);
   }
   SevenViewMap m;

@@ -7,8 +7,8 @@
 
 #include <sstream>
 
-#include "maps/appearance/differencing_map.h"
 #include "eval/attentional_selectivity.h"
+#include "maps/appearance/differencing_map.h"
 #include "maps/stats/normal_gamma_kl.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/simulate_frames.h"
@@ -89,7 +89,7 @@ double MedianValid(const cv::Mat& m) {
 }
 
 TEST(AppearanceMap, LearnsTheSceneAndIsSurprisedByTheNewCup) {
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
   AppearanceMap map;
   DifferencingMap baseline;
   int added_first = 0, added_later = 0, cup_frames = 0;
@@ -133,7 +133,7 @@ struct Selectivities {
   int frames = 0;
 };
 
-Selectivities MeasureChangedRegion(const std::vector<Frame>& clip, const views::PinholeCamera& cam,
+Selectivities MeasureChangedRegion(const std::vector<Frame>& clip, const core::PinholeCamera& cam,
                                    const AppearanceMapOptions& options, double after,
                                    int mask_value, double before = 1e9) {
   AppearanceMap map(options);
@@ -167,7 +167,7 @@ std::pair<double, double> CupSelectivity(double reduction) {
   options.views.new_view_distance *= reduction;
   std::printf("reduction %.0f: ", reduction);
   const Selectivities s = MeasureChangedRegion(
-      Clip(), views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180), options, 9.5, 255);
+      Clip(), core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180), options, 9.5, 255);
   return {s.as_surprise, s.as_difference};
 }
 
@@ -196,7 +196,7 @@ TEST(AppearanceMap, DISABLED_HalfTheViewsHurtSurpriseLessThanDifferencing) {
 Selectivities GlassSelectivity() {
   std::printf("glass: ");
   return MeasureChangedRegion(
-      GlassClip(), views::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180), {}, 9.5, 255);
+      GlassClip(), core::PinholeCamera::FromFov(320, 240, 60.0 * M_PI / 180), {}, 9.5, 255);
 }
 
 // Thesis fig. 4.9: for the glass, Bayesian surprise gives a higher PAS than differencing, whose
@@ -237,7 +237,7 @@ const std::vector<Frame>& RemovalClip() {
 // Measured: AS 0.89 dB against 3.63 dB, PAS 1.40 against 4.06 dB; the cup's arrival, a pass
 // earlier, gave surprise an AS of 4.53 dB (differencing 5.01 dB).
 TEST(AppearanceMap, RemovedCupIsLessSurprisingThanDifferencingMakesIt) {
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
   std::printf("cup added: ");
   const Selectivities added = MeasureChangedRegion(RemovalClip(), cam, {}, 3.9, 255, 8.0);
   std::printf("cup removed: ");
@@ -250,7 +250,7 @@ TEST(AppearanceMap, RemovedCupIsLessSurprisingThanDifferencingMakesIt) {
 }
 
 TEST(AppearanceMap, HalfPrecisionStorageChangesSurpriseLittle) {
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
   AppearanceMapOptions full;
   full.half_precision = false;
   AppearanceMap half_map, full_map(full);
@@ -276,7 +276,7 @@ TEST(AppearanceMap, HalfPrecisionStorageChangesSurpriseLittle) {
 // level). The step's surprise is finite, the same within 1 % for half and float storage, and
 // equals the double-precision recursion of one pixel (Y steps by one level; Cb, Cr stay 128).
 TEST(AppearanceMap, ConstantInputThenOneLevelGivesFiniteSurprise) {
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(64, 48, 1.0);
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(64, 48, 1.0);
   const cv::Mat depth(48, 64, CV_32FC1, cv::Scalar(2.0f));
   const Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   AppearanceMapOptions full;
@@ -320,7 +320,7 @@ TEST(AppearanceMap, ConstantInputThenOneLevelGivesFiniteSurprise) {
 // KL ≥ 0 (Gibbs' inequality): no pixel of any frame may have negative surprise — through view
 // creation, replacement, blended priors of views of different ages and the cup's arrival.
 TEST(AppearanceMap, SurpriseIsNeverNegative) {
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
   AppearanceMap map;
   double lowest = 0.0;
   int pixels = 0;
@@ -338,7 +338,7 @@ TEST(AppearanceMap, SurpriseIsNeverNegative) {
 }
 
 TEST(AppearanceMap, BadFramesAreRejectedAndLeaveTheMapUnchanged) {
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 1.0);
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(160, 120, 1.0);
   AppearanceMap map;
   const Frame& f = Clip()[0];
   map.Insert(f.rgb, f.depth, cam, f.T_world_cam);

@@ -7,7 +7,7 @@
 namespace novelty::appearance {
 namespace {
 
-const views::PinholeCamera kCamera = views::PinholeCamera::FromFov(32, 24, 1.0);
+const core::PinholeCamera kCamera = core::PinholeCamera::FromFov(32, 24, 1.0);
 
 // A wall 2 m in front of the camera; the payload plane holds (1, 2, 3) in half floats.
 struct Frame {
@@ -15,6 +15,13 @@ struct Frame {
   cv::Mat payload;
   Frame() { cv::Mat(24, 32, CV_32FC3, cv::Scalar(1, 2, 3)).convertTo(payload, CV_16F); }
 };
+
+cv::Mat Depth(float metres) {
+  return cv::Mat(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(metres));
+}
+cv::Mat Plane(float value) {
+  return cv::Mat(kCamera.height, kCamera.width, CV_32FC3, cv::Scalar::all(value));
+}
 
 Eigen::Isometry3d At(double x, double yaw_deg = 0.0) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -27,7 +34,7 @@ TEST(ViewBasedMap, AStaticCameraReadsItsViewsOwnPlanes) {
   ViewBasedMap map;
   const Frame f;
   map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {});
-  const ViewBasedMap::Prediction p = map.Predict(kCamera, At(0), {{"p", 3}});
+  const Prediction p = map.Predict(kCamera, At(0), {{"p", 3}});
   ASSERT_EQ(p.selected, std::vector<int>{0});
   EXPECT_EQ(p.value[0].data, map.store().view(0).planes.at("p").data) << "shared, not copied";
   EXPECT_EQ(p.value[0].type(), CV_16FC3);
@@ -40,9 +47,9 @@ TEST(ViewBasedMap, APredictionNeverWritesIntoAViewsPlanes) {
   Frame f;
   cv::Mat(24, 32, CV_32FC3, cv::Scalar(1, 2, 3)).copyTo(f.payload);  // the type of a prediction
   map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {});
-  const ViewBasedMap::Prediction shared = map.Predict(kCamera, At(0), {{"p", 3}});
+  const Prediction shared = map.Predict(kCamera, At(0), {{"p", 3}});
   ASSERT_EQ(shared.value[0].data, map.store().view(0).planes.at("p").data);
-  const ViewBasedMap::Prediction p = map.Predict(kCamera, At(0, 180), {{"p", 3}});  // facing away
+  const Prediction p = map.Predict(kCamera, At(0, 180), {{"p", 3}});  // facing away
   EXPECT_TRUE(p.selected.empty());
   EXPECT_TRUE(std::isnan(p.value[0].at<cv::Vec3f>(5, 5)[0]));
   EXPECT_EQ(map.store().view(0).planes.at("p").at<cv::Vec3f>(5, 5), cv::Vec3f(1, 2, 3))
@@ -66,14 +73,14 @@ TEST(ViewBasedMap, ADeferredPredictionBlendedRowsAtATimeEqualsPredict) {
     map.Update(kCamera, At(x, yaw), f.depth, {{"p", f.payload}, {"q", tau}}, {});
   }
   const std::vector<std::pair<std::string, int>> names = {{"p", 3}, {"q", 1}};
-  const ViewBasedMap::Prediction whole = map.Predict(kCamera, At(0.0), names);
+  const Prediction whole = map.Predict(kCamera, At(0.0), names);
   ASSERT_EQ(whole.selected.size(), 2u);
   const std::vector<cv::Mat> expected = {whole.value[0].clone(), whole.value[1].clone()};
   const cv::Mat expected_valid = whole.valid.clone();
   EXPECT_GT(cv::countNonZero(expected_valid), 32 * 20);
-  const ViewBasedMap::Prediction deferred = map.PredictDeferred(kCamera, At(0.0), names);
+  const Prediction deferred = map.PredictDeferred(kCamera, At(0.0), names);
   for (const cv::Range rows : {cv::Range(16, 24), cv::Range(0, 5), cv::Range(5, 16)}) {
-    map.BlendRows(rows);
+    deferred.BlendRows(rows);
   }
   for (std::size_t k = 0; k < names.size(); ++k) {
     // Bit for bit, NaN (uncovered) where the whole prediction has NaN.
@@ -86,10 +93,36 @@ TEST(ViewBasedMap, ADeferredPredictionBlendedRowsAtATimeEqualsPredict) {
   }
   EXPECT_EQ(cv::norm(deferred.valid, expected_valid, cv::NORM_INF), 0.0);
   // A static camera's prediction comes complete: nothing to blend.
-  const ViewBasedMap::Prediction at_view = map.PredictDeferred(kCamera, At(0.05, 15), names);
+  const Prediction at_view = map.PredictDeferred(kCamera, At(0.05, 15), names);
   EXPECT_EQ(at_view.value[1].data, map.store().view(1).planes.at("q").data);
-  map.BlendRows(cv::Range(0, 24));  // a no-op
+  EXPECT_TRUE(at_view.complete());
+  at_view.BlendRows(cv::Range(0, 24));  // a no-op
   EXPECT_EQ(cv::countNonZero(at_view.valid), 32 * 24);
+  EXPECT_FALSE(deferred.complete());
+  EXPECT_TRUE(whole.complete());
+}
+
+// The prior is a value: a deferred prediction blended after the map has moved on (a newer
+// prediction made, the views it used replaced) gives what it would have given at once.
+TEST(ViewBasedMap, AHeldPredictionOutlivesTheMapsNextFrame) {
+  ViewBasedMap map;
+  const std::vector<std::pair<std::string, int>> names = {{"p", 3}};
+  map.Update(kCamera, At(0.0), Depth(1.0), {{"p", Plane(1.0f)}}, {});
+  map.Update(kCamera, At(0.05, 15), Depth(1.0), {{"p", Plane(2.0f)}}, {});
+  const cv::Mat expected = map.Predict(kCamera, At(0.02), names).value[0].clone();
+  const Prediction held = map.PredictDeferred(kCamera, At(0.02), names);
+  ASSERT_FALSE(held.complete());
+  // The map moves on: a prediction elsewhere, then both views replaced by other values.
+  const Prediction next = map.PredictDeferred(kCamera, At(0.04), names);
+  next.BlendRows(cv::Range(0, kCamera.height));
+  map.Update(kCamera, At(0.0), Depth(1.0), {{"p", Plane(7.0f)}}, {0});
+  map.Update(kCamera, At(0.05, 15), Depth(1.0), {{"p", Plane(9.0f)}}, {1});
+  held.BlendRows(cv::Range(0, kCamera.height));
+  cv::Mat a = held.value[0].clone(), b = expected.clone();
+  cv::patchNaNs(a, -1.0);
+  cv::patchNaNs(b, -1.0);
+  EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
+  EXPECT_NE(held.value[0].data, next.value[0].data);
 }
 
 TEST(ViewBasedMap, AViewKeepsThePlanGivenWithItUnlessMadeForOtherOptions) {
@@ -105,7 +138,7 @@ TEST(ViewBasedMap, AViewKeepsThePlanGivenWithItUnlessMadeForOtherOptions) {
     plan_options.planar_block = block;
     map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {},
                views::MeshPlanFor(no_surface, plan_options));
-    const ViewBasedMap::Prediction p = map.Predict(kCamera, At(0.02), {{"p", 3}});  // warped
+    const Prediction p = map.Predict(kCamera, At(0.02), {{"p", 3}});  // warped
     ASSERT_EQ(p.selected, std::vector<int>{0});
     EXPECT_TRUE(p.warped);
     if (block == map_warp.planar_block) {

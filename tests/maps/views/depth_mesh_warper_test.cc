@@ -6,16 +6,17 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/rigid_pose.h"
 #include "maps/views/planar_blocks.h"
 
 namespace novelty::views {
 namespace {
 
-const PinholeCamera kCam = PinholeCamera::FromFov(160, 120, 1.0);
+const core::PinholeCamera kCam = core::PinholeCamera::FromFov(160, 120, 1.0);
 
 // Camera at the origin looking along world +x (so world x is depth).
 Eigen::Isometry3d Forward(double y = 0.0, double z = 0.0) {
-  return LookAt({0, y, z}, {1, y, z});
+  return core::LookAt({0, y, z}, {1, y, z});
 }
 
 cv::Mat Constant(float depth) {
@@ -80,7 +81,7 @@ TEST(DepthMeshWarper, ViewAnglesMatchTheGeometry) {
 
 TEST(DepthMeshWarper, SourceDepthOnlyWhenAsked) {
   // Virtual camera 0.5 m nearer a plane at 2 m: depth 1.5 there, 2 in the source view.
-  const Eigen::Isometry3d nearer = LookAt({0.5, 0, 0}, {1.5, 0, 0});
+  const Eigen::Isometry3d nearer = core::LookAt({0.5, 0, 0}, {1.5, 0, 0});
   EXPECT_TRUE(WarpView(kCam, Forward(), Constant(2.0f), kCam, nearer).source_depth.empty());
   WarpOptions o;
   o.compute_source_depth = true;
@@ -124,7 +125,7 @@ TEST(DepthMeshWarper, DepthDiscontinuitiesAreNotBridged) {
 
 TEST(DepthMeshWarper, NothingInFrontGivesAnAllInvalidField) {
   const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam,
-                               LookAt({5, 0, 0}, {6, 0, 0}));  // the plane is behind it
+                               core::LookAt({5, 0, 0}, {6, 0, 0}));  // the plane is behind it
   EXPECT_EQ(w.covered, 0);
   EXPECT_EQ(cv::countNonZero(w.depth), 0);
 }
@@ -136,7 +137,7 @@ TEST(DepthMeshWarper, VectorisedAndScalarRasterisersAgree) {
     for (int x = 0; x < depth.cols; ++x)
       depth.at<float>(y, x) =
           2.0f + 0.2f * std::sin(x * 0.1f) * std::cos(y * 0.07f) + (x > 100 ? 0.8f : 0.0f);
-  const Eigen::Isometry3d virt = LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0});
+  const Eigen::Isometry3d virt = core::LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0});
   WarpOptions scalar;
   scalar.vectorised = false;
   const WarpField a = WarpView(kCam, Forward(), depth, kCam, virt);
@@ -191,7 +192,7 @@ TEST(DepthMeshWarper, PlanarBlocksGiveTheFieldOfTheSmallQuads) {
           1.0f / ((box.contains({x, y}) ? 0.7f : 0.4f) + 0.0008f * x + 0.0005f * y);
   ASSERT_GT(cv::countNonZero(FindPlanarBlocks(depth, 8, 0.002)), 200);  // of 19 × 14
   const BlocksAgainstQuads c =
-      CompareBlocksWithQuads(depth, LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0}));
+      CompareBlocksWithQuads(depth, core::LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0}));
   EXPECT_GT(c.blocks.covered, kCam.width * kCam.height / 2);
   EXPECT_NEAR(c.blocks.covered, c.quads.covered, 3);  // no crack along the blocks' edges
   // Within a small quad the quad path interpolates source coordinates linearly on screen, the
@@ -210,7 +211,7 @@ TEST(DepthMeshWarper, MeshPlansKeptByTheCallerAreUsedWhereTheyFit) {
   for (int y = 0; y < depth.rows; ++y)
     for (int x = 0; x < depth.cols; ++x)
       depth.at<float>(y, x) = 1.0f / (0.4f + 0.0008f * x + 0.0005f * y);
-  const Eigen::Isometry3d src = Forward(), virt = LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0});
+  const Eigen::Isometry3d src = Forward(), virt = core::LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0});
   WarpOptions blocks_8;
   blocks_8.planar_block = 8;
   const MeshPlan found = MeshPlanFor(depth, blocks_8);
@@ -250,7 +251,7 @@ TEST(DepthMeshWarper, RunsReachingBehindTheCameraAreDrawnQuadByQuad) {
   ASSERT_EQ(cv::countNonZero(FindPlanarBlocks(depth, 8, 0.002)),
             PlanarGrid(kCam.width, kCam.height, 8).area());
   const BlocksAgainstQuads c =
-      CompareBlocksWithQuads(depth, LookAt({2.0, 0.0, 0.0}, {2.3, 1.5, 0.0}));
+      CompareBlocksWithQuads(depth, core::LookAt({2.0, 0.0, 0.0}, {2.3, 1.5, 0.0}));
   EXPECT_GT(c.quads.covered, kCam.width * kCam.height / 10);
   EXPECT_NEAR(c.blocks.covered, c.quads.covered, 3);
   EXPECT_LT(c.worst_px, 0.01);
@@ -265,7 +266,7 @@ TEST(DepthMeshWarper, AReusedWarperGivesFreshFieldsWithOrWithoutDepth) {
     for (int x = 0; x < wavy.cols; ++x)
       wavy.at<float>(y, x) = 2.0f + 0.3f * std::sin(x * 0.13f) * std::cos(y * 0.05f);
   const cv::Mat flat = Constant(1.5f);
-  const Eigen::Isometry3d virt = LookAt({0.05, -0.1, 0.05}, {1.0, 0.0, 0.1});
+  const Eigen::Isometry3d virt = core::LookAt({0.05, -0.1, 0.05}, {1.0, 0.0, 0.1});
   const WarpField fresh_wavy = WarpView(kCam, Forward(), wavy, kCam, virt);
   const WarpField fresh_flat = WarpView(kCam, Forward(0.2), flat, kCam, virt);
   DepthMeshWarper reused;
@@ -306,9 +307,9 @@ TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
       for (int x = 0; x < d.cols; ++x)
         d.at<float>(y, x) = 2.0f + 0.1f * k + 0.2f * std::sin(x * 0.1f + k) * std::cos(y * 0.07f);
     depths.push_back(d);
-    poses.push_back(LookAt({0.02 * k, 0.05 * k, 0.0}, {1.0, 0.1 * k, 0.0}));
+    poses.push_back(core::LookAt({0.02 * k, 0.05 * k, 0.0}, {1.0, 0.1 * k, 0.0}));
   }
-  const Eigen::Isometry3d virt = LookAt({0.05, 0.08, 0.02}, {1.0, 0.05, 0.0});
+  const Eigen::Isometry3d virt = core::LookAt({0.05, 0.08, 0.02}, {1.0, 0.05, 0.0});
   WarpOptions two;
   two.threads = 2;
   two.compute_source_depth = true;

@@ -9,7 +9,7 @@ namespace {
 
 ReferenceView View() {
   ReferenceView v;
-  v.camera = PinholeCamera::FromFov(32, 24, 1.0);
+  v.camera = core::PinholeCamera::FromFov(32, 24, 1.0);
   v.depth = cv::Mat(24, 32, CV_32FC1, cv::Scalar(1));
   v.planes["rgb"] = cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(0));
   v.planes["tau"] = cv::Mat(24, 32, CV_16FC3);
@@ -38,6 +38,26 @@ TEST(ReferenceViewStore, StoresChecksAndCountsBytes) {
   EXPECT_THROW(store.Add(wrong_depth), std::invalid_argument);
   EXPECT_THROW(store.Replace(5, View()), std::out_of_range);
   EXPECT_EQ(store.size(), 2);
+}
+
+TEST(ReferenceViewStore, AFrameWithAPoseBecomesAView) {
+  core::Frame f;
+  f.index = 7;
+  f.camera = core::PinholeCamera::FromFov(32, 24, 1.0);
+  f.depth = cv::Mat(24, 32, CV_32FC1, cv::Scalar(2));
+  f.rgb = cv::Mat(24, 32, CV_8UC3, cv::Scalar(1, 2, 3));
+  try {
+    ReferenceViewOf(f);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "frame 7: no pose, cannot become a reference view");
+  }
+  f.T_world_cam = Eigen::Isometry3d(Eigen::Translation3d(1, 2, 3));
+  const ReferenceView v = ReferenceViewOf(f, "image");
+  EXPECT_NO_THROW(v.Check("view"));
+  EXPECT_EQ(v.T_world_cam.translation(), Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(v.planes.at("image").data, f.rgb.data);  // shared, not copied
+  EXPECT_EQ(v.depth.data, f.depth.data);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "maps/views/view_selection.h"
+#include "core/rigid_pose.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +9,7 @@ namespace novelty::views {
 namespace {
 
 Eigen::Isometry3d Looking(const Eigen::Vector3d& eye, const Eigen::Vector3d& dir) {
-  return LookAt(eye, eye + dir);
+  return core::LookAt(eye, eye + dir);
 }
 
 TEST(ViewSelection, CostIsDistanceFromTheRayOverCosine) {
@@ -22,7 +23,7 @@ TEST(ViewSelection, CostIsDistanceFromTheRayOverCosine) {
 }
 
 TEST(ViewSelection, PicksTheViewsNearTheRaysOnceEachAndNeverOnesFacingAway) {
-  const PinholeCamera cam = PinholeCamera::FromFov(320, 240, 1.0);
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(320, 240, 1.0);
   const Eigen::Isometry3d virt = Looking({0, 0, 1}, {1, 0, 0});
   std::vector<Eigen::Isometry3d> poses;
   poses.push_back(Looking({-0.05, 0.0, 1.0}, {1, 0, 0}));    // 0: right behind, same direction

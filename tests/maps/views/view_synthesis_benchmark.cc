@@ -3,6 +3,7 @@
 // The reference views are ray-traced by the simulator around a table scene.
 #include <benchmark/benchmark.h>
 
+#include "core/rigid_pose.h"
 #include "maps/views/depth_mesh_warper.h"
 #include "maps/views/view_blender.h"
 #include "maps/views/view_selection.h"
@@ -12,7 +13,7 @@ namespace novelty {
 namespace {
 
 struct Views {
-  views::PinholeCamera camera = views::PinholeCamera::FromFov(320, 240, 1.0);
+  core::PinholeCamera camera = core::PinholeCamera::FromFov(320, 240, 1.0);
   std::vector<Eigen::Isometry3d> poses;
   std::vector<cv::Mat> depths, images;
   std::vector<views::MeshPlan> plans;  // as a map keeps them per view
@@ -34,13 +35,13 @@ Views MakeViews() {
   for (int i = 0; i < 7; ++i) {
     const double a = -0.6 + 0.2 * i;
     const Eigen::Vector3d eye(2.0 * std::cos(a), 2.0 * std::sin(a), 1.2);
-    v.poses.push_back(views::LookAt(eye, {0, 0, 0.2}));
+    v.poses.push_back(core::LookAt(eye, {0, 0, 0.2}));
     const sim::RenderedFrame f = sim::Render(scene, light, v.camera, v.poses.back());
     v.depths.push_back(f.depth);
     v.plans.push_back(views::MeshPlanFor(f.depth, views::WarpOptions{}));
     v.images.push_back(f.rgb);
   }
-  v.virtual_pose = views::LookAt({2.0 * std::cos(0.05), 2.0 * std::sin(0.05), 1.25}, {0, 0, 0.2});
+  v.virtual_pose = core::LookAt({2.0 * std::cos(0.05), 2.0 * std::sin(0.05), 1.25}, {0, 0, 0.2});
   return v;
 }
 

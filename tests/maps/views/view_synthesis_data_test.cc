@@ -18,7 +18,7 @@ namespace novelty::views {
 namespace {
 
 // What novelty-synth runs, with its defaults: PSNR over the covered pixels, and the coverage.
-SynthesisResult Synthesise(const std::vector<ReferenceView>& refs, const PinholeCamera& cam,
+SynthesisResult Synthesise(const std::vector<ReferenceView>& refs, const core::PinholeCamera& cam,
                            const Eigen::Isometry3d& pose, const SynthesisOptions& o = {}) {
   std::vector<const ReferenceView*> ptrs;
   for (const ReferenceView& r : refs) ptrs.push_back(&r);
@@ -45,17 +45,17 @@ class IclNuim : public ::testing::Test {
   std::pair<double, double> PsnrAndCoverage(const std::vector<int>& sources,
                                             const SynthesisOptions& o = {}) {
     std::vector<ReferenceView> refs;
-    for (int s : sources) refs.push_back(reader_->ReadView(s));
-    const SynthesisResult r = Synthesise(refs, cam_, target_.T_world_cam, o);
+    for (int s : sources) refs.push_back(views::ReferenceViewOf(reader_->Read(s)));
+    const SynthesisResult r = Synthesise(refs, cam_, *target_.T_world_cam, o);
     const double psnr = eval::Psnr(r.rgb, target_.rgb, r.valid);
     std::printf("frame 2 from %zu source(s), first %d: PSNR %.2f dB at coverage %.4f\n",
                 sources.size(), sources[0], psnr, r.coverage);
     return {psnr, r.coverage};
   }
   std::string dir_;
-  PinholeCamera cam_;
+  core::PinholeCamera cam_;
   std::unique_ptr<sensors::RgbdFolderReader> reader_;
-  sensors::RgbdFrame target_;
+  core::Frame target_;
 };
 
 // Independent figures (each source's depth reprojected into frame 2, then a 5×5 closing): frame 1

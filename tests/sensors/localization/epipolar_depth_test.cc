@@ -15,17 +15,19 @@ namespace {
 // plane at depth z: the other image is the reference shifted left by the disparity f·b/z.
 StereoPair PlanePair(const cv::Mat& texture, double z, double baseline = 0.12) {
   StereoPair pair;
-  pair.reference_camera = pair.other_camera = views::PinholeCamera::FromFov(320, 240, M_PI / 3);
+  pair.reference_camera = pair.other_camera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
   pair.reference_from_other.translation() = Eigen::Vector3d(baseline, 0, 0);
   const double disparity = pair.reference_camera.fx * baseline / z;
   const cv::Mat shift = (cv::Mat_<double>(2, 3) << 1, 0, disparity, 0, 1, 0);
   pair.reference = texture;
-  cv::warpAffine(texture, pair.other, shift, texture.size(),
-                 cv::INTER_CUBIC | cv::WARP_INVERSE_MAP, cv::BORDER_REFLECT);
+  cv::warpAffine(texture, pair.other, shift, texture.size(), cv::INTER_CUBIC | cv::WARP_INVERSE_MAP,
+                 cv::BORDER_REFLECT);
   return pair;
 }
 
-cv::Mat Texture(int seed = 7) { return BlurredNoise({320, 240}, CV_32F, seed, 1.5, 20, 235); }
+cv::Mat Texture(int seed = 7) {
+  return BlurredNoise({320, 240}, CV_32F, seed, 1.5, 20, 235);
+}
 
 TEST(EpipolarDepths, RecoverTheDepthOfATexturedPlaneToSubPixelDisparity) {
   const double z = 1.5;
@@ -78,9 +80,8 @@ double ShareOffAtOcclusions(const EpipolarDepthOptions& options) {
   const auto points = EpipolarDepths(pair, pair.reference, pair.other, options);
   int off = 0;
   for (const EpipolarPoint& p : points) {
-    const double truth = box.contains(cv::Point(int(p.px.x + 0.5f), int(p.px.y + 0.5f)))
-                             ? f * 0.12 / shift
-                             : 3.0;
+    const double truth =
+        box.contains(cv::Point(int(p.px.x + 0.5f), int(p.px.y + 0.5f))) ? f * 0.12 / shift : 3.0;
     off += std::abs(p.depth / truth - 1) > 0.05;
   }
   return double(off) / points.size();

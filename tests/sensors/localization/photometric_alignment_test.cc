@@ -12,14 +12,18 @@ namespace {
 
 constexpr double kPlaneDepth = 1.5;
 
-views::PinholeCamera Camera() { return views::PinholeCamera::FromFov(320, 240, M_PI / 3); }
+core::PinholeCamera Camera() {
+  return core::PinholeCamera::FromFov(320, 240, M_PI / 3);
+}
 
-cv::Mat Texture() { return BlurredNoise({320, 240}, CV_32F, 11, 2.0, 20, 235); }
+cv::Mat Texture() {
+  return BlurredNoise({320, 240}, CV_32F, 11, 2.0, 20, 235);
+}
 
 // What a camera at T_kf_cur sees of the keyframe's fronto-parallel plane z = kPlaneDepth
 // textured with the keyframe image.
 cv::Mat SeenFrom(const cv::Mat& keyframe, const Eigen::Isometry3d& kf_from_cur) {
-  const views::PinholeCamera c = Camera();
+  const core::PinholeCamera c = Camera();
   cv::Mat map_x(keyframe.size(), CV_32F), map_y(keyframe.size(), CV_32F);
   for (int v = 0; v < keyframe.rows; ++v)
     for (int u = 0; u < keyframe.cols; ++u) {

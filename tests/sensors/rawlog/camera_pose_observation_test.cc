@@ -19,7 +19,7 @@ TEST(CameraPoseObservation, FrameReaderRecoversTheCameraPose) {
   const fs::path dir = fs::temp_directory_path() / "novelty_camera_pose_observation";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const views::PinholeCamera camera = views::PinholeCamera::FromFov(32, 24, 1.0);
+  const core::PinholeCamera camera = core::PinholeCamera::FromFov(32, 24, 1.0);
   const cv::Mat rgb(24, 32, CV_8UC3, cv::Scalar(10, 20, 30));
   const cv::Mat depth(24, 32, CV_32F, cv::Scalar(1.5f));
   Eigen::Isometry3d mount = Eigen::Isometry3d::Identity();
@@ -34,13 +34,13 @@ TEST(CameraPoseObservation, FrameReaderRecoversTheCameraPose) {
     out.Close();
   }
   RawlogFrameReader reader((dir / "poses.rawlog").string());
-  Frame f;
+  core::Frame f;
   ASSERT_TRUE(reader.Next(f));
-  ASSERT_TRUE(f.pose);
+  ASSERT_TRUE(f.T_world_cam);
   EXPECT_EQ(f.pose_source, "POSE_TRACKER");
-  EXPECT_LT((f.pose->matrix() - SomeCameraPose().matrix()).norm(), 1e-9);
+  EXPECT_LT((f.T_world_cam->matrix() - SomeCameraPose().matrix()).norm(), 1e-9);
   ASSERT_TRUE(reader.Next(f));
-  EXPECT_FALSE(f.pose);
+  EXPECT_FALSE(f.T_world_cam);
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ TEST(RawlogFrameReader, ReadsEveryRgbdFrameWithDepthAndIntrinsics) {
   RawlogFrameReader reader((dir / "tiny.rawlog").string());
   const sim::GroundTruthReader truth_reader((dir / "groundtruth").string());
   int n = 0;
-  for (Frame f; reader.Next(f);) {
+  for (core::Frame f; reader.Next(f);) {
     ++n;
     EXPECT_EQ(f.index, n);
     EXPECT_EQ(f.label, "RGBD");
@@ -64,7 +64,7 @@ TEST(RawlogFrameReader, MissingImagesAreSkippedAndCountedNotFatal) {
   fs::remove(dir / "tiny_Images" / "000003.png");
   RawlogFrameReader reader((dir / "tiny.rawlog").string());
   int n = 0;
-  for (Frame f; reader.Next(f);) ++n;
+  for (core::Frame f; reader.Next(f);) ++n;
   EXPECT_EQ(n, 5);
   ASSERT_EQ(reader.skipped(), 1);
   EXPECT_NE(reader.skip_reasons()[0].find("RGB-D frame 3"), std::string::npos)

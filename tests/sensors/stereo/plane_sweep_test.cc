@@ -26,7 +26,7 @@ TEST(PlaneSweep, LabelsAreEvenInInverseDepth) {
 // its image is the reference shifted by f·B/Z. Interior pixels' costs are lowest at label 20 — or
 // a neighbour: labels are 0.47 px apart here, finer than bilinear resampling can separate.
 TEST(PlaneSweep, CostIsLowestAtTheTruePlane) {
-  const views::PinholeCamera camera = views::PinholeCamera::FromFov(160, 120, M_PI / 3);
+  const core::PinholeCamera camera = core::PinholeCamera::FromFov(160, 120, M_PI / 3);
   PlaneSweepOptions o;
   const double depth = DepthOfLabel(o, 20);
   const cv::Mat ref = Texture(camera.width, camera.height, 3);
@@ -54,7 +54,7 @@ TEST(PlaneSweep, CostIsLowestAtTheTruePlane) {
 }
 
 TEST(PlaneSweep, RefusesRigsWithImagesOfDifferentSizes) {
-  const views::PinholeCamera camera = views::PinholeCamera::FromFov(160, 120, M_PI / 3);
+  const core::PinholeCamera camera = core::PinholeCamera::FromFov(160, 120, M_PI / 3);
   const cv::Mat ref = Texture(160, 120, 4), small = Texture(80, 60, 5);
   try {
     PlaneSweep(ref, camera, {{small, camera, Eigen::Isometry3d::Identity()}}, {});

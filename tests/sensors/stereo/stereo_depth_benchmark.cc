@@ -11,7 +11,7 @@ namespace {
 
 struct Rig {
   cv::Mat center;
-  views::PinholeCamera camera = views::PinholeCamera::FromFov(320, 240, M_PI / 3);
+  core::PinholeCamera camera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
   std::vector<SweepView> others;
 };
 

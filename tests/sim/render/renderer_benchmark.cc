@@ -3,6 +3,7 @@
 // Args: soft-shadow samples of the first lamp (1 = hard shadows, 16 = soft area lamp).
 #include <benchmark/benchmark.h>
 
+#include "core/rigid_pose.h"
 #include "sim/render/renderer.h"
 
 namespace novelty::sim {
@@ -53,8 +54,8 @@ void BM_RenderTableFrame(benchmark::State& state) {
   lighting.points.push_back({{3.5, -1.5, 2.0}, {1.0f, 1.0f, 1.3f}, 0.0});
   RenderOptions options;
   options.soft_shadow_samples = static_cast<int>(state.range(0));
-  const views::PinholeCamera camera = views::PinholeCamera::FromFov(320, 240, 1.0);
-  const Eigen::Isometry3d pose = views::LookAt({1.2, 0.3, 1.4}, {2.5, 0, 0.75});
+  const core::PinholeCamera camera = core::PinholeCamera::FromFov(320, 240, 1.0);
+  const Eigen::Isometry3d pose = core::LookAt({1.2, 0.3, 1.4}, {2.5, 0, 0.75});
   for (auto _ : state) {
     options.frame++;
     const RenderedFrame f = Render(scene, lighting, camera, pose, options);

@@ -1,4 +1,5 @@
 #include "sim/render/renderer.h"
+#include "core/rigid_pose.h"
 
 #include <gtest/gtest.h>
 
@@ -36,8 +37,8 @@ TEST(Renderer, DepthOfAPlaneMatchesTheClosedForm) {
   RayScene scene;
   AddFloor(scene);
   scene.Commit();
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 1.0);
-  const Eigen::Isometry3d pose = views::LookAt({0, 0, 1.5}, {2, 0.3, 0});
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(160, 120, 1.0);
+  const Eigen::Isometry3d pose = core::LookAt({0, 0, 1.5}, {2, 0.3, 0});
   const RenderedFrame f = Render(scene, Lighting{}, cam, pose, Exact());
   int checked = 0;
   for (int v = 0; v < cam.height; ++v) {
@@ -60,8 +61,8 @@ TEST(Renderer, SphereSilhouetteMatchesTheClosedForm) {
   const Eigen::Vector3d c(3, 0.2, 1.0);
   scene.AddObject(MakeSphere(r, 96, 48), At(c.x(), c.y(), c.z()), Matte(0.5f), 4);
   scene.Commit();
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(200, 150, 0.6);
-  const Eigen::Isometry3d pose = views::LookAt({0, 0, 1.0}, {3, 0, 1.0});
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(200, 150, 0.6);
+  const Eigen::Isometry3d pose = core::LookAt({0, 0, 1.0}, {3, 0, 1.0});
   const RenderedFrame f = Render(scene, Lighting{}, cam, pose, Exact());
   // The tessellated sphere lies between r·cos²(π/48) and r; outside that band the answer is sure.
   const double inner = r * std::pow(std::cos(M_PI / 48), 2);
@@ -94,8 +95,8 @@ TEST(Renderer, PixelSamplesAverageOverThePixelArea) {
   RayScene scene;
   scene.AddObject(MakeSphere(0.5, 96, 48), At(3, 0.2, 1.0), Matte(0.0f), 4);
   scene.Commit();
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(200, 150, 0.6);
-  const Eigen::Isometry3d pose = views::LookAt({0, 0, 1.0}, {3, 0, 1.0});
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(200, 150, 0.6);
+  const Eigen::Isometry3d pose = core::LookAt({0, 0, 1.0}, {3, 0, 1.0});
   RenderOptions o = Exact();
   o.background = Eigen::Vector3f::Ones();
   const RenderedFrame one = Render(scene, Lighting{}, cam, pose, o);
@@ -145,8 +146,8 @@ TEST(Renderer, ShadowIsExactlyWhereTheOccluderBlocksTheLamp) {
   Lighting light;
   light.ambient = Eigen::Vector3f::Constant(0.1f);
   light.points.push_back({{2.3, 0.2, 2.5}, Eigen::Vector3f::Constant(2.0f), 0.0});
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(240, 180, 0.9);
-  const Eigen::Isometry3d pose = views::LookAt({0, 0, 2.0}, {2.4, 0, 0});
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(240, 180, 0.9);
+  const Eigen::Isometry3d pose = core::LookAt({0, 0, 2.0}, {2.4, 0, 0});
   const RenderedFrame f = Render(scene, light, cam, pose, Exact());
   int floor_pixels = 0, shadow_pixels = 0, wrong = 0;
   for (int v = 0; v < cam.height; ++v) {
@@ -179,8 +180,8 @@ TEST(Renderer, HighlightIsWhereTheLawOfReflectionPutsIt) {
   light.ambient.setZero();
   const Eigen::Vector3d lamp(2.0, 0.3, 1.5), eye(0, 0, 1.2);
   light.points.push_back({lamp, Eigen::Vector3f::Constant(1.0f), 0.0});
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(320, 240, 1.0);
-  const Eigen::Isometry3d pose = views::LookAt(eye, {1.3, -0.2, 0});
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(320, 240, 1.0);
+  const Eigen::Isometry3d pose = core::LookAt(eye, {1.3, -0.2, 0});
   RenderOptions o = Exact();
   o.exposure = 4.0;
   const RenderedFrame f = Render(scene, light, cam, pose, o);
@@ -222,8 +223,8 @@ TEST(Renderer, ObjectIdsAndDepthAgree) {
   scene.AddObject(MakeBox({0.3, 0.3, 0.3}), At(2.0, 0.4, 0.15), Matte(0.3f), 7);
   scene.AddObject(MakeCylinder(0.1, 0.3), At(2.0, -0.4, 0.15), Matte(0.9f), 9);
   scene.Commit();
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(160, 120, 1.0);
-  const Eigen::Isometry3d pose = views::LookAt({0, 0, 1.0}, {2, 0, 0.15});
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(160, 120, 1.0);
+  const Eigen::Isometry3d pose = core::LookAt({0, 0, 1.0}, {2, 0, 0.15});
   const RenderedFrame f = Render(scene, Lighting{}, cam, pose, Exact());
   for (const auto& [id, centre] : {std::pair{7, Eigen::Vector3d(2.0, 0.4, 0.15)},
                                    std::pair{9, Eigen::Vector3d(2.0, -0.4, 0.15)}}) {
@@ -247,8 +248,8 @@ TEST(Renderer, BitIdenticalForTheSameSeedWhateverTheThreads) {
   AddFloor(scene);
   scene.AddObject(MakeSphere(0.2), At(2.0, 0.0, 0.2), Matte(0.6f), 3);
   scene.Commit();
-  const views::PinholeCamera cam = views::PinholeCamera::FromFov(96, 72, 1.0);
-  const Eigen::Isometry3d pose = views::LookAt({0, 0, 1.0}, {2, 0, 0});
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(96, 72, 1.0);
+  const Eigen::Isometry3d pose = core::LookAt({0, 0, 1.0}, {2, 0, 0});
   RenderOptions o;
   o.seed = 42;
   o.threads = 1;
@@ -292,8 +293,8 @@ TEST(Renderer, BadPoseAndCameraAreRejected) {
   scene.Commit();
   Eigen::Isometry3d bad = Eigen::Isometry3d::Identity();
   bad.linear() *= 2.0;
-  EXPECT_THROW(Render(scene, Lighting{}, views::PinholeCamera{}, bad), std::invalid_argument);
-  views::PinholeCamera cam;
+  EXPECT_THROW(Render(scene, Lighting{}, core::PinholeCamera{}, bad), std::invalid_argument);
+  core::PinholeCamera cam;
   cam.width = 0;
   EXPECT_THROW(Render(scene, Lighting{}, cam, Eigen::Isometry3d::Identity()),
                std::invalid_argument);

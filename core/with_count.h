@@ -4,7 +4,7 @@
 
 #include <type_traits>
 
-namespace novelty::stats {
+namespace novelty::core {
 
 /// f(std::integral_constant<int, N>{}) for the first N of Counts equal to `n`, else
 /// f(std::integral_constant<int, Fallback>{}) — a kernel for any count (0 by convention) or the
@@ -16,4 +16,4 @@ auto WithCount(int n, F&& f) {
   return result;
 }
 
-}  // namespace novelty::stats
+}  // namespace novelty::core

@@ -6,11 +6,11 @@
 
 #include <opencv2/core.hpp>
 
-namespace novelty::appearance {
+namespace novelty::core {
 
 /// Sets the elements of `m` where `mask` (CV_8UC1, m's size) is non-zero to `value` (one entry
 /// per channel), as m.setTo(value, mask). CV_32FC1 and 8-bit images of 1–4 channels take the
 /// fast path; other types OpenCV's. Throws std::invalid_argument when the mask does not fit.
 void FillWhere(cv::Mat& m, const cv::Mat& mask, const cv::Scalar& value);
 
-}  // namespace novelty::appearance
+}  // namespace novelty::core

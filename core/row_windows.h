@@ -10,9 +10,9 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "maps/stats/lanes.h"
+#include "core/lanes.h"
 
-namespace novelty::views {
+namespace novelty::core {
 
 class RowWindows {
  public:
@@ -46,19 +46,19 @@ class RowWindows {
 
   /// Per lane, the 32-bit word at byte `byte` (0 ≤ byte ≤ kBytes − 4, from `first`) of window
   /// row `row` (0 … rows − 1).
-  stats::lanes::I16 Read(stats::lanes::I16 row, stats::lanes::I16 byte) const {
+  core::lanes::I16 Read(core::lanes::I16 row, core::lanes::I16 byte) const {
 #if defined(__AVX512VBMI__) && defined(__AVX512BW__)
     // Byte 4k + j of the result is byte `byte[k] + j` of the window (no carry: byte ≤ 252).
-    const __m512i index = (__m512i)(byte * 0x01010101 + stats::lanes::I16{} + 0x03020100);
+    const __m512i index = (__m512i)(byte * 0x01010101 + core::lanes::I16{} + 0x03020100);
     const __mmask64 high = _mm512_movepi8_mask(index);  // bit 7: the window's second half
-    stats::lanes::I16 out{};
+    core::lanes::I16 out{};
     for (int r = 0; r < kMaxRows; ++r) {
       const __mmask16 lanes = _mm512_cmpeq_epi32_mask((__m512i)row, _mm512_set1_epi32(r));
       if (!lanes) continue;
       const __m512i lo = _mm512_permutex2var_epi8(window_[r][0], index, window_[r][1]);
       const __m512i hi = _mm512_permutex2var_epi8(window_[r][2], index, window_[r][3]);
-      out = (stats::lanes::I16)_mm512_mask_mov_epi32((__m512i)out, lanes,
-                                                     _mm512_mask_blend_epi8(high, lo, hi));
+      out = (core::lanes::I16)_mm512_mask_mov_epi32((__m512i)out, lanes,
+                                                    _mm512_mask_blend_epi8(high, lo, hi));
     }
     return out;
 #else
@@ -73,4 +73,4 @@ class RowWindows {
 #endif
 };
 
-}  // namespace novelty::views
+}  // namespace novelty::core

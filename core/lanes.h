@@ -12,7 +12,7 @@
 #include <immintrin.h>
 #endif
 
-namespace novelty::stats::lanes {
+namespace novelty::core::lanes {
 
 constexpr int kLanes = 16;
 typedef float F16 __attribute__((vector_size(4 * kLanes)));
@@ -211,4 +211,4 @@ inline void Scatter(float* p, I16 index, F16 v) {
 #endif
 }
 
-}  // namespace novelty::stats::lanes
+}  // namespace novelty::core::lanes

@@ -1,4 +1,4 @@
-#include "maps/appearance/interleave.h"
+#include "core/interleave.h"
 
 #include <algorithm>
 #include <array>
@@ -8,10 +8,10 @@
 #include <string>
 #include <type_traits>
 
-#include "maps/stats/lanes.h"
-#include "maps/stats/with_count.h"
+#include "core/lanes.h"
+#include "core/with_count.h"
 
-namespace novelty::appearance {
+namespace novelty::core {
 
 namespace {
 
@@ -22,7 +22,7 @@ inline float ToFloat(uchar v) {
   return float(v);
 }
 inline float ToFloat(uint16_t bits) {
-  return stats::lanes::HalfToFloat(uint32_t(bits));
+  return core::lanes::HalfToFloat(uint32_t(bits));
 }
 inline float ToFloat(float v) {
   return v;
@@ -205,8 +205,8 @@ void MergeRowToHalves(const float* const* in, int cols, uint16_t* out) {
 // The row function for a channel count: compiled for the counts the map uses, else generic.
 template <class In>
 auto SplitRowFor(int channels) {
-  return stats::WithCount<0, 1, 3, 7>(channels,
-                                      [](auto n) { return &SplitRow<decltype(n)::value, In>; });
+  return core::WithCount<0, 1, 3, 7>(channels,
+                                     [](auto n) { return &SplitRow<decltype(n)::value, In>; });
 }
 // MergeRowToHalves where rows of that channel count are grouped, else null.
 auto MergeRowToHalvesFor(int channels) {
@@ -218,8 +218,8 @@ auto MergeRowToHalvesFor(int channels) {
   return Row(nullptr);
 }
 auto MergeRowFor(int channels) {
-  return stats::WithCount<0, 1, 3, 7>(channels,
-                                      [](auto n) { return &MergeRow<decltype(n)::value>; });
+  return core::WithCount<0, 1, 3, 7>(channels,
+                                     [](auto n) { return &MergeRow<decltype(n)::value>; });
 }
 
 template <class In>
@@ -237,7 +237,7 @@ void SplitRows(const cv::Mat& rows, std::vector<cv::Mat>& planes) {
 void StoreHalves(const float* in, int n, uchar* out) {
   int i = 0;
 #if defined(__AVX512F__)
-  for (; i + stats::lanes::kLanes <= n; i += stats::lanes::kLanes) {
+  for (; i + core::lanes::kLanes <= n; i += core::lanes::kLanes) {
     const __m256i h =
         _mm512_cvtps_ph(_mm512_loadu_ps(in + i), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + 2 * i), h);
@@ -297,4 +297,4 @@ void MergeInto(const std::vector<cv::Mat>& planes, cv::Mat& out) {
   }
 }
 
-}  // namespace novelty::appearance
+}  // namespace novelty::core

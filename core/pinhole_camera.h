@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-namespace novelty::views {
+namespace novelty::core {
 
 struct PinholeCamera {
   int width = 320;
@@ -27,8 +27,4 @@ struct PinholeCamera {
   void Check() const;
 };
 
-/// The pose of a camera at `eye` looking at `target`, with image "up" as close to world +z as
-/// possible (camera +Y down ≈ world -z). Throws if eye == target or the view is vertical.
-Eigen::Isometry3d LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target);
-
-}  // namespace novelty::views
+}  // namespace novelty::core

@@ -1,11 +1,11 @@
-#include "maps/appearance/interleave.h"
+#include "core/interleave.h"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <vector>
 
-namespace novelty::appearance {
+namespace novelty::core {
 namespace {
 
 // Every depth and channel count the map uses (and more), rows that end inside a sixteen-pixel
@@ -64,4 +64,4 @@ TEST(Interleave, BadInputIsRejected) {
 }
 
 }  // namespace
-}  // namespace novelty::appearance
+}  // namespace novelty::core

@@ -1,8 +1,8 @@
-#include "maps/stats/with_count.h"
+#include "core/with_count.h"
 
 #include <gtest/gtest.h>
 
-namespace novelty::stats {
+namespace novelty::core {
 namespace {
 
 template <int N>
@@ -29,4 +29,4 @@ TEST(WithCount, PicksTheKernelOfTheCountOrTheFallback) {
 }
 
 }  // namespace
-}  // namespace novelty::stats
+}  // namespace novelty::core

@@ -1,10 +1,10 @@
-#include "maps/appearance/fill_where.h"
+#include "core/fill_where.h"
 
 #include <array>
 #include <stdexcept>
 #include <string>
 
-namespace novelty::appearance {
+namespace novelty::core {
 
 namespace {
 
@@ -46,4 +46,4 @@ void FillWhere(cv::Mat& m, const cv::Mat& mask, const cv::Scalar& value) {
   }
 }
 
-}  // namespace novelty::appearance
+}  // namespace novelty::core

@@ -1,4 +1,4 @@
-#include "maps/appearance/fill_where.h"
+#include "core/fill_where.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace novelty::appearance {
+namespace novelty::core {
 namespace {
 
 // Every fast-path type and one that falls back (CV_16UC3), whole images and views into larger
@@ -50,4 +50,4 @@ TEST(FillWhere, AMaskThatDoesNotFitIsRejected) {
 }
 
 }  // namespace
-}  // namespace novelty::appearance
+}  // namespace novelty::core

@@ -1,10 +1,10 @@
-#include "maps/views/pinhole_camera.h"
+#include "core/pinhole_camera.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-namespace novelty::views {
+namespace novelty::core {
 
 PinholeCamera PinholeCamera::FromFov(int width, int height, double horizontal_fov_rad) {
   PinholeCamera c;
@@ -35,20 +35,4 @@ void PinholeCamera::Check() const {
   }
 }
 
-Eigen::Isometry3d LookAt(const Eigen::Vector3d& eye, const Eigen::Vector3d& target) {
-  const Eigen::Vector3d z = target - eye;
-  if (z.norm() < 1e-12) throw std::invalid_argument("LookAt: eye and target coincide");
-  const Eigen::Vector3d zc = z.normalized();
-  const Eigen::Vector3d xc = zc.cross(Eigen::Vector3d::UnitZ());  // right = forward × up
-  if (xc.norm() < 1e-9) throw std::invalid_argument("LookAt: view direction is vertical");
-  Eigen::Matrix3d r;
-  r.col(0) = xc.normalized();
-  r.col(2) = zc;
-  r.col(1) = zc.cross(r.col(0));  // down
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  t.linear() = r;
-  t.translation() = eye;
-  return t;
-}
-
-}  // namespace novelty::views
+}  // namespace novelty::core

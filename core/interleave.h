@@ -10,7 +10,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-namespace novelty::appearance {
+namespace novelty::core {
 
 /// `rows` (CV_8U, CV_16F or CV_32F; 1–32 channels; continuous or not) → one CV_32FC1 plane of
 /// its size per channel in `planes` (buffers reused). Throws std::invalid_argument otherwise.
@@ -21,4 +21,4 @@ void SplitToFloat(const cv::Mat& rows, std::vector<cv::Mat>& planes);
 /// view into a larger image. Throws std::invalid_argument when they disagree.
 void MergeInto(const std::vector<cv::Mat>& planes, cv::Mat& out);
 
-}  // namespace novelty::appearance
+}  // namespace novelty::core

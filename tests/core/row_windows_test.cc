@@ -1,4 +1,4 @@
-#include "maps/views/row_windows.h"
+#include "core/row_windows.h"
 
 #include <gtest/gtest.h>
 
@@ -7,10 +7,10 @@
 #include <random>
 #include <vector>
 
-namespace novelty::views {
+namespace novelty::core {
 namespace {
 
-using stats::lanes::I16;
+using core::lanes::I16;
 
 // Every read equals the word in memory, for random rows and bytes, in windows that start
 // anywhere, including the image's last rows, whose windows run past its end.
@@ -28,10 +28,10 @@ TEST(RowWindows, ReadsEqualTheWordsInMemory) {
       const RowWindows w(image.data(), image.size(), row_bytes, row0, n, first);
       for (int trial = 0; trial < 20; ++trial) {
         I16 row, byte;
-        for (int k = 0; k < stats::lanes::kLanes; ++k)
+        for (int k = 0; k < core::lanes::kLanes; ++k)
           row[k] = int(rng() % n), byte[k] = any_byte(rng);
         const I16 got = w.Read(row, byte);
-        for (int k = 0; k < stats::lanes::kLanes; ++k) {
+        for (int k = 0; k < core::lanes::kLanes; ++k) {
           const std::size_t at = std::size_t(row0 + row[k]) * row_bytes + first + byte[k];
           int32_t want = 0;  // bytes past the image read as 0
           std::memcpy(&want, image.data() + at,
@@ -46,4 +46,4 @@ TEST(RowWindows, ReadsEqualTheWordsInMemory) {
 }
 
 }  // namespace
-}  // namespace novelty::views
+}  // namespace novelty::core

@@ -1,11 +1,11 @@
-#include "maps/stats/lanes.h"
+#include "core/lanes.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-namespace novelty::stats::lanes {
+namespace novelty::core::lanes {
 namespace {
 
 TEST(Lanes, FloorAndCeilMatchTheStandardFunctions) {
@@ -86,4 +86,4 @@ TEST(Lanes, MaskCountAndBytes) {
 }
 
 }  // namespace
-}  // namespace novelty::stats::lanes
+}  // namespace novelty::core::lanes

@@ -1,0 +1,27 @@
+// The options of CDifferencingMap: the view options every view-based map has and its depth
+// source (view_map_options.h), in one table (option_table.h) — share/differencing.ini is the dump
+// of its defaults (tested).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "maps/appearance/view_based_map.h"
+#include "mrpt_plugins/depth_source.h"
+#include "mrpt_plugins/option_table.h"
+
+namespace novelty::mrpt_plugins {
+
+struct DifferencingMapConfig : public TabledOptions<DifferencingMapConfig> {
+  appearance::ViewBasedMapOptions map;
+  DepthSourceOptions depth;
+
+  static const OptionTable<DifferencingMapConfig>& Table();
+  /// The section name of share/differencing.ini.
+  static constexpr const char* kSection = "DifferencingMap";
+  /// The keys a map file of version 0, and those version 1 added, stored one after another.
+  static const std::vector<std::string>& Version0Keys();
+  static const std::vector<std::string>& Version1Keys();
+};
+
+}  // namespace novelty::mrpt_plugins

@@ -1,0 +1,99 @@
+#include "mrpt_plugins/option_table.h"
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace novelty::mrpt_plugins {
+
+std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config) {
+  const auto* file = dynamic_cast<const mrpt::config::CConfigFile*>(&config);
+  return file ? file->getAssociatedFile() : "map definition";
+}
+
+std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw std::runtime_error(path + ": no such config file");
+  std::ifstream in(path, std::ios::binary);
+  char c = 0;
+  while (in.get(c)) {  // an image or a map file given as a config must not read as no options
+    if (c == '\0') throw std::runtime_error(path + ": not a text .ini file");
+  }
+  return std::make_unique<mrpt::config::CConfigFile>(path);
+}
+
+void CheckOptionValue(const OptionEntry& entry, double value) {
+  if (!std::isfinite(value)) throw std::invalid_argument("not a number");
+  switch (entry.kind) {
+    case OptionKind::kNumber:
+      return;
+    case OptionKind::kWhole:
+      if (value != std::round(value) || std::abs(value) > 1e9)
+        throw std::invalid_argument("not a whole number");
+      return;
+    case OptionKind::kFlag:
+      if (value != 0.0 && value != 1.0) throw std::invalid_argument("not true/false");
+      return;
+    case OptionKind::kChoice:
+      if (value != std::round(value) || value < 0 || value >= double(entry.choices.size()))
+        throw std::invalid_argument("not a known choice");
+      return;
+  }
+}
+
+double ParseOptionText(const OptionEntry& entry, const std::string& text) {
+  if (entry.kind == OptionKind::kFlag) {
+    if (text == "true" || text == "1") return 1.0;
+    if (text == "false" || text == "0") return 0.0;
+    throw std::invalid_argument("not true/false");
+  }
+  if (entry.kind == OptionKind::kChoice) {
+    for (std::size_t i = 0; i < entry.choices.size(); ++i)
+      if (text == entry.choices[i]) return double(i);
+    std::string names;
+    for (std::size_t i = 0; i < entry.choices.size(); ++i)
+      names += (i == 0 ? "" : i + 1 == entry.choices.size() ? " or " : ", ") + entry.choices[i];
+    throw std::invalid_argument("not " + names);
+  }
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    throw std::invalid_argument("not a number");
+  }
+  if (text.find_first_not_of(" \t", used) != std::string::npos) {
+    throw std::invalid_argument("not a number");
+  }
+  CheckOptionValue(entry, value);
+  return value;
+}
+
+std::string OptionText(const OptionEntry& entry, double value) {
+  switch (entry.kind) {
+    case OptionKind::kFlag:
+      return value != 0.0 ? "true" : "false";
+    case OptionKind::kChoice:
+      return entry.choices.at(std::size_t(value));
+    default:
+      break;
+  }
+  char buf[40];
+  for (int digits = 1; digits <= 17; ++digits) {  // the shortest text that reads back exactly
+    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+    if (std::stod(buf) == value) break;
+  }
+  return buf;
+}
+
+std::string StripIniComment(std::string text) {
+  for (const char* mark : {";", "#", "//"}) text = text.substr(0, text.find(mark));
+  text.erase(text.find_last_not_of(" \t\r") + 1);
+  text.erase(0, std::min(text.size(), text.find_first_not_of(" \t")));
+  return text;
+}
+
+}  // namespace novelty::mrpt_plugins
