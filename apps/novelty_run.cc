@@ -41,7 +41,8 @@
 #include "core/frame_stem.h"
 #include "core/write_rgb_image.h"
 #include "eval/attentional_selectivity.h"
-#include "eval/false_color.h"
+#include "eval/novelty_panel.h"
+#include "eval/selectivity_csv.h"
 #include "eval/findings_report.h"
 #include "eval/first_run.h"
 #include "eval/html_report.h"
@@ -51,6 +52,7 @@
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
 #include "mrpt_plugins/multi_map_config.h"
+#include "mrpt_plugins/option_table.h"
 #include "mrpt_plugins/rawlog_map_player.h"
 #include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/brief_message.h"
@@ -231,9 +233,17 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
   report.Save(out + "/report.html");
 }
 
-}  // namespace
+// What the command line asks for.
+struct RunArgs {
+  std::string rawlog, truth, out, config, map_in, map_out, compare_views;
+  std::optional<int> max_frames;
+  int panels_every = 10;
+  std::string pose_source = "groundtruth";
+  double reduction = 1.0;
+};
 
-int main(int argc, char** argv) {
+// Parses and checks the command line; throws TCLAP::ArgException or std::invalid_argument.
+RunArgs ParseArgs(int argc, char** argv) {
   TCLAP::CmdLine cmd(
       "Bayesian surprise with the probabilistic appearance map over an RGB-D "
       "rawlog, against image differencing, through MRPT's CMultiMetricMap.",
@@ -274,118 +284,139 @@ int main(int argc, char** argv) {
       "Also run maps with reference views N times sparser, side by side, e.g. 2,4 (fig. 4.13's "
       "R2 and R4); the report compares each finding's peak selectivity",
       false, "", "N,M", cmd);
+  cmd.parse(argc, argv);
+  RunArgs a;
+  a.rawlog = rawlog.getValue();
+  a.truth = truth.getValue();
+  a.out = out.getValue();
+  a.config = config.getValue();
+  a.map_in = map_in.getValue();
+  a.map_out = map_out.isSet() ? map_out.getValue() : a.out + "/map.appearance_map";
+  a.compare_views = compare_views.getValue();
+  if (max_frames.isSet()) a.max_frames = max_frames.getValue();
+  a.panels_every = panels_every.getValue();
+  a.pose_source = pose_source.getValue();
+  a.reduction = reduction.getValue();
+  if (!(a.reduction >= 1.0)) throw std::invalid_argument("--view-reduction must be >= 1");
+  if (a.panels_every < 1) throw std::invalid_argument("--panels-every must be >= 1");
+  if (a.max_frames && *a.max_frames < 1) throw std::invalid_argument("--frames must be >= 1");
+  // Where the map goes is checked before the run, not after it.
+  if (std::filesystem::is_directory(a.map_out))
+    throw std::runtime_error("--map-out " + a.map_out + ": is a directory");
+  return a;
+}
+
+// The maps' .ini: --config (checked to be a text file), else kDefaultMaps.
+std::unique_ptr<mrpt::config::CConfigFileBase> OpenMapsConfig(const std::string& path) {
+  if (path.empty()) return std::make_unique<mrpt::config::CConfigFileMemory>(kDefaultMaps);
   try {
-    cmd.parse(argc, argv);
-    if (!(reduction.getValue() >= 1.0))
-      throw std::invalid_argument("--view-reduction must be >= 1");
-    if (panels_every.getValue() < 1) throw std::invalid_argument("--panels-every must be >= 1");
-    if (max_frames.isSet() && max_frames.getValue() < 1)
-      throw std::invalid_argument("--frames must be >= 1");
-    std::unique_ptr<mrpt::config::CConfigFileBase> ini;
-    std::string ini_name = "default maps";
-    if (config.isSet()) {
-      ini_name = config.getValue();
-      if (!std::filesystem::is_regular_file(ini_name))
-        throw std::runtime_error(ini_name + ": no such config file");
-      try {
-        ini = std::make_unique<mrpt::config::CConfigFile>(ini_name);
-      } catch (const std::exception& e) {
-        throw std::runtime_error(ini_name + ": not a readable .ini file (" +
-                                 sensors::BriefMessage(e, 120) + ")");
+    return mrpt_plugins::OpenConfigFile(path);
+  } catch (const std::runtime_error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": not a readable .ini file (" + sensors::BriefMessage(e, 120) +
+                             ")");
+  }
+}
+
+// What a run gathered for the report.
+struct Played {
+  std::vector<eval::SelectivityRow> rows;
+  std::vector<int> panel_frames;
+  int frames = 0;
+  double seconds = 0.0;
+};
+
+// Plays the rawlog into the maps; per frame the selectivity of every changed region (metrics.csv,
+// and the sparser maps' rows), every K-th panel, progress on stderr.
+Played Play(const RunArgs& a, RunMaps& maps, const sim::GroundTruthReader& ground_truth,
+            mrpt_plugins::RawlogMapPlayer& player) {
+  mrpt_plugins::CAppearanceMap& map = maps.appearance();
+  eval::SelectivityCsv csv(a.out + "/metrics.csv");
+  Played run;
+  int index = 0;
+  const auto start = std::chrono::steady_clock::now();
+  while ((!a.max_frames || run.frames < *a.max_frames) && player.Next(maps.multi, index)) {
+    const appearance::AppearanceProducts& p = map.lastProducts();
+    const appearance::DifferencingProducts& d = maps.differencing().lastProducts();
+    ++run.frames;
+    for (const auto& [object, region] : ground_truth.ChangedRegions(index, 30)) {
+      run.rows.push_back({index, object, eval::AttentionalSelectivity(p.surprise, region),
+                          eval::AttentionalSelectivity(d.difference, region)});
+      csv.Add(run.rows.back(), ground_truth.PhaseOf(index));
+      for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k) {
+        maps.sparser_rows[k].push_back(
+            {index, object,
+             eval::AttentionalSelectivity(maps.appearance(k + 1).lastProducts().surprise, region),
+             eval::AttentionalSelectivity(maps.differencing(k + 1).lastProducts().difference,
+                                          region)});
       }
-    } else {
-      ini = std::make_unique<mrpt::config::CConfigFileMemory>(kDefaultMaps);
     }
-    RunMaps maps(*ini, ini_name, reduction.getValue(), ParseFactors(compare_views.getValue()));
+    if (index % a.panels_every == 0) {
+      const std::string stem = core::FrameStem(index);
+      core::WriteRgbImage(a.out + "/panels/" + stem + ".png",
+                          eval::NoveltyPanel(map.lastFrame().rgb, p, d, stem));
+      run.panel_frames.push_back(index);
+    }
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (run.frames % 50 == 0) {
+      std::fprintf(stderr, "\r[novelty-run] frame %d, %.1f frames/s, %d views   ", index,
+                   run.frames / run.seconds, map.map().store().size());
+    }
+  }
+  std::fprintf(stderr, "\n");
+  return run;
+}
+
+// Skipped frames on stderr (the first few reasons, then a count: one line per frame can be
+// thousands) and as notes for the report; an early end of the rawlog too.
+std::vector<std::string> SkipNotes(const mrpt_plugins::RawlogMapPlayer& player, int frames) {
+  constexpr std::size_t kReasonsShown = 10;
+  const auto& reasons = player.skip_reasons();
+  for (std::size_t k = 0; k < std::min(reasons.size(), kReasonsShown); ++k)
+    std::fprintf(stderr, "novelty-run: skipped %s\n", reasons[k].c_str());
+  if (reasons.size() > kReasonsShown)
+    std::fprintf(stderr, "novelty-run: … and %zu more frames skipped\n",
+                 reasons.size() - kReasonsShown);
+  std::vector<std::string> notes;
+  if (!reasons.empty())
+    notes.push_back(std::to_string(reasons.size()) +
+                    " frames skipped; the first: " + reasons.front());
+  if (!player.stopped_by().empty()) {
+    notes.push_back("The rawlog ends early: " + player.stopped_by() + ". Results cover the " +
+                    std::to_string(frames) + " frames read.");
+    std::fprintf(stderr, "novelty-run: %s\n", notes.back().c_str());
+  }
+  return notes;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const RunArgs a = ParseArgs(argc, argv);
+    const std::unique_ptr<mrpt::config::CConfigFileBase> ini = OpenMapsConfig(a.config);
+    RunMaps maps(*ini, a.config.empty() ? "default maps" : a.config, a.reduction,
+                 ParseFactors(a.compare_views));
     mrpt_plugins::CAppearanceMap& map = maps.appearance();
-    if (map_in.isSet()) {
-      map.LoadFromFile(map_in.getValue());
+    if (!a.map_in.empty()) {
+      map.LoadFromFile(a.map_in);
       std::fprintf(stderr,
                    "novelty-run: continuing %s with the options saved in it (the .ini's options "
                    "and --view-reduction apply to the other maps)\n",
-                   map_in.getValue().c_str());
+                   a.map_in.c_str());
     }
-    const std::string gt = truth.getValue(), dir = out.getValue();
-    // Where the map goes is checked before the run, not after it.
-    const std::string saved = map_out.isSet() ? map_out.getValue() : dir + "/map.appearance_map";
-    if (std::filesystem::is_directory(saved))
-      throw std::runtime_error("--map-out " + saved + ": is a directory");
-    const sim::GroundTruthReader ground_truth(gt);
-    const auto& poses = ground_truth.CameraPoses();
-    const auto& phases = ground_truth.Phases();
-    std::filesystem::create_directories(dir + "/panels");
-    if (const auto parent = std::filesystem::path(saved).parent_path(); !parent.empty())
+    const sim::GroundTruthReader ground_truth(a.truth);
+    std::filesystem::create_directories(a.out + "/panels");
+    if (const auto parent = std::filesystem::path(a.map_out).parent_path(); !parent.empty())
       std::filesystem::create_directories(parent);
-    mrpt_plugins::RawlogMapPlayer player(
-        rawlog.getValue(), mrpt_plugins::ParsePoseSource(pose_source.getValue()), poses);
-    std::ofstream csv(dir + "/metrics.csv");
-    csv << "frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff,coverage\n";
-    std::vector<eval::SelectivityRow> rows;
-    std::vector<int> panel_frames;
-    int frames = 0, index = 0;
-    const auto start = std::chrono::steady_clock::now();
-    while ((!max_frames.isSet() || frames < max_frames.getValue()) &&
-           player.Next(maps.multi, index)) {
-      const appearance::AppearanceProducts& p = map.lastProducts();
-      const appearance::DifferencingProducts& d = maps.differencing().lastProducts();
-      ++frames;
-      const std::string stem = core::FrameStem(index);
-      for (const auto& [object, region] : ground_truth.ChangedRegions(index, 30)) {
-        const eval::SelectivityRow r{index, object,
-                                     eval::AttentionalSelectivity(p.surprise, region),
-                                     eval::AttentionalSelectivity(d.difference, region)};
-        csv << r.frame << "," << ground_truth.PhaseOf(index) << "," << r.region << ","
-            << eval::FormatDb(r.surprise.as_db) << "," << eval::FormatDb(r.surprise.pas_db) << ","
-            << eval::FormatDb(r.difference.as_db) << "," << eval::FormatDb(r.difference.pas_db)
-            << "," << r.surprise.coverage << "\n";
-        rows.push_back(r);
-        for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k) {
-          maps.sparser_rows[k].push_back(
-              {index, object,
-               eval::AttentionalSelectivity(maps.appearance(k + 1).lastProducts().surprise, region),
-               eval::AttentionalSelectivity(maps.differencing(k + 1).lastProducts().difference,
-                                            region)});
-        }
-      }
-      if (index % panels_every.getValue() == 0) {
-        const cv::Mat panel = eval::SideBySide(
-            {map.lastFrame().rgb, p.expected_rgb, eval::FalseColor(p.surprise, 20.0),
-             eval::FalseColor(p.uncertainty, 1e4, true), eval::FalseColor(d.difference, 150.0)},
-            4,
-            {"camera " + stem, "expected (tau)", "surprise (0-20)", "uncertainty (log, 1e4)",
-             "differencing (0-150)"});
-        core::WriteRgbImage(dir + "/panels/" + stem + ".png", panel);
-        panel_frames.push_back(index);
-      }
-      if (frames % 50 == 0) {
-        const double s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::fprintf(stderr, "\r[novelty-run] frame %d, %.1f frames/s, %d views   ", index,
-                     frames / s, map.map().store().size());
-      }
-    }
-    std::fprintf(stderr, "\n");
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // Skipped frames: the first few reasons, then a count (one line per frame can be thousands).
-    constexpr std::size_t kReasonsShown = 10;
-    const auto& reasons = player.skip_reasons();
-    for (std::size_t k = 0; k < std::min(reasons.size(), kReasonsShown); ++k)
-      std::fprintf(stderr, "novelty-run: skipped %s\n", reasons[k].c_str());
-    if (reasons.size() > kReasonsShown)
-      std::fprintf(stderr, "novelty-run: … and %zu more frames skipped\n",
-                   reasons.size() - kReasonsShown);
-    std::vector<std::string> notes;
-    if (!reasons.empty())
-      notes.push_back(std::to_string(reasons.size()) +
-                      " frames skipped; the first: " + reasons.front());
-    if (!player.stopped_by().empty()) {
-      notes.push_back("The rawlog ends early: " + player.stopped_by() + ". Results cover the " +
-                      std::to_string(frames) + " frames read.");
-      std::fprintf(stderr, "novelty-run: %s\n", notes.back().c_str());
-    }
-    if (frames == 0) {  // nothing to report, and a saved map must not be replaced by an empty one
-      throw std::runtime_error(rawlog.getValue() + ": no frame was inserted into the maps" +
+    mrpt_plugins::RawlogMapPlayer player(a.rawlog, mrpt_plugins::ParsePoseSource(a.pose_source),
+                                         ground_truth.CameraPoses());
+    const Played run = Play(a, maps, ground_truth, player);
+    const std::vector<std::string> notes = SkipNotes(player, run.frames);
+    if (run.frames == 0) {  // nothing to report, and a saved map must not be replaced by an empty one
+      const auto& reasons = player.skip_reasons();
+      throw std::runtime_error(a.rawlog + ": no frame was inserted into the maps" +
                                (reasons.empty()
                                     ? std::string(" (no camera observation)")
                                     : " (" + std::to_string(reasons.size()) +
@@ -393,14 +424,16 @@ int main(int argc, char** argv) {
     }
     std::printf(
         "Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");
-    WriteReport(dir, rows, phases, ThesisFindings(phases, poses), maps, panel_frames, frames,
-                seconds, map.map().store().size(), notes);
-    map.SaveToFile(saved);
-    map.SaveSceneFile(dir + "/map.3Dscene");  // for SceneViewer3D
+    WriteReport(a.out, run.rows, ground_truth.Phases(),
+                ThesisFindings(ground_truth.Phases(), ground_truth.CameraPoses()), maps,
+                run.panel_frames, run.frames, run.seconds, map.map().store().size(), notes);
+    map.SaveToFile(a.map_out);
+    map.SaveSceneFile(a.out + "/map.3Dscene");  // for SceneViewer3D
     std::printf(
         "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
         "  map:     %s\n  report:  %s/report.html\n",
-        frames, player.skipped(), seconds, dir.c_str(), saved.c_str(), dir.c_str());
+        run.frames, player.skipped(), run.seconds, a.out.c_str(), a.map_out.c_str(),
+        a.out.c_str());
     return 0;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());

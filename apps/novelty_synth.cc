@@ -206,8 +206,7 @@ int main(int argc, char** argv) {
     bo.depth_tolerance = tolerance.getValue();
     bo.resolution_power = power.getValue();
     bo.angle_power = angle.getValue();
-    wo = views::WarpOptionsFor(bo, wo);
-    views::DepthMeshWarper warper(wo);
+    views::DepthMeshWarper warper(wo, views::WarpOutputsFor(bo));
     if (rawlog.isSet()) {
       if (!truth.isSet()) throw std::invalid_argument("--rawlog needs --groundtruth DIR");
       return RawlogMode(rawlog.getValue(), truth.getValue(), every.getValue(), out.getValue(),

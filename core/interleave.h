@@ -1,7 +1,7 @@
 // Interleaved rows ↔ one float plane per channel, in one pass each way, for the appearance map's
 // row tiles (appearance_map.cc): the kernel reads and writes planes, the store keeps interleaved
-// images. OpenCV's split and merge take a generic per-element path beyond four channels (seven
-// channels of 320×240: split 0.52 ms, merge 0.36 ms on one core), need a second pass for half
+// images. OpenCV's split and merge take a generic per-element path beyond four channels, need a
+// second pass for half
 // floats, and cost a few microseconds per call, which a frame of 30 tiles pays hundreds of times.
 // With AVX-512 the map's own layouts (seven half-float and three float channels) go sixteen
 // pixels at a time through register permutes, half floats converted on the way.

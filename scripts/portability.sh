@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tests=(normal_gamma_batch_test lanes_test with_count_test ycbcr_planes_test interleave_test
-       fill_where_test row_windows_test planar_blocks_test mesh_plan_test depth_mesh_warper_test
+       fill_where_test row_windows_test planar_blocks_test mesh_plan_test depth_mesh_warper_test quad_rasteriser_test
        view_blender_test view_based_map_test)
 cmake -S . -B build-x86-64-v3 -G Ninja -DCMAKE_BUILD_TYPE=Release -DNOVELTY_NATIVE=OFF \
   -DCMAKE_CXX_FLAGS=-march=x86-64-v3 > /dev/null

@@ -44,8 +44,8 @@ constexpr int kChannels = AppearanceMap::kChannels, kAlpha = AppearanceMap::kAlp
 // (about 30 of 320 floats per row) stay in cache from the blend of its prior and the colour
 // conversion through the kernel to the stored posterior. The threads take one tile at a time:
 // tiles differ in cost with the views covering them, and single tiles keep both cores busy to
-// the end (seven views: median 4.43 against 4.73 ms with tiles in eight stripes; static camera
-// 0.53 against 0.57 ms, as the working planes now outlive a stripe).
+// the end, faster than tiles in one stripe per thread (appearance_map_benchmark; figures in
+// docs/performance_history.md).
 constexpr int kTileRows = 8;
 
 // One frame: what every tile reads, and the new images (handed out, or kept by the store) that

@@ -39,7 +39,7 @@ void Prediction::BlendRows(const cv::Range& rows) const {
 }
 
 ViewBasedMap::ViewBasedMap(const ViewBasedMapOptions& options)
-    : options_(options), warper_(views::WarpOptionsFor(options.blend, options.warp)) {}
+    : options_(options), warper_(options.warp, views::WarpOutputsFor(options.blend)) {}
 
 ViewBasedMap::~ViewBasedMap() = default;
 

@@ -9,6 +9,7 @@
 
 #include "core/lanes.h"
 #include "core/with_count.h"
+#include "maps/stats/normal_gamma_pixel.h"
 
 namespace novelty::stats {
 
@@ -23,35 +24,6 @@ constexpr std::size_t kPacketsPerBlock = 256;
 using Packet = Eigen::Array<float, kLanes, 1>;
 using PacketMap = Eigen::Map<Packet, Eigen::Unaligned>;
 using ConstPacketMap = Eigen::Map<const Packet, Eigen::Unaligned>;
-
-// One pixel in precision T (the scalar reference).
-template <class T>
-void ProcessOne(std::size_t i, const ChannelPlanes& c, float* surprise,
-                const SurpriseBatchOptions& o) {
-  const int channels = int(c.x.size());
-  bool valid = true;
-  for (int k = 0; k < channels; ++k) valid &= !std::isnan(c.x[k][i]);
-  NormalGammaT<T> p0[kMaxChannels], p[kMaxChannels];
-  T shift[kMaxChannels];
-  for (int k = 0; k < channels; ++k) {
-    const ConstNormalGammaPlanes& q = c.prior[std::size_t(k)];
-    p0[k] = {T(q.alpha[i]), T(q.beta[i]), T(q.tau[i]), T(q.sigma[i])};
-    p[k] = valid ? UpdateWithForgetting(p0[k], T(c.x[k][i]), o.update, &shift[k]) : p0[k];
-  }
-  // eq. 4.21: every channel's KL has its own α terms (α is shared, its terms are not).
-  const T sum = T(channels) * NormalGammaKLAlphaTerms(p[0].alpha, p0[0].alpha, o.kl) +
-                NormalGammaKLOtherTerms(p, p0, shift, channels);
-  const T kl = !valid ? T(0) : sum < T(0) ? T(0) : sum;  // rounding below 0 → 0; NaN stays
-  for (int k = 0; k < channels; ++k) {
-    const NormalGammaPlanes& q = c.posterior[std::size_t(k)];
-    q.alpha[i] = static_cast<float>(p[k].alpha);
-    q.beta[i] = static_cast<float>(p[k].beta);
-    q.tau[i] = static_cast<float>(p[k].tau);
-    q.sigma[i] = static_cast<float>(p[k].sigma);
-  }
-  surprise[i] =
-      valid ? surprise[i] + static_cast<float>(kl) : std::numeric_limits<float>::quiet_NaN();
-}
 
 // The KL's α terms depend on the prior α alone (the update of α does not see the data,
 // eq. 4.10), and whole frames share one α where every pixel was updated alike: the last packet's
@@ -176,14 +148,10 @@ void UpdateAndAccumulateSurprise(const ChannelPlanes& planes, float* surprise, s
   cv::parallel_for_(cv::Range(0, blocks), [&](const cv::Range& r) {
     const std::size_t end = std::min(n, std::size_t(r.end) * block);
     std::size_t i = std::size_t(r.start) * block;
-    if (options.kernel == BatchKernel::kVectorised) {
-      const auto packet = PacketKernelFor(int(planes.x.size()));
-      AlphaTermsCache cache;
-      for (; i + kLanes <= end; i += kLanes) packet(i, planes, surprise, options, cache);
-      for (; i < end; ++i) ProcessOne<float>(i, planes, surprise, options);
-      return;
-    }
-    for (; i < end; ++i) ProcessOne<double>(i, planes, surprise, options);
+    const auto packet = PacketKernelFor(int(planes.x.size()));
+    AlphaTermsCache cache;
+    for (; i + kLanes <= end; i += kLanes) packet(i, planes, surprise, options, cache);
+    for (; i < end; ++i) UpdateAndSurprisePixel<float>(i, planes, surprise, options);  // the tail
   });
 }
 

@@ -1,12 +1,11 @@
 // Per-pixel update + surprise over whole parameter planes: the inner loop of the appearance map.
 //
 // Planes are structure-of-arrays float buffers (one per hyperparameter), as the map stores them.
-// Two kernels evaluate the same templates (UpdateWithForgetting, the KL's α terms and other
-// terms of normal_gamma_kl.h):
-//   kScalar      one pixel at a time in double — the reference;
-//   kVectorised  32 pixels at a time in float with Eigen fixed-size arrays (SIMD log/exp).
-// Their results agree to float precision (normal_gamma_batch_test.cc). Pixel blocks run on
-// OpenCV's thread pool.
+// The kernel evaluates the templates of normal_gamma.h and normal_gamma_kl.h (UpdateWithForgetting,
+// the KL's α terms and other terms) 32 pixels at a time in float with Eigen fixed-size arrays
+// (SIMD log/exp); the same templates one pixel at a time in double (normal_gamma_pixel.h) are the
+// reference it is tested against (normal_gamma_batch_test.cc). Pixel blocks run on OpenCV's
+// thread pool.
 #pragma once
 
 #include <cstddef>
@@ -33,12 +32,9 @@ struct NormalGammaPlanes {
   float* sigma;
 };
 
-enum class BatchKernel { kScalar, kVectorised };
-
 struct SurpriseBatchOptions {
   ForgettingUpdateOptions update;  ///< eq. 4.8-4.13 options
   NormalGammaKLOptions kl;         ///< eq. 4.15 options
-  BatchKernel kernel = BatchKernel::kVectorised;
 };
 
 /// Channels observed together at the same pixels (Y, Cb, Cr): their α planes are one plane

@@ -7,6 +7,10 @@
 //
 // The result is a warp field: for each virtual pixel the source pixel coordinates and the depth
 // seen there. It is computed once per frame and applied to any number of planes (view_blender.h).
+//
+// The parts: mesh_vertices.h (projection of the source pixels), quad_rasteriser.h and
+// block_rasteriser.h (drawing quads and planar blocks), warp_target.h (z-buffered targets, one
+// per thread, merged), view_angles.h; this file schedules them over views and threads.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -28,15 +32,6 @@ struct WarpOptions {
   double near_plane = 0.05;
   /// Worker threads (blocks of source rows, merged by depth); 0 = OpenCV's thread count.
   int threads = 0;
-  /// Also fill WarpField::cos_angle (for view-dependent blending weights).
-  bool compute_view_angles = false;
-  /// Fill WarpField::depth (BlendOptions::depth_tolerance and resolution_power read it; see
-  /// WarpOptionsFor in view_blender.h). Without it the field holds the map and `covered` only,
-  /// and the warp writes no depth plane at all (the z-buffer stays in the warper).
-  bool compute_depth = true;
-  /// Also fill WarpField::source_depth (for BlendOptions::resolution_power). Off by default: it
-  /// is 4 bytes per pixel written at every warp that only that blending weight reads.
-  bool compute_source_depth = false;
   /// Blocks of this many × this many quads whose depths lie on one plane (within
   /// `planar_tolerance`, relative depth; planar_blocks.h) are drawn as one convex quadrilateral
   /// with perspective-correct source coordinates instead of 2·size² small triangles, and so is
@@ -49,14 +44,23 @@ struct WarpOptions {
   /// 0.002 moves a vertex by at most 0.2 % of its depth: 0.06 px of parallax for a 20 cm
   /// baseline at 2 m (fx 277).
   double planar_tolerance = 0.002;
-  /// Decide quads with one candidate pixel 16 at a time with SIMD; false = the plain scalar
-  /// rasteriser, the reference the tests compare with (same pixels, same values).
-  bool vectorised = true;
+};
+
+/// What a warp writes into the field besides the map: what the blend that reads the field needs
+/// (view_blender.h: WarpOutputsFor). Not options a user sets: derived from the blend's.
+struct WarpOutputs {
+  /// WarpField::depth (depth_tolerance and the view angles read it). Without it the field holds
+  /// the map and `covered` only, and the z-buffer stays in the warper.
+  bool depth = true;
+  /// WarpField::source_depth (resolution_power): 4 bytes per pixel that only that weight reads.
+  bool source_depth = false;
+  /// WarpField::cos_angle (angle_power); implies `depth`.
+  bool view_angles = false;
 };
 
 struct WarpField {
   cv::Mat map;    ///< CV_32FC2: source (u, v) for each virtual pixel; (-1, -1) where uncovered
-  cv::Mat depth;  ///< CV_32FC1 (if asked): depth along the virtual camera's +Z; 0 uncovered
+  cv::Mat depth;  ///< CV_32FC1 (WarpOutputs): depth along the virtual camera's +Z; 0 uncovered
   cv::Mat source_depth;  ///< CV_32FC1 (if asked): the same surface's depth in the source view
                          ///< (its resolution there: far sources are blurrier); 0 uncovered
   cv::Mat cos_angle;     ///< CV_32FC1 (if asked): cosine of the angle at the surface point between
@@ -84,8 +88,9 @@ MeshPlan MeshPlanFor(const cv::Mat& depth, const WarpOptions& options);
 /// page faults than the rasterisation itself.
 class DepthMeshWarper {
  public:
-  explicit DepthMeshWarper(const WarpOptions& options = {});
+  explicit DepthMeshWarper(const WarpOptions& options = {}, const WarpOutputs& outputs = {});
   const WarpOptions& options() const { return options_; }
+  const WarpOutputs& outputs() const { return outputs_; }
   ~DepthMeshWarper();
   DepthMeshWarper(const DepthMeshWarper&) = delete;
   DepthMeshWarper& operator=(const DepthMeshWarper&) = delete;
@@ -110,6 +115,7 @@ class DepthMeshWarper {
                 const MeshPlan* plan, const core::PinholeCamera& virtual_camera,
                 const Eigen::Isometry3d& T_world_virtual, WarpField& out) const;
   WarpOptions options_;
+  WarpOutputs outputs_;
   std::unique_ptr<Scratch> scratch_;
   std::vector<std::unique_ptr<Scratch>> worker_scratch_;  // one per WarpMany worker
 };
@@ -118,6 +124,7 @@ class DepthMeshWarper {
 WarpField WarpView(const core::PinholeCamera& source_camera,
                    const Eigen::Isometry3d& T_world_source, const cv::Mat& source_depth,
                    const core::PinholeCamera& virtual_camera,
-                   const Eigen::Isometry3d& T_world_virtual, const WarpOptions& options = {});
+                   const Eigen::Isometry3d& T_world_virtual, const WarpOptions& options = {},
+                   const WarpOutputs& outputs = {});
 
 }  // namespace novelty::views

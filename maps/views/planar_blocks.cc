@@ -73,7 +73,7 @@ cv::Mat FindPlanarBlocks(const cv::Mat& depth, int size, double tolerance) {
                                 std::to_string(size));
   const cv::Size grid = PlanarGrid(depth.cols, depth.rows, size);
   cv::Mat flags(grid, CV_8UC1, cv::Scalar(kNotPlanar));
-  // Block rows on all cores (≈ 0.12 ms for 320×240 on one core): a loaded map plans every view,
+  // Block rows on all cores: a loaded map plans every view,
   // and a view without a plan is planned at its warp, in the frame's time. (The appearance map
   // plans a frame's depth as one task among its tiles, where this loop runs on that thread.)
   cv::parallel_for_(cv::Range(0, grid.height), [&](const cv::Range& rows) {

@@ -7,9 +7,9 @@
 // sixteen pixels at a time over all views, summing in registers, and reads every plane in place
 // (floats of other depths are converted): 8-bit planes a word per pixel and corner, from three row
 // registers where the sixteen pixels' samples lie on two neighbouring rows, from wider windows
-// (row_windows.h) where they fit those, else gathered — 1.3–1.6 ms for seven RGB views at 320×240
-// on two cores; half and float planes of 2–8 channels (the appearance map's parameters) a pixel
-// at a time with one masked load per corner (view_synthesis_benchmark).
+// (core/row_windows.h) where they fit those, else gathered; half and float planes of 2–8
+// channels (the appearance map's parameters) a pixel at a time with one masked load per corner.
+// Speed: view_synthesis_benchmark (BM_Blend*). The kernel's parts are in blend_*.h.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -30,12 +30,12 @@ struct BlendOptions {
   double depth_tolerance = 0.0;
   /// > 0: each contribution is weighted per pixel by (z_virtual / z_source)^power, favouring views
   /// that saw the surface from nearer — at higher resolution — than the virtual camera does, over
-  /// distant views whose texture is magnified and blurred (needs WarpOptions::
-  /// compute_source_depth). 0 = no such weighting (the thesis).
+  /// distant views whose texture is magnified and blurred (needs WarpOutputs::
+  /// source_depth). 0 = no such weighting (the thesis).
   double resolution_power = 0.0;
   /// > 0: each contribution is also weighted by (cos φ / cos φ_best)^power, φ the angle between
   /// the rays from the surface point to the virtual and to the source camera, φ_best the least
-  /// such angle among the views that cover the pixel (needs WarpOptions::compute_view_angles):
+  /// such angle among the views that cover the pixel (needs WarpOutputs::view_angles):
   /// views that saw the surface from the same direction get more say, which keeps
   /// view-dependent effects (highlights) right. Relative to the best view, so a weighting never
   /// uncovers a pixel that a view covers. 0 = no such weighting (the thesis's average), the
@@ -59,10 +59,10 @@ struct BlendResult {
   int covered = 0;
 };
 
-/// `warp` with what blending with `blend` reads switched on — the depth for depth_tolerance and
+/// What warps must write for blending with `blend` — the depth for depth_tolerance and
 /// resolution_power, the source depth for resolution_power, the view angles for angle_power — and
-/// the depth switched off when nothing reads it (a warp then writes the map only).
-WarpOptions WarpOptionsFor(const BlendOptions& blend, WarpOptions warp);
+/// no depth when nothing reads it (a warp then writes the map only).
+WarpOutputs WarpOutputsFor(const BlendOptions& blend);
 
 /// planes[k] is view k's plane (any depth, n channels, the source camera's size). Throws
 /// std::invalid_argument when counts, sizes or channel counts disagree.

@@ -40,7 +40,7 @@ SynthesisResult SynthesiseView(const std::vector<const ReferenceView*>& refs,
                                const core::PinholeCamera& camera,
                                const Eigen::Isometry3d& T_world_virtual,
                                const SynthesisOptions& options) {
-  DepthMeshWarper warper(WarpOptionsFor(options.blend, options.warp));
+  DepthMeshWarper warper(options.warp, WarpOutputsFor(options.blend));
   return SynthesiseView(warper, refs, {}, {}, camera, T_world_virtual, options);
 }
 

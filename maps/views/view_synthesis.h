@@ -29,7 +29,7 @@ struct SynthesisResult {
 /// Synthesises `camera`'s view at T_world_virtual from `refs` (each with an "rgb" plane).
 /// `weights`: blend weight per view (empty: equal, or options.blend.weights); `plans`: the refs'
 /// mesh plans where a caller keeps them (else empty). The warper must have been made with
-/// WarpOptionsFor(options.blend, options.warp). Throws std::invalid_argument on a view without
+/// (options.warp, WarpOutputsFor(options.blend)). Throws std::invalid_argument on a view without
 /// an "rgb" plane or inputs that do not fit (see BlendPlanes).
 SynthesisResult SynthesiseView(DepthMeshWarper& warper,
                                const std::vector<const ReferenceView*>& refs,

@@ -8,6 +8,8 @@
 
 #include "maps/stats/normal_gamma_batch.h"
 
+#include "tests/maps/stats/batch_kernels.h"
+
 namespace novelty::stats {
 namespace {
 
@@ -25,7 +27,7 @@ void BM_UpdateAndSurprise(benchmark::State& state) {
     x[i] = tau[i] + noise(rng);
   }
   std::vector<float> pa(alpha), pb(beta), pt(tau), ps(sigma), surprise(n);
-  SurpriseBatchOptions o;
+  KernelOptions o;
   o.kernel = kernel;
   for (auto _ : state) {
     std::fill(surprise.begin(), surprise.end(), 0.0f);

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tests/maps/stats/batch_kernels.h"
+
 namespace novelty::stats {
 namespace {
 
@@ -38,7 +40,7 @@ TEST(NormalGammaBatch, ScalarKernelEqualsPerPixelFormulas) {
   const Planes prior(n, 5);
   Planes post(n, 6);
   std::vector<float> surprise(n, 1.0f);  // accumulates: starts at 1
-  SurpriseBatchOptions o;
+  KernelOptions o;
   o.kernel = BatchKernel::kScalar;
   UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post.Mutable(), surprise.data(), n, o);
   for (std::size_t i = 0; i < n; i += 37) {
@@ -62,7 +64,7 @@ struct BothKernels {
         s_scalar(prior.x.size(), 0.0f),
         s_vector(prior.x.size(), 0.0f) {
     const std::size_t n = prior.x.size();
-    SurpriseBatchOptions o;
+    KernelOptions o;
     o.kernel = BatchKernel::kScalar;
     UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post_s.Mutable(), s_scalar.data(), n,
                                 o);
@@ -117,7 +119,7 @@ TEST(NormalGammaBatch, NaNObservationKeepsPriorAndMarksSurpriseInvalid) {
     prior.x[21] = std::numeric_limits<float>::quiet_NaN();
     Planes post(n, 4);
     std::vector<float> surprise(n, 0.0f);
-    SurpriseBatchOptions o;
+    KernelOptions o;
     o.kernel = kernel;
     UpdateAndAccumulateSurprise(prior.x.data(), prior.View(), post.Mutable(), surprise.data(), n,
                                 o);
@@ -209,7 +211,7 @@ TEST(NormalGammaBatch, ChannelsSharingAlphaEqualSeparateChannels) {
   // sharing the α plane must not change the sum.
   const std::size_t n = 517;  // not a multiple of 16: the tail runs the scalar code
   for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
-    SurpriseBatchOptions o;
+    KernelOptions o;
     o.kernel = kernel;
     std::vector<Planes> prior, separate;
     for (unsigned k = 0; k < 3; ++k) prior.emplace_back(n, 20 + k);
@@ -334,7 +336,7 @@ TEST(NormalGammaBatch, ThreeChannelSurpriseIsTheSumOfTheChannelsKL) {
   const std::size_t n = 120000;
   const ThreeChannelStates states(n);
   for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
-    SurpriseBatchOptions o;
+    KernelOptions o;
     o.kernel = kernel;
     std::vector<Planes> out(3, Planes(n, 1));
     std::vector<float> surprise(n, 0.0f);
@@ -371,7 +373,7 @@ TEST(NormalGammaBatch, KnownThreeChannelCase) {
       std::fill(c[k].x.begin(), c[k].x.end(), 100.7f);
     }
     const ChannelPlanes planes = SharedAlphaChannels(c, out);
-    SurpriseBatchOptions o;
+    KernelOptions o;
     o.kernel = kernel;
     std::vector<float> s(n, 0.0f);
     UpdateAndAccumulateSurprise(planes, s.data(), n, o);
@@ -398,7 +400,7 @@ TEST(NormalGammaBatch, ABadPriorGivesNaNNotZero) {
     prior.x = prior.tau;  // the same value: 0/0 in the KL's β and σ terms
     Planes post(n, 4);
     std::vector<float> surprise(n, 0.0f);
-    SurpriseBatchOptions o;
+    KernelOptions o;
     o.kernel = kernel;
     o.update.min_variance = 0.0;  // the thesis's update: nothing lifts β
     o.update.sigma_min = 1e-30;
@@ -412,9 +414,9 @@ TEST(NormalGammaBatch, ChannelsMustShareAlpha) {
   Planes a(16, 1), b(16, 2);
   std::vector<float> surprise(16, 0.0f);
   ChannelPlanes c{{a.x.data(), b.x.data()}, {a.View(), b.View()}, {a.Mutable(), b.Mutable()}};
-  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, {}), std::invalid_argument);
+  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, SurpriseBatchOptions{}), std::invalid_argument);
   c.posterior.pop_back();
-  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, {}), std::invalid_argument);
+  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, SurpriseBatchOptions{}), std::invalid_argument);
 }
 
 }  // namespace

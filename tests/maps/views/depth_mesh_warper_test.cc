@@ -57,10 +57,10 @@ TEST(DepthMeshWarper, SidewaysMoveShiftsAFrontoParallelPlaneByTheDisparity) {
 // The view angle at each covered pixel against the geometry in double: the surface point on the
 // plane x = 2 m (world), the rays from it to the virtual camera (0.1 m left) and to the source.
 TEST(DepthMeshWarper, ViewAnglesMatchTheGeometry) {
-  WarpOptions o;
-  o.compute_depth = o.compute_view_angles = true;
+  WarpOutputs o;
+  o.view_angles = true;
   const Eigen::Isometry3d virt = Forward(0.1, 0.05);
-  const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam, virt, o);
+  const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam, virt, {}, o);
   ASSERT_EQ(w.cos_angle.size(), w.depth.size());
   int checked = 0;
   for (int y = 3; y < kCam.height - 3; y += 5) {
@@ -83,9 +83,9 @@ TEST(DepthMeshWarper, SourceDepthOnlyWhenAsked) {
   // Virtual camera 0.5 m nearer a plane at 2 m: depth 1.5 there, 2 in the source view.
   const Eigen::Isometry3d nearer = core::LookAt({0.5, 0, 0}, {1.5, 0, 0});
   EXPECT_TRUE(WarpView(kCam, Forward(), Constant(2.0f), kCam, nearer).source_depth.empty());
-  WarpOptions o;
-  o.compute_source_depth = true;
-  const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam, nearer, o);
+  WarpOutputs o;
+  o.source_depth = true;
+  const WarpField w = WarpView(kCam, Forward(), Constant(2.0f), kCam, nearer, {}, o);
   ASSERT_EQ(w.source_depth.size(), w.depth.size());
   int covered = 0;
   for (int y = 0; y < kCam.height; ++y) {
@@ -128,31 +128,6 @@ TEST(DepthMeshWarper, NothingInFrontGivesAnAllInvalidField) {
                                core::LookAt({5, 0, 0}, {6, 0, 0}));  // the plane is behind it
   EXPECT_EQ(w.covered, 0);
   EXPECT_EQ(cv::countNonZero(w.depth), 0);
-}
-
-TEST(DepthMeshWarper, VectorisedAndScalarRasterisersAgree) {
-  // A wavy surface with a step, seen from a turned and shifted virtual camera.
-  cv::Mat depth(kCam.height, kCam.width, CV_32FC1);
-  for (int y = 0; y < depth.rows; ++y)
-    for (int x = 0; x < depth.cols; ++x)
-      depth.at<float>(y, x) =
-          2.0f + 0.2f * std::sin(x * 0.1f) * std::cos(y * 0.07f) + (x > 100 ? 0.8f : 0.0f);
-  const Eigen::Isometry3d virt = core::LookAt({0.05, 0.15, 0.1}, {1.0, 0.1, 0.0});
-  WarpOptions scalar;
-  scalar.vectorised = false;
-  const WarpField a = WarpView(kCam, Forward(), depth, kCam, virt);
-  const WarpField b = WarpView(kCam, Forward(), depth, kCam, virt, scalar);
-  EXPECT_GT(a.covered, kCam.width * kCam.height / 2);
-  EXPECT_NEAR(a.covered, b.covered, 3);  // at most a few pixels on triangle edges differ
-  int compared = 0;
-  for (int i = 0; i < kCam.width * kCam.height; ++i) {
-    if (a.depth.at<float>(i) == 0.0f || b.depth.at<float>(i) == 0.0f) continue;
-    ASSERT_NEAR(a.depth.at<float>(i), b.depth.at<float>(i), 1e-4f) << i;
-    ASSERT_NEAR(a.map.at<cv::Vec2f>(i)[0], b.map.at<cv::Vec2f>(i)[0], 1e-3f) << i;
-    ASSERT_NEAR(a.map.at<cv::Vec2f>(i)[1], b.map.at<cv::Vec2f>(i)[1], 1e-3f) << i;
-    ++compared;
-  }
-  EXPECT_GT(compared, kCam.width * kCam.height / 2);
 }
 
 // A view of `depth` from Forward() warped into `virt` with planar blocks and quad by quad, and
@@ -259,8 +234,8 @@ TEST(DepthMeshWarper, RunsReachingBehindTheCameraAreDrawnQuadByQuad) {
 
 TEST(DepthMeshWarper, AReusedWarperGivesFreshFieldsWithOrWithoutDepth) {
   // One warper, two views in turn (its z-buffer is cleared by each warp's end, not its start):
-  // every field equals a fresh warper's. Without compute_depth the map is the same and there is
-  // no depth plane.
+  // every field equals a fresh warper's. Without the depth output the map is the same and there
+  // is no depth plane.
   cv::Mat wavy(kCam.height, kCam.width, CV_32FC1);
   for (int y = 0; y < wavy.rows; ++y)
     for (int x = 0; x < wavy.cols; ++x)
@@ -270,9 +245,9 @@ TEST(DepthMeshWarper, AReusedWarperGivesFreshFieldsWithOrWithoutDepth) {
   const WarpField fresh_wavy = WarpView(kCam, Forward(), wavy, kCam, virt);
   const WarpField fresh_flat = WarpView(kCam, Forward(0.2), flat, kCam, virt);
   DepthMeshWarper reused;
-  WarpOptions no_depth;
-  no_depth.compute_depth = false;
-  DepthMeshWarper map_only(no_depth);
+  WarpOutputs no_depth;
+  no_depth.depth = false;
+  DepthMeshWarper map_only({}, no_depth);
   const Eigen::Isometry3d poses[2] = {Forward(), Forward(0.2)};
   const cv::Mat* depths[2] = {&wavy, &flat};
   const WarpField* fresh_fields[2] = {&fresh_wavy, &fresh_flat};
@@ -292,8 +267,11 @@ TEST(DepthMeshWarper, AReusedWarperGivesFreshFieldsWithOrWithoutDepth) {
       EXPECT_EQ(cv::norm(m.map, fresh.map, cv::NORM_INF), 0.0);
     }
   }
-  no_depth.compute_view_angles = true;  // found from the depth: refused without it
-  EXPECT_THROW(WarpView(kCam, Forward(), flat, kCam, virt, no_depth), std::invalid_argument);
+  no_depth.view_angles = true;  // found from the depth, which the warper then computes as well
+  EXPECT_TRUE(DepthMeshWarper({}, no_depth).outputs().depth);
+  const WarpField angles = WarpView(kCam, Forward(0.2), flat, kCam, virt, {}, no_depth);
+  EXPECT_EQ(cv::norm(angles.depth, fresh_flat.depth, cv::NORM_INF), 0.0);
+  EXPECT_EQ(angles.cos_angle.size(), angles.depth.size());
 }
 
 TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
@@ -312,8 +290,9 @@ TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
   const Eigen::Isometry3d virt = core::LookAt({0.05, 0.08, 0.02}, {1.0, 0.05, 0.0});
   WarpOptions two;
   two.threads = 2;
-  two.compute_source_depth = true;
-  DepthMeshWarper many(two);
+  WarpOutputs with_source_depth;
+  with_source_depth.source_depth = true;
+  DepthMeshWarper many(two, with_source_depth);
   std::vector<SourceView> sources;
   for (int k = 0; k < 3; ++k) sources.push_back({&kCam, &poses[k], &depths[k]});
   std::vector<WarpField> fields;
@@ -321,9 +300,8 @@ TEST(DepthMeshWarper, WarpManyEqualsOneViewAtATime) {
   ASSERT_EQ(fields.size(), 3u);
   WarpOptions split;  // each view alone split between three threads, merged by depth
   split.threads = 3;
-  split.compute_source_depth = true;
   for (int k = 0; k < 3; ++k) {
-    const WarpField one = WarpView(kCam, poses[k], depths[k], kCam, virt, split);
+    const WarpField one = WarpView(kCam, poses[k], depths[k], kCam, virt, split, with_source_depth);
     EXPECT_GT(one.covered, kCam.width * kCam.height / 3);
     EXPECT_EQ(fields[k].covered, one.covered) << k;
     EXPECT_EQ(cv::norm(fields[k].depth, one.depth, cv::NORM_INF), 0.0) << k;

@@ -309,25 +309,22 @@ TEST(ViewBlender, AngleWeightsRankViewsButNeverUncoverAPixel) {
   EXPECT_NEAR(soft.value.at<float>(1, 17), 10.0, 1e-5);
 }
 
-TEST(ViewBlender, WarpOptionsForAskForWhatTheBlendReads) {
-  WarpOptions base;
-  base.planar_block = 4;  // kept
-  const WarpOptions plain = WarpOptionsFor(kThesis, base);
-  EXPECT_FALSE(plain.compute_depth);
-  EXPECT_FALSE(plain.compute_source_depth);
-  EXPECT_FALSE(plain.compute_view_angles);
-  EXPECT_EQ(plain.planar_block, 4);
+TEST(ViewBlender, WarpOutputsForAskForWhatTheBlendReads) {
+  const WarpOutputs plain = WarpOutputsFor(kThesis);
+  EXPECT_FALSE(plain.depth);
+  EXPECT_FALSE(plain.source_depth);
+  EXPECT_FALSE(plain.view_angles);
   BlendOptions b = kThesis;
   b.depth_tolerance = 0.03;
-  EXPECT_TRUE(WarpOptionsFor(b, base).compute_depth);
+  EXPECT_TRUE(WarpOutputsFor(b).depth);
   b = kThesis;
   b.resolution_power = 1.0;
-  EXPECT_TRUE(WarpOptionsFor(b, base).compute_depth);
-  EXPECT_TRUE(WarpOptionsFor(b, base).compute_source_depth);
+  EXPECT_TRUE(WarpOutputsFor(b).depth);
+  EXPECT_TRUE(WarpOutputsFor(b).source_depth);
   b = kThesis;
   b.angle_power = 2.0;
-  EXPECT_TRUE(WarpOptionsFor(b, base).compute_depth);
-  EXPECT_TRUE(WarpOptionsFor(b, base).compute_view_angles);
+  EXPECT_TRUE(WarpOutputsFor(b).depth);
+  EXPECT_TRUE(WarpOutputsFor(b).view_angles);
 }
 
 }  // namespace

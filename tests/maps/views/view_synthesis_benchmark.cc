@@ -55,7 +55,7 @@ std::vector<views::SourceView> Sources(const Views& v) {
 
 // The seven views warped into the virtual camera (default options), for the blends alone.
 std::vector<views::WarpField> Warps(const Views& v) {
-  views::DepthMeshWarper warper(views::WarpOptionsFor(views::BlendOptions{}, {}));
+  views::DepthMeshWarper warper({}, views::WarpOutputsFor(views::BlendOptions{}));
   std::vector<views::WarpField> warps;
   warper.WarpMany(Sources(v), v.camera, v.virtual_pose, warps);
   return warps;
@@ -64,7 +64,8 @@ std::vector<views::WarpField> Warps(const Views& v) {
 void BM_SynthesiseVirtualView(benchmark::State& state) {
   static const Views v = MakeViews();
   // The warp computes what the (default) blend reads: the map, the depth and the view angles.
-  views::WarpOptions wo = views::WarpOptionsFor(views::BlendOptions{}, {});
+  views::WarpOptions wo;
+  const views::WarpOutputs outputs = views::WarpOutputsFor(views::BlendOptions{});
   wo.threads = static_cast<int>(state.range(0));
   for (auto _ : state) {
     const std::vector<int> selected = views::SelectViews(v.poses, v.camera, v.virtual_pose);
@@ -72,7 +73,7 @@ void BM_SynthesiseVirtualView(benchmark::State& state) {
     std::vector<cv::Mat> planes;
     for (int j : selected) {
       warps.push_back(
-          views::WarpView(v.camera, v.poses[j], v.depths[j], v.camera, v.virtual_pose, wo));
+          views::WarpView(v.camera, v.poses[j], v.depths[j], v.camera, v.virtual_pose, wo, outputs));
       planes.push_back(v.images[j]);
     }
     const views::BlendResult r = views::BlendPlanes(warps, planes);
@@ -86,11 +87,11 @@ BENCHMARK(BM_SynthesiseVirtualView)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecon
 // blended; with 0 the warps alone. `planar` is WarpOptions::planar_block (0: every quad alone).
 void BM_SevenViews(benchmark::State& state) {
   static const Views v = MakeViews();
-  views::WarpOptions wo = views::WarpOptionsFor(views::BlendOptions{}, {});  // as above
+  views::WarpOptions wo;
   wo.threads = static_cast<int>(state.range(0));
   const bool blend = state.range(1) != 0;
   wo.planar_block = static_cast<int>(state.range(2));
-  views::DepthMeshWarper warper(wo);
+  views::DepthMeshWarper warper(wo, views::WarpOutputsFor(views::BlendOptions{}));  // as above
   const std::vector<views::SourceView> sources = Sources(v);
   std::vector<views::WarpField> warps;
   for (auto _ : state) {

@@ -135,7 +135,7 @@ TEST(ViewSynthesisOnSimulatedData, HeldOutFramesMatchTheRenderedOnes) {
     for (int j : chosen.views) selected.push_back(&refs[std::size_t(j)]);
     ASSERT_FALSE(selected.empty());
     const SynthesisOptions o;
-    DepthMeshWarper warper(WarpOptionsFor(o.blend, o.warp));
+    DepthMeshWarper warper(o.warp, WarpOutputsFor(o.blend));
     const SynthesisResult r =
         SynthesiseView(warper, selected, {}, chosen.Weights(selection), s.camera, pose, o);
     EXPECT_GT(r.coverage, 0.85);  // the sky through the window has no depth
