@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfObjects.h>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "mrpt_plugins/map_files.h"
 #include "mrpt_plugins/register_maps.h"
 #include "tests/mrpt_plugins/clip_observations.h"
 
@@ -41,6 +43,70 @@ TEST(CAppearanceMap, SurpriseAfterSaveAndLoadEqualsSurpriseWithout) {
     ASSERT_TRUE(SameMaps(kept.lastProducts().surprise, reloaded.lastProducts().surprise))
         << "frame " << k;
   }
+}
+
+// Reads map-file bodies of any version, as MRPT's archive does after the class name.
+struct FileReader : CAppearanceMap {
+  using CAppearanceMap::CAppearanceMap;
+  using CAppearanceMap::serializeFrom;
+  using CAppearanceMap::serializeTo;
+};
+
+// The options of a map file body written as versions 0 and 1 did: values one after another
+// (flags as bools, the view angle in radians), then the views.
+void WriteOldOptions(mrpt::serialization::CArchive& out, int version) {
+  out << 0.7 << 0.02 << 0.01 << 5.0   // forgetting_factor, xi, sigma_min, sigma_max
+      << 1.0 << 1.0 << 0.0 << 5.0     // initial prior
+      << false << true                // fast_approximations, half_precision
+      << 0.01 << 0.1 << 0.05 << 0.0;  // new_view_distance, new_view_angle (rad), jump, tolerance
+  if (version >= 1) out << 0.05 << 2.0 << true;  // min_variance, angle_power, weight_by_rays
+}
+
+TEST(CAppearanceMap, MapFilesOfEveryVersionLoadWithTheOptionsTheyWereMadeWith) {
+  CAppearanceMap source;
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(source.insertObservation(Observation(Frames()[k])));
+  for (const int version : {0, 1}) {
+    mrpt::io::CMemoryStream buffer;
+    auto out = mrpt::serialization::archiveFrom(buffer);
+    WriteOldOptions(out, version);
+    WriteViewMap(out, source.map().view_map());
+    buffer.Seek(0);
+    auto in = mrpt::serialization::archiveFrom(buffer);
+    FileReader loaded;
+    loaded.serializeFrom(in, uint8_t(version));
+    const appearance::AppearanceMapOptions& o = loaded.map().options();
+    EXPECT_EQ(o.surprise.update.forgetting_factor, 0.7) << version;
+    EXPECT_EQ(o.surprise.update.xi, 0.02);
+    EXPECT_EQ(o.views.new_view_distance, 0.01);
+    EXPECT_EQ(o.views.new_view_angle, 0.1);
+    EXPECT_EQ(loaded.map().store().size(), source.map().store().size());
+    // Version 0 predates these options: the behaviour it had (no variance floor, the plain
+    // average of distinct views).
+    EXPECT_EQ(o.surprise.update.min_variance, version == 0 ? 0.0 : 0.05);
+    EXPECT_EQ(o.views.blend.angle_power, version == 0 ? 0.0 : 2.0);
+    EXPECT_EQ(o.views.selection.weight_by_rays, version == 1);
+    // Options no older file held keep their defaults.
+    EXPECT_EQ(o.views.warp.planar_block, appearance::ViewBasedMapOptions().warp.planar_block);
+  }
+  // Version 2: every option by key, the depth source too.
+  AppearanceMapConfig c;
+  c.map.views.warp.planar_block = 4;
+  c.map.surprise.update.xi = 0.03;
+  c.depth.kind = DepthSourceOptions::Kind::kStereo;
+  const FileReader configured(c);
+  mrpt::io::CMemoryStream buffer;
+  auto out = mrpt::serialization::archiveFrom(buffer);
+  configured.serializeTo(out);
+  buffer.Seek(0);
+  auto in = mrpt::serialization::archiveFrom(buffer);
+  FileReader loaded;
+  loaded.serializeFrom(in, 2);
+  EXPECT_EQ(loaded.map().options().views.warp.planar_block, 4);
+  EXPECT_EQ(loaded.map().options().surprise.update.xi, 0.03);
+  EXPECT_EQ(loaded.depthSource().kind, DepthSourceOptions::Kind::kStereo);
+  buffer.Seek(0);
+  auto again = mrpt::serialization::archiveFrom(buffer);
+  EXPECT_ANY_THROW(loaded.serializeFrom(again, 3));  // a newer file than this build reads
 }
 
 TEST(CAppearanceMap, TruncatedOrForeignFilesAreRejectedAndTheMapKept) {

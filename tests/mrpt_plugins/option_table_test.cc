@@ -6,6 +6,7 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
+#include <functional>
 #include <regex>
 #include <sstream>
 
@@ -44,6 +45,18 @@ const OptionTable<Toy>& ToyTable() {
     return t;
   }();
   return table;
+}
+
+// What ToyTable().Read makes of the archive that `write` fills.
+Toy ReadBack(const std::function<void(mrpt::serialization::CArchive&)>& write) {
+  mrpt::io::CMemoryStream buffer;
+  auto out = mrpt::serialization::archiveFrom(buffer);
+  write(out);
+  buffer.Seek(0);
+  auto in = mrpt::serialization::archiveFrom(buffer);
+  Toy o;
+  ToyTable().Read(in, o);
+  return o;
 }
 
 std::string LoadError(const std::string& text) {
@@ -113,13 +126,7 @@ TEST(OptionTable, DumpReadsBackToTheSameValues) {
 TEST(OptionTable, MapFileByKeyRoundTripsAndGivesMissingKeysTheirLegacyValue) {
   Toy o;
   o.rate = 0.25, o.count = 3, o.on = false, o.mode = Mode::kFast, o.added_later = 0.5;
-  mrpt::io::CMemoryStream buffer;
-  auto out = mrpt::serialization::archiveFrom(buffer);
-  ToyTable().Write(out, o);
-  buffer.Seek(0);
-  auto in = mrpt::serialization::archiveFrom(buffer);
-  Toy back;
-  ToyTable().Read(in, back);
+  const Toy back = ReadBack([&](auto& out) { ToyTable().Write(out, o); });
   EXPECT_EQ(back.rate, 0.25);
   EXPECT_EQ(back.count, 3);
   EXPECT_FALSE(back.on);
@@ -127,13 +134,9 @@ TEST(OptionTable, MapFileByKeyRoundTripsAndGivesMissingKeysTheirLegacyValue) {
   EXPECT_EQ(back.added_later, 0.5);
 
   // A file written before `added_later` existed: two keys only.
-  mrpt::io::CMemoryStream old;
-  auto w = mrpt::serialization::archiveFrom(old);
-  w << uint32_t(2) << std::string("rate") << 0.5 << std::string("count") << 9.0;
-  old.Seek(0);
-  auto r = mrpt::serialization::archiveFrom(old);
-  Toy legacy;
-  ToyTable().Read(r, legacy);
+  const Toy legacy = ReadBack([](auto& w) {
+    w << uint32_t(2) << std::string("rate") << 0.5 << std::string("count") << 9.0;
+  });
   EXPECT_EQ(legacy.rate, 0.5);
   EXPECT_EQ(legacy.count, 9);
   EXPECT_EQ(legacy.added_later, 0.0);
@@ -147,21 +150,12 @@ TEST(OptionTable, MapFileValuesAreCheckedAsTheIniChecksThem) {
                                                                               {"rate", NAN},
                                                                               {"rate", 3.0},
                                                                               {"bogus", 1}}) {
-    mrpt::io::CMemoryStream buffer;
-    auto w = mrpt::serialization::archiveFrom(buffer);
-    w << uint32_t(1) << key << value;
-    buffer.Seek(0);
-    auto r = mrpt::serialization::archiveFrom(buffer);
-    Toy o;
-    EXPECT_THROW(ToyTable().Read(r, o), std::runtime_error) << key << " = " << value;
+    const std::string k = key;
+    const double v = value;
+    EXPECT_THROW(ReadBack([&](auto& w) { w << uint32_t(1) << k << v; }), std::runtime_error)
+        << k << " = " << v;
   }
-  mrpt::io::CMemoryStream huge;
-  auto w = mrpt::serialization::archiveFrom(huge);
-  w << uint32_t(0xFFFFFFFF);
-  huge.Seek(0);
-  auto r = mrpt::serialization::archiveFrom(huge);
-  Toy o;
-  EXPECT_THROW(ToyTable().Read(r, o), std::runtime_error);
+  EXPECT_THROW(ReadBack([](auto& w) { w << uint32_t(0xFFFFFFFF); }), std::runtime_error);
 }
 
 TEST(OptionTable, ReadsPositionalFilesWithFlagsAsBools) {
