@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace novelty::eval {
 
@@ -111,20 +112,31 @@ std::string SvgLinePlot(const std::string& title, const std::string& x_label,
     << HtmlEscape(y_label) << "</text>\n";
   for (std::size_t k = 0; k < series.size(); ++k) {
     const PlotSeries& s = series[k];
-    std::string path;
-    bool pen_down = false;
+    // Runs of joined points; a run of one point (nothing to join it to) is drawn as a dot.
+    std::string path, dots;
+    std::vector<std::pair<double, double>> run;
+    const auto end_run = [&] {
+      if (run.size() == 1) {
+        dots += "<circle cx='" + Num(run[0].first) + "' cy='" + Num(run[0].second) +
+                "' r='1.5' fill='" + s.color + "'/>\n";
+      }
+      for (std::size_t i = 0; i < run.size() && run.size() > 1; ++i)
+        path += (i ? " L" : " M") + Num(run[i].first) + " " + Num(run[i].second);
+      run.clear();
+    };
     double last_x = 0.0;
     for (const auto& [x, y] : s.points) {
       if (!std::isfinite(y)) {
-        pen_down = false;
+        end_run();
         continue;
       }
-      if (s.max_step > 0.0 && std::abs(x - last_x) > s.max_step) pen_down = false;
+      if (s.max_step > 0.0 && std::abs(x - last_x) > s.max_step) end_run();
       last_x = x;
-      path += (pen_down ? " L" : " M") + Num(X(x)) + " " + Num(Y(std::clamp(y, y0, y1)));
-      pen_down = true;
+      run.emplace_back(X(x), Y(std::clamp(y, y0, y1)));
     }
-    o << "<path d='" << path << "' fill='none' stroke='" << s.color << "' stroke-width='1.3'/>\n";
+    end_run();
+    o << "<path d='" << path << "' fill='none' stroke='" << s.color << "' stroke-width='1.3'/>\n"
+      << dots;
     const double ly = t + 14 + 16.0 * k;
     o << "<line x1='" << l + pw + 10 << "' x2='" << l + pw + 30 << "' y1='" << ly << "' y2='" << ly
       << "' stroke='" << s.color << "' stroke-width='2'/><text x='" << l + pw + 35 << "' y='"

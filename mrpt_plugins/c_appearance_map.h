@@ -8,9 +8,9 @@
 // - Declared in a CMultiMetricMap .ini as "CAppearanceMap" (call RegisterMaps() first); its
 //   options are read from the section "<prefix>_options" with the keys of share/appearance.ini
 //   (unknown keys: error).
-// - MRPT serialization saves views, anchors and every option by key; SaveToFile writes atomically
-// and
-//   LoadFromFile leaves the map as it was when the file is truncated or not a CAppearanceMap.
+// - MRPT serialization saves views, anchors and every option by key (the depth source too);
+//   SaveToFile writes atomically and LoadFromFile leaves the map as it was when the file is
+//   truncated or not a CAppearanceMap.
 // - getVisualizationInto draws each reference view's frustum coloured by its mean uncertainty
 //   Σβ (green: certain, red: uncertain); SaveSceneFile writes them for SceneViewer3D.
 #pragma once

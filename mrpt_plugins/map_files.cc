@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "mrpt_plugins/option_table.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 namespace novelty::mrpt_plugins {
@@ -149,8 +150,14 @@ void LoadInto(mrpt::serialization::CSerializable& object, const std::string& pat
     mrpt::io::CFileGZInputStream file(path);
     auto arch = mrpt::serialization::archiveFrom(file);
     arch >> object;
-  } catch (const std::exception&) {
-    // MRPT's own message spans several lines of parser detail; say what matters.
+  } catch (const std::exception& e) {
+    // What our own reader says of the file's content (OptionTable: "map file: …") is kept; MRPT's
+    // own message spans several lines of parser detail: say what matters.
+    const std::string what = e.what();
+    if (const auto ours = what.find(kMapFileError); ours != std::string::npos) {
+      const auto from = ours + std::string(kMapFileError).size();
+      throw std::runtime_error(path + ": " + what.substr(from, what.find('\n', from) - from));
+    }
     throw std::runtime_error(path + ": not a readable " + kind +
                              " (truncated, or another kind of file)");
   }

@@ -72,7 +72,8 @@ double ParseOptionText(const OptionEntry& entry, const std::string& text) {
   return value;
 }
 
-std::string OptionText(const OptionEntry& entry, double value) {
+std::string OptionText(const OptionEntry& entry, double field_value) {
+  const double value = field_value / entry.scale;
   switch (entry.kind) {
     case OptionKind::kFlag:
       return value != 0.0 ? "true" : "false";
@@ -84,7 +85,7 @@ std::string OptionText(const OptionEntry& entry, double value) {
   char buf[40];
   for (int digits = 1; digits <= 17; ++digits) {  // the shortest text that reads back exactly
     std::snprintf(buf, sizeof buf, "%.*g", digits, value);
-    if (std::stod(buf) == value) break;
+    if (std::stod(buf) * entry.scale == field_value) break;
   }
   return buf;
 }

@@ -28,6 +28,9 @@
 
 namespace novelty::mrpt_plugins {
 
+/// How errors in a map file's content begin (LoadInto in map_files.h puts the path instead).
+inline constexpr const char* kMapFileError = "map file: ";
+
 /// The file behind `config` (a CConfigFile), else "map definition": how errors name it.
 std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config);
 
@@ -51,8 +54,9 @@ struct OptionEntry {
 void CheckOptionValue(const OptionEntry& entry, double value);
 /// Parses `text` as the entry's kind (in file units); throws std::invalid_argument saying why.
 double ParseOptionText(const OptionEntry& entry, const std::string& text);
-/// The value (in file units) as the `.ini` writes it: the shortest text that reads back exactly.
-std::string OptionText(const OptionEntry& entry, double value);
+/// A field's value as the `.ini` writes it (in file units): the shortest text that reads back to
+/// exactly this field value.
+std::string OptionText(const OptionEntry& entry, double field_value);
 /// The value part of an `.ini` line: inline comments (after ';', '#' or "//") and trailing blanks
 /// removed.
 std::string StripIniComment(std::string text);
@@ -129,7 +133,7 @@ class OptionTable {
     std::size_t key_width = 0, value_width = 0;
     std::vector<std::string> values;
     for (const Row& r : rows_) {
-      values.push_back(OptionText(r.entry, r.get(options) / r.entry.scale));
+      values.push_back(OptionText(r.entry, r.get(options)));
       key_width = std::max(key_width, r.entry.key.size());
       value_width = std::max(value_width, values.back().size());
     }
@@ -150,7 +154,7 @@ class OptionTable {
   void Save(mrpt::config::CConfigFileBase& target, const std::string& section,
             const Options& options) const {
     for (const Row& r : rows_) {
-      target.write(section, r.entry.key, OptionText(r.entry, r.get(options) / r.entry.scale));
+      target.write(section, r.entry.key, OptionText(r.entry, r.get(options)));
     }
   }
 
@@ -164,22 +168,28 @@ class OptionTable {
   void Read(mrpt::serialization::CArchive& in, Options& options) const {
     uint32_t n = 0;
     in >> n;
-    if (n > 4 * rows_.size() + 64) throw std::runtime_error("map file: implausible option count");
+    if (n > 4 * rows_.size() + 64)
+      throw std::runtime_error(std::string(kMapFileError) + "implausible option count");
     std::vector<bool> seen(rows_.size(), false);
     for (uint32_t i = 0; i < n; ++i) {
       std::string key;
       double value = 0.0;
       in >> key >> value;
       const Row* r = Find(key);
-      if (!r) throw std::runtime_error("map file: unknown option '" + key + "'");
+      if (!r) {
+        throw std::runtime_error(std::string(kMapFileError) + "unknown option '" + key +
+                                 "' (written by a newer version?)");
+      }
       seen[std::size_t(r - rows_.data())] = true;
       SetChecked(*r, value, options);
     }
     SetLegacyExcept(seen, options);
-    RunChecks(options, "map file: ");
+    RunChecks(options, kMapFileError);
   }
   /// Reads the fields `keys` stored one after another as raw values (a flag as a bool, anything
   /// else as a double), as map files before option tables did; the others get their legacy value.
+  /// Each value is checked as a value (finite, whole, …) but not against the table's checks,
+  /// which are newer than these files: a map that loaded before loads now.
   void ReadPositional(mrpt::serialization::CArchive& in, const std::vector<std::string>& keys,
                       Options& options) const {
     std::vector<bool> seen(rows_.size(), false);
@@ -198,7 +208,6 @@ class OptionTable {
       SetChecked(*r, value, options);
     }
     SetLegacyExcept(seen, options);
-    RunChecks(options, "map file: ");
   }
 
   struct Row {
@@ -234,7 +243,8 @@ class OptionTable {
     try {
       CheckOptionValue(r.entry, value / r.entry.scale);
     } catch (const std::invalid_argument& e) {
-      throw std::runtime_error("map file: option " + r.entry.key + ": " + e.what());
+      throw std::runtime_error(std::string(kMapFileError) + "option " + r.entry.key + ": " +
+                               e.what());
     }
     r.set(options, value);
   }

@@ -95,6 +95,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
   void ReadMapFile(mrpt::serialization::CArchive& in, uint8_t version) {
     if (version > kFileVersion) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     Config c;
+    c.depth = depth_source_;  // files before version 2 did not hold it: the map's stays
     if (version == kFileVersion) {
       Config::Table().Read(in, c);
     } else {
@@ -116,7 +117,9 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
     RegisterMaps();  // the archive names the class
     Derived loaded;  // a fresh map: on failure this one is untouched
     LoadInto(loaded, path, name_);
-    ReplaceMap(std::move(static_cast<ViewMapAdapter&>(loaded).map_));
+    ViewMapAdapter& from = loaded;
+    ReplaceMap(std::move(from.map_));
+    depth_source_ = from.depth_source_;
   }
   void ReplaceMap(std::unique_ptr<Map> map) {
     map_ = std::move(map);

@@ -1,6 +1,7 @@
 #include "maps/appearance/view_based_map.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <opencv2/core/utility.hpp>
@@ -96,8 +97,13 @@ Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
     sources.push_back({&v.camera, &v.T_world_cam, &v.depth, &plan});
   }
   // The last prediction's buffers, unless its caller still holds it.
-  if (!last_blend_ || last_blend_.use_count() > 1)
+  if (!last_blend_ || last_blend_.use_count() > 1) {
     last_blend_ = std::make_shared<Prediction::Blend>();
+  } else {
+    // Its last holder may have let it go on another thread, after blending rows there: those
+    // reads come before the rewrite below (use_count() alone does not order them).
+    std::atomic_thread_fence(std::memory_order_acquire);
+  }
   Prediction::Blend& b = *last_blend_;
   warper_.WarpMany(sources, camera, T_world_cam, b.warps);
   p.warped = true;

@@ -49,7 +49,8 @@ struct WarpOptions {
 /// What a warp writes into the field besides the map: what the blend that reads the field needs
 /// (view_blender.h: WarpOutputsFor). Not options a user sets: derived from the blend's.
 struct WarpOutputs {
-  /// WarpField::depth (depth_tolerance and the view angles read it). Without it the field holds
+  /// WarpField::depth (depth_tolerance, resolution_power and the view angles read it). Without
+  /// it the field holds
   /// the map and `covered` only, and the z-buffer stays in the warper.
   bool depth = true;
   /// WarpField::source_depth (resolution_power): 4 bytes per pixel that only that weight reads.

@@ -109,6 +109,39 @@ TEST(CAppearanceMap, MapFilesOfEveryVersionLoadWithTheOptionsTheyWereMadeWith) {
   EXPECT_ANY_THROW(loaded.serializeFrom(again, 3));  // a newer file than this build reads
 }
 
+// A map file from a newer build: an option this build does not know.
+struct NewerWriter : CAppearanceMap {
+  void serializeTo(mrpt::serialization::CArchive& out) const override {
+    out << uint32_t(1) << std::string("option_of_the_future") << 1.0;
+  }
+};
+
+TEST(CAppearanceMap, SavedFilesKeepTheDepthSourceAndSayWhatTheyCannotRead) {
+  AppearanceMapConfig c;
+  c.depth.kind = DepthSourceOptions::Kind::kStereo;
+  c.depth.stereo.sweep.hypotheses = 32;
+  CAppearanceMap stereo(c);
+  for (int k = 0; k < 3; ++k) ASSERT_TRUE(stereo.insertObservation(Observation(Frames()[k])));
+  const fs::path file = fs::temp_directory_path() / "novelty_test_stereo.appearance_map";
+  stereo.SaveToFile(file.string());
+  CAppearanceMap loaded;
+  loaded.LoadFromFile(file.string());
+  EXPECT_EQ(loaded.depthSource().kind, DepthSourceOptions::Kind::kStereo);
+  EXPECT_EQ(loaded.depthSource().stereo.sweep.hypotheses, 32);
+
+  SaveAtomically(NewerWriter(), file.string());
+  try {
+    loaded.LoadFromFile(file.string());
+    FAIL() << "a file with an unknown option loaded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(
+        std::string(e.what()),
+        file.string() + ": unknown option 'option_of_the_future' (written by a newer version?)");
+  }
+  EXPECT_EQ(loaded.map().store().size(), stereo.map().store().size());  // kept
+  fs::remove(file);
+}
+
 TEST(CAppearanceMap, TruncatedOrForeignFilesAreRejectedAndTheMapKept) {
   CAppearanceMap map;
   for (int k = 0; k < 5; ++k) map.insertObservation(Observation(Frames()[k]));
