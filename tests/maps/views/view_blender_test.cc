@@ -94,9 +94,9 @@ TEST(ViewBlender, BilinearSamplesAreExactForLinearPlanesOfEveryDepth) {
   // samples between pixels; a plane linear in x and y is reproduced exactly by bilinear
   // interpolation, clamped at the border (u ≤ 39, v ≤ 19: the last pixel is read). 8-bit planes
   // take the in-place word path (1 and 3 channels: the last pixels' words are shifted), half-float
-  // planes the in-place path (2 and 7 channels: whole words, and an odd last one); with AVX-512,
-  // half and float planes of 2–8 channels are read a pixel at a time (8: every bit of the channel
-  // mask); 10 float channels take two passes.
+  // planes the in-place path (2 and 7 channels: whole words, and an odd last one); with AVX-512 or
+  // AVX2, half and float planes of 2–8 channels are read a pixel at a time (8: every bit of the
+  // channel mask); 10 float channels take two passes.
   const int w = 40, h = 20;
   WarpField f = Field(w, h, w, 2.0f);
   for (int y = 0; y < h; ++y)
