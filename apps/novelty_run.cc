@@ -41,11 +41,11 @@
 #include "core/frame_stem.h"
 #include "core/write_rgb_image.h"
 #include "eval/attentional_selectivity.h"
-#include "eval/novelty_panel.h"
-#include "eval/selectivity_csv.h"
 #include "eval/findings_report.h"
 #include "eval/first_run.h"
 #include "eval/html_report.h"
+#include "eval/novelty_panel.h"
+#include "eval/selectivity_csv.h"
 #include "eval/selectivity_findings.h"
 #include "maps/appearance/appearance_map.h"
 #include "maps/appearance/differencing_map.h"
@@ -309,14 +309,7 @@ RunArgs ParseArgs(int argc, char** argv) {
 // The maps' .ini: --config (checked to be a text file), else kDefaultMaps.
 std::unique_ptr<mrpt::config::CConfigFileBase> OpenMapsConfig(const std::string& path) {
   if (path.empty()) return std::make_unique<mrpt::config::CConfigFileMemory>(kDefaultMaps);
-  try {
-    return mrpt_plugins::OpenConfigFile(path);
-  } catch (const std::runtime_error&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw std::runtime_error(path + ": not a readable .ini file (" + sensors::BriefMessage(e, 120) +
-                             ")");
-  }
+  return mrpt_plugins::OpenConfigFile(path);
 }
 
 // What a run gathered for the report.
@@ -414,7 +407,8 @@ int main(int argc, char** argv) {
                                          ground_truth.CameraPoses());
     const Played run = Play(a, maps, ground_truth, player);
     const std::vector<std::string> notes = SkipNotes(player, run.frames);
-    if (run.frames == 0) {  // nothing to report, and a saved map must not be replaced by an empty one
+    if (run.frames ==
+        0) {  // nothing to report, and a saved map must not be replaced by an empty one
       const auto& reasons = player.skip_reasons();
       throw std::runtime_error(a.rawlog + ": no frame was inserted into the maps" +
                                (reasons.empty()
@@ -432,8 +426,7 @@ int main(int argc, char** argv) {
     std::printf(
         "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
         "  map:     %s\n  report:  %s/report.html\n",
-        run.frames, player.skipped(), run.seconds, a.out.c_str(), a.map_out.c_str(),
-        a.out.c_str());
+        run.frames, player.skipped(), run.seconds, a.out.c_str(), a.map_out.c_str(), a.out.c_str());
     return 0;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "sensors/rawlog/brief_message.h"
+
 namespace novelty::mrpt_plugins {
 
 std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config) {
@@ -22,7 +24,12 @@ std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string&
   while (in.get(c)) {  // an image or a map file given as a config must not read as no options
     if (c == '\0') throw std::runtime_error(path + ": not a text .ini file");
   }
-  return std::make_unique<mrpt::config::CConfigFile>(path);
+  try {
+    return std::make_unique<mrpt::config::CConfigFile>(path);
+  } catch (const std::exception& e) {  // MRPT's message spans lines of parser detail
+    throw std::runtime_error(path + ": not a readable .ini file (" + sensors::BriefMessage(e, 120) +
+                             ")");
+  }
 }
 
 void CheckOptionValue(const OptionEntry& entry, double value) {

@@ -300,7 +300,7 @@ class TabledOptions : public mrpt::config::CLoadableOptions {
 };
 
 /// Opens an `.ini` file for TabledOptions::FromFile; throws std::runtime_error naming a missing
-/// file or one that is not text.
+/// file, one that is not text, or one MRPT cannot parse.
 std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string& path);
 
 template <class Derived>

@@ -129,11 +129,12 @@ inline F8 PixelChannels(const BytePlane&, const char*, const ChannelMask&) {
 }
 
 // One view's weighted bilinear samples at pixels [x, x + 16) of row y added to acc[lane] (every
-// channel at once) and its weight to `weight_sum`, lane by covered lane.
+// channel at once, `m`: MaskOf the planes' channels) and its weight to `weight_sum`, lane by
+// covered lane.
 template <class Plane>
 inline void AddViewPixels(const WarpField& w, const Plane& p, float view_weight,
                           const BlendOptions& o, const PixelLimits<F16>& limits, int y, int x,
-                          F8* acc, F16& weight_sum) {
+                          const ChannelMask& m, F8* acc, F16& weight_sum) {
   const auto f = FootprintOf(w, p, view_weight, o, limits, y, x);
   weight_sum += f.weight;
   unsigned lanes = core::lanes::Bits(f.valid);
@@ -141,7 +142,6 @@ inline void AddViewPixels(const WarpField& w, const Plane& p, float view_weight,
   const I16 row0 = f.at.y0 * p.RowBytes(), row1 = f.at.y1 * p.RowBytes();
   const I16 col0 = f.at.x0 * p.pixel_bytes, col1 = f.at.x1 * p.pixel_bytes;
   const I16 o00 = row0 + col0, o10 = row0 + col1, o01 = row1 + col0, o11 = row1 + col1;
-  const ChannelMask m = MaskOf(p.channels);
   // The source lines the next virtual rows will read, fetched ahead: these samples wait on
   // memory (seven views' parameter planes are 14 MB), and a turned view's rows slant where the
   // hardware prefetcher does not follow (parameter blend ≈ −20 %).
@@ -167,13 +167,13 @@ inline int BlendWholePixels(const std::vector<const WarpField*>& warps,
                             const std::vector<Plane>& planes, const std::vector<float>& weights,
                             const BlendOptions& o, int y, int x, BlendResult& out) {
   const PixelLimits<F16> limits = LimitsAt<F16>(warps, o, y, x);
+  const int channels = planes[0].channels;  // every view's (CheckInput)
+  const ChannelMask m = MaskOf(channels);
   F8 acc[kLanes] = {};
   F16 weight_sum{};
   for (std::size_t k = 0; k < warps.size(); ++k) {
-    AddViewPixels(*warps[k], planes[k], weights[k], o, limits, y, x, acc, weight_sum);
+    AddViewPixels(*warps[k], planes[k], weights[k], o, limits, y, x, m, acc, weight_sum);
   }
-  const int channels = planes[0].channels;
-  const ChannelMask m = MaskOf(channels);
   float* row = out.value.ptr<float>(y) + std::size_t(x) * channels;
   const F8 nan = F8{} + std::numeric_limits<float>::quiet_NaN();
   for (int k = 0; k < kLanes; ++k) {
