@@ -3,8 +3,9 @@
 // Links every external dependency and touches each at run time (an Embree device, an ODE world
 // configuration, an OctoMap tree, a Ceres problem, MRPT's version), so a broken install shows up
 // here first. Then it demonstrates the statistics core on one pixel (eq. 4.8-4.21).
-// `--dump-options CLASS` prints a map's options with their defaults and documentation as an
-// `.ini` section instead (share/appearance.ini and share/differencing.ini are that output).
+// `--dump-options CLASS` prints instead a CMultiMetricMap .ini declaring one map of the class with
+// every option's default and documentation (share/appearance.ini and share/differencing.ini are
+// that output).
 #include <ceres/ceres.h>
 #include <ceres/version.h>
 #include <embree3/rtcore.h>
@@ -94,8 +95,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> classes = {"CAppearanceMap", "CDifferencingMap"};
   TCLAP::ValuesConstraint<std::string> allowed(classes);
   TCLAP::ValueArg<std::string> dump_options(
-      "", "dump-options", "Print the map class's options with their defaults as an .ini section",
-      false, "", &allowed);
+      "", "dump-options",
+      "Print a CMultiMetricMap .ini with one map of the class and its options' defaults", false, "",
+      &allowed);
   try {
     TCLAP::CmdLine cmd("Prints what this NoveltyMaps build contains and the libraries it uses.",
                        ' ', NOVELTY_VERSION);
@@ -107,9 +109,9 @@ int main(int argc, char** argv) {
   }
   if (dump_options.isSet()) {
     if (dump_options.getValue() == "CAppearanceMap")
-      novelty::mrpt_plugins::AppearanceMapConfig().dumpToTextStream(std::cout);
+      novelty::mrpt_plugins::AppearanceMapConfig().dumpAsMultiMap(std::cout);
     else
-      novelty::mrpt_plugins::DifferencingMapConfig().dumpToTextStream(std::cout);
+      novelty::mrpt_plugins::DifferencingMapConfig().dumpAsMultiMap(std::cout);
     return 0;
   }
   std::printf("NoveltyMaps %s\n\nLibraries:\n", NOVELTY_VERSION);

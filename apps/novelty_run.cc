@@ -54,7 +54,6 @@
 #include "mrpt_plugins/multi_map_config.h"
 #include "mrpt_plugins/option_table.h"
 #include "mrpt_plugins/rawlog_map_player.h"
-#include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/brief_message.h"
 #include "sim/output/ground_truth_reader.h"
 
@@ -104,15 +103,9 @@ struct RunMaps {
   RunMaps(const mrpt::config::CConfigFileBase& ini, const std::string& source, double reduction,
           const std::vector<double>& factors)
       : sparser_factors(factors), sparser_rows(factors.size()) {
-    mrpt_plugins::RegisterMaps();
     // The sparser maps are copies of the one appearance and one differencing map.
-    mrpt_plugins::CheckMultiMapConfig(ini, "map", source, {"CAppearanceMap", "CDifferencingMap"});
-    mrpt::maps::TSetOfMetricMapInitializers inits;
-    try {
-      inits.loadFromConfigFile(ini, "map");
-    } catch (const std::exception& e) {
-      throw std::runtime_error(source + ": " + sensors::BriefMessage(e));
-    }
+    mrpt::maps::TSetOfMetricMapInitializers inits = mrpt_plugins::LoadMultiMapConfig(
+        ini, "map", source, {"CAppearanceMap", "CDifferencingMap"});
     // CheckMultiMapConfig made these exactly one each.
     std::shared_ptr<mrpt_plugins::CAppearanceMap::TMapDefinition> appearance;
     std::shared_ptr<mrpt_plugins::CDifferencingMap::TMapDefinition> differencing;

@@ -4,11 +4,34 @@
 #   NOVELTY_SANITIZE   (OFF) build with AddressSanitizer + UndefinedBehaviorSanitizer
 #   NOVELTY_NATIVE     (ON)  -march=native: the per-pixel kernels are vectorised with Eigen and
 #                            need AVX2/FMA to meet the budgets of DESIGN.md; binaries are built on
-#                            the machine that runs them, so this is safe. Turn off to ship binaries.
+#                            the machine that runs them, so this is safe. Turn off to ship binaries
+#                            (NOVELTY_PORTABLE does, and still uses AVX2/AVX-512 where the CPU has it).
+#   NOVELTY_PORTABLE   (OFF) binaries for any x86-64: the libraries with SIMD kernels are built
+#                            for the baseline and again for x86-64-v3 and x86-64-v4, and glibc's
+#                            loader picks the variant the CPU runs (glibc-hwcaps). For packages.
+#   BUILD_SHARED_LIBS  (ON)  shared libraries: a program that uses the installed package links
+#                            NoveltyMaps::mrpt and nothing else, and the maps register on load.
+#
+# The public headers hold Eigen fixed-size types (poses, cameras). Their alignment is fixed at
+# 16 bytes for every build and every consumer (EIGEN_MAX_ALIGN_BYTES, exported with the targets):
+# otherwise a library built with AVX-512 (64) and a program built with default flags (16) lay the
+# same struct out differently and crash. 16 is what Debian's Eigen users (OpenGV, Ceres) use.
 
 option(NOVELTY_WERROR "Treat warnings as errors in NoveltyMaps code" ON)
 option(NOVELTY_SANITIZE "Build with address and undefined-behaviour sanitizers" OFF)
 option(NOVELTY_NATIVE "Optimise for the build machine's CPU (-march=native)" ON)
+option(BUILD_SHARED_LIBS "Build NoveltyMaps' libraries as shared libraries" ON)
+option(NOVELTY_PORTABLE "Build for any x86-64, with AVX2/AVX-512 variants chosen at run time" OFF)
+if(NOVELTY_PORTABLE)
+  if(NOVELTY_NATIVE)
+    message(FATAL_ERROR "NOVELTY_PORTABLE=ON needs NOVELTY_NATIVE=OFF (-march=native is not portable)")
+  endif()
+  if(NOT BUILD_SHARED_LIBS)
+    message(FATAL_ERROR "NOVELTY_PORTABLE=ON needs BUILD_SHARED_LIBS=ON (variants are shared libraries)")
+  endif()
+endif()
+set(NOVELTY_SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
+set(NOVELTY_EIGEN_ALIGNMENT EIGEN_MAX_ALIGN_BYTES=16)
 
 add_library(novelty_build_flags INTERFACE)
 target_compile_options(novelty_build_flags INTERFACE -Wall -Wextra -Wpedantic -Wshadow
@@ -40,16 +63,51 @@ if(NOVELTY_SANITIZE)
                                                     -fno-sanitize=alignment)
 endif()
 
-# novelty_add_library(NAME SOURCES... [DEPS ...])
+# novelty_add_library(NAME [KERNELS] SOURCES... [DEPS ...])
 # A library of our own: our warnings and flags, includes rooted at the project top so headers are
 # included as "maps/stats/normal_gamma.h".
+# KERNELS: the library holds SIMD kernels; with NOVELTY_PORTABLE it is also built for x86-64-v3
+# (AVX2, FMA, F16C) and x86-64-v4 (AVX-512), chosen at run time (novelty_add_hwcaps_variant).
+# Installed (cmake --install) and exported as NoveltyMaps::<NAME without "novelty_">, with its
+# headers under include/novelty/ (see cmake/NoveltyInstall.cmake).
 function(novelty_add_library name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "KERNELS" "" "SOURCES;DEPS" ${ARGN})
   add_library(${name} ${ARG_SOURCES})
-  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  string(REPLACE "novelty_" "" export_name ${name})
+  add_library(NoveltyMaps::${export_name} ALIAS ${name})
+  target_include_directories(${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                                            $<INSTALL_INTERFACE:include/novelty>)
+  target_compile_definitions(${name} PUBLIC ${NOVELTY_EIGEN_ALIGNMENT})
   target_link_libraries(${name} PUBLIC ${ARG_DEPS} PRIVATE novelty_build_flags)
-  # Dependencies' headers are system headers: their warnings are not ours to fix.
-  set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON
+                                           EXPORT_NAME ${export_name}
+                                           VERSION ${PROJECT_VERSION}
+                                           SOVERSION ${NOVELTY_SOVERSION})
+  if(NOVELTY_PORTABLE AND ARG_KERNELS)
+    foreach(level x86-64-v3 x86-64-v4)
+      novelty_add_hwcaps_variant(${name} ${level} "${ARG_SOURCES}")
+    endforeach()
+  endif()
+endfunction()
+
+# The same library built for a micro-architecture level and placed in glibc-hwcaps/<level>/ beside
+# it: the dynamic loader (glibc >= 2.33) loads the best variant the CPU runs, so one build is fast
+# on AVX2 and AVX-512 machines and still runs on any x86-64. The ABI is the same (same sources,
+# same Eigen alignment, same SONAME).
+function(novelty_add_hwcaps_variant name level sources)
+  string(REPLACE "-" "_" suffix ${level})
+  set(variant ${name}_${suffix})
+  add_library(${variant} SHARED ${sources})
+  get_target_property(deps ${name} LINK_LIBRARIES)
+  target_link_libraries(${variant} PRIVATE ${deps})
+  target_include_directories(${variant} PRIVATE ${PROJECT_SOURCE_DIR})
+  target_compile_definitions(${variant} PRIVATE ${NOVELTY_EIGEN_ALIGNMENT})
+  target_compile_options(${variant} PRIVATE -march=${level})
+  set_target_properties(${variant} PROPERTIES
+    OUTPUT_NAME ${name} VERSION ${PROJECT_VERSION} SOVERSION ${NOVELTY_SOVERSION}
+    LIBRARY_OUTPUT_DIRECTORY ${CMAKE_LIBRARY_OUTPUT_DIRECTORY}/glibc-hwcaps/${level})
+  add_dependencies(${name} ${variant})  # whatever runs the library finds its variants built
+  install(TARGETS ${variant} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/glibc-hwcaps/${level})
 endfunction()
 
 # novelty_add_app(NAME SOURCE [DEPS ...]) -> build/bin/NAME

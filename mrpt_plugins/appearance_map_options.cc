@@ -44,6 +44,8 @@ const OptionTable<AppearanceMapConfig>& AppearanceMapConfig::Table() {
             ViewMapOptionTable(), [](C & c) -> auto& { return c.map.views; })
         .Include(
             DepthSourceOptionTable(), [](C & c) -> auto& { return c.depth; })
+        .Include(
+            PoseCheckOptionTable(), [](C & c) -> auto& { return c.poses; })
         .Check([](const C& c) {
           c.map.surprise.update.Check();
           stats::CheckNormalGamma(c.map.initial_prior, "initial prior");

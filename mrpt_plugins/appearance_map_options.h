@@ -10,6 +10,7 @@
 #include "maps/appearance/appearance_map.h"
 #include "mrpt_plugins/depth_source.h"
 #include "mrpt_plugins/option_table.h"
+#include "mrpt_plugins/pose_check.h"
 
 namespace novelty::mrpt_plugins {
 
@@ -18,10 +19,13 @@ namespace novelty::mrpt_plugins {
 struct AppearanceMapConfig : public TabledOptions<AppearanceMapConfig> {
   appearance::AppearanceMapOptions map;
   DepthSourceOptions depth;
+  PoseCheckOptions poses;
 
   static const OptionTable<AppearanceMapConfig>& Table();
-  /// The section name of share/appearance.ini.
-  static constexpr const char* kSection = "AppearanceMap";
+  static constexpr const char* kClass = "CAppearanceMap";
+  /// The options section of the first CAppearanceMap of a CMultiMetricMap .ini whose maps are
+  /// declared in [map] (MRPT's naming: <section>_<Class>_<NN>_options), as in share/*.ini.
+  static constexpr const char* kSection = "map_CAppearanceMap_00_options";
   /// The keys a map file of version 0, and those version 1 added, stored one after another.
   static const std::vector<std::string>& Version0Keys();
   static const std::vector<std::string>& Version1Keys();

@@ -1,13 +1,15 @@
 // CAppearanceMap: the probabilistic appearance map (maps/appearance) as an MRPT metric map.
 //
 // - insertObservation(CObservation3DRangeScan with intensity image, robotPose) updates the map
-//   and computes the frame's products (lastProducts()); with `depth_source = stereo` also
-//   CObservationStereoImages (depth by plane sweep + belief propagation); other observations are
-//   not used.
-//   The camera pose is robotPose ⊕ sensorPose (robot at the origin if no pose is given).
-// - Declared in a CMultiMetricMap .ini as "CAppearanceMap" (call RegisterMaps() first); its
-//   options are read from the section "<prefix>_options" with the keys of share/appearance.ini
-//   (unknown keys: error).
+//   and computes the frame's products (lastProducts(), surpriseImage()); with
+//   `depth_source = stereo` also CObservationStereoImages (depth by plane sweep + belief
+//   propagation); other observations are not used.
+//   robotPose is the ROBOT's pose: the camera is at robotPose ⊕ obs.sensorPose (robot at the
+//   origin if no pose is given). Passing the camera's pose applies the sensor pose twice; poses
+//   that look like it are logged as warnings (pose_check.h, poseWarnings()).
+// - Declared in a CMultiMetricMap .ini as "CAppearanceMap" (registered when the library loads;
+//   LoadMultiMapConfig checks the file); its options are read from the section
+//   "<prefix>_options" with the keys of share/appearance.ini (unknown keys: error).
 // - MRPT serialization saves views, anchors and every option by key (the depth source too);
 //   SaveToFile writes atomically and LoadFromFile leaves the map as it was when the file is
 //   truncated or not a CAppearanceMap.
@@ -16,6 +18,7 @@
 #pragma once
 
 #include "maps/appearance/appearance_map.h"
+#include "maps/appearance/product_images.h"
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/view_map_adapter.h"
 
@@ -30,6 +33,15 @@ class CAppearanceMap : public ViewMapAdapter<appearance::AppearanceMap, Appearan
   std::string asString() const override;
   void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
   void LoadFromFile(const std::string& path) { LoadAs<CAppearanceMap>(path); }
+  /// The last frame's surprise and uncertainty Σβ in false colour on the fixed scales of
+  /// maps/appearance/product_images.h (empty before the first frame): for mrpt::gui windows, or
+  /// written into a rawlog with ProductObservation (cimage_products.h) for RawLogViewer.
+  mrpt::img::CImage surpriseImage(const appearance::ProductScales& scales = {}) const {
+    return ToCImage(appearance::SurpriseImage(last_, scales));
+  }
+  mrpt::img::CImage uncertaintyImage(const appearance::ProductScales& scales = {}) const {
+    return ToCImage(appearance::UncertaintyImage(last_, scales));
+  }
 
   MAP_DEFINITION_START(CAppearanceMap)
   AppearanceMapConfig config;  ///< from the section "<prefix>_options"

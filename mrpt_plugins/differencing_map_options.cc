@@ -11,7 +11,9 @@ const OptionTable<DifferencingMapConfig>& DifferencingMapConfig::Table() {
     t.Include(
          ViewMapOptionTable(), [](C & c) -> auto& { return c.map; })
         .Include(
-            DepthSourceOptionTable(), [](C & c) -> auto& { return c.depth; });
+            DepthSourceOptionTable(), [](C & c) -> auto& { return c.depth; })
+        .Include(
+            PoseCheckOptionTable(), [](C & c) -> auto& { return c.poses; });
     return t;
   }();
   return table;

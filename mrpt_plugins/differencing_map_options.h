@@ -9,16 +9,20 @@
 #include "maps/appearance/view_based_map.h"
 #include "mrpt_plugins/depth_source.h"
 #include "mrpt_plugins/option_table.h"
+#include "mrpt_plugins/pose_check.h"
 
 namespace novelty::mrpt_plugins {
 
 struct DifferencingMapConfig : public TabledOptions<DifferencingMapConfig> {
   appearance::ViewBasedMapOptions map;
   DepthSourceOptions depth;
+  PoseCheckOptions poses;
 
   static const OptionTable<DifferencingMapConfig>& Table();
-  /// The section name of share/differencing.ini.
-  static constexpr const char* kSection = "DifferencingMap";
+  static constexpr const char* kClass = "CDifferencingMap";
+  /// The options section of the first CDifferencingMap of a CMultiMetricMap .ini whose maps are
+  /// declared in [map] (MRPT's naming: <section>_<Class>_<NN>_options), as in share/*.ini.
+  static constexpr const char* kSection = "map_CDifferencingMap_00_options";
   /// The keys a map file of version 0, and those version 1 added, stored one after another.
   static const std::vector<std::string>& Version0Keys();
   static const std::vector<std::string>& Version1Keys();

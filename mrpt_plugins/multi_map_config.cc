@@ -8,6 +8,9 @@
 
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/differencing_map_options.h"
+#include "mrpt_plugins/option_table.h"
+#include "mrpt_plugins/register_maps.h"
+#include "sensors/rawlog/brief_message.h"
 
 namespace novelty::mrpt_plugins {
 
@@ -69,6 +72,25 @@ std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBa
                                "] is read by no declared map (misspelt or unclosed header?)");
   }
   return counts;
+}
+
+mrpt::maps::TSetOfMetricMapInitializers LoadMultiMapConfig(
+    const mrpt::config::CConfigFileBase& ini, const std::string& section, const std::string& source,
+    const std::vector<std::string>& exactly_one) {
+  RegisterMaps();  // for a static link; the shared library registered on load
+  CheckMultiMapConfig(ini, section, source, exactly_one);
+  mrpt::maps::TSetOfMetricMapInitializers inits;
+  try {
+    inits.loadFromConfigFile(ini, section);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(source + ": " + sensors::BriefMessage(e));
+  }
+  return inits;
+}
+
+mrpt::maps::TSetOfMetricMapInitializers LoadMultiMapConfig(const std::string& path,
+                                                           const std::string& section) {
+  return LoadMultiMapConfig(*OpenConfigFile(path), section, path);
 }
 
 }  // namespace novelty::mrpt_plugins

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/maps/TMetricMapInitializer.h>
 
 #include <map>
 #include <string>
@@ -22,5 +23,15 @@ std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBa
                                                const std::string& section,
                                                const std::string& source,
                                                const std::vector<std::string>& exactly_one = {});
+
+/// The maps declared in `section` of `ini`, checked by CheckMultiMapConfig, then read by MRPT's
+/// loader: the list for CMultiMetricMap::setListOfMaps. Every error names `source`.
+mrpt::maps::TSetOfMetricMapInitializers LoadMultiMapConfig(
+    const mrpt::config::CConfigFileBase& ini, const std::string& section, const std::string& source,
+    const std::vector<std::string>& exactly_one = {});
+
+/// The same for the .ini file `path` (a missing or unparsable file is an error naming it).
+mrpt::maps::TSetOfMetricMapInitializers LoadMultiMapConfig(const std::string& path,
+                                                           const std::string& section = "map");
 
 }  // namespace novelty::mrpt_plugins

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -90,8 +91,12 @@ std::string OptionText(const OptionEntry& entry, double field_value) {
       break;
   }
   char buf[40];
-  for (int digits = 1; digits <= 17; ++digits) {  // the shortest text that reads back exactly
+  // The shortest text that reads back exactly, without an exponent for ordinary magnitudes
+  // (180, not 1.8e+02).
+  const bool plain = std::abs(value) >= 1e-4 && std::abs(value) < 1e15;
+  for (int digits = 1; digits <= 17; ++digits) {
     std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+    if (plain && digits < 17 && std::strchr(buf, 'e')) continue;
     if (std::stod(buf) * entry.scale == field_value) break;
   }
   return buf;

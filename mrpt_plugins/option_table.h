@@ -265,8 +265,9 @@ class OptionTable {
   std::vector<std::function<void(const Options&)>> checks_;
 };
 
-/// MRPT's CLoadableOptions for a struct `Derived` that has a table (static Table()) and a section
-/// name (static kSection): load, save and dump all come from the table.
+/// MRPT's CLoadableOptions for a struct `Derived` that has a table (static Table()), its map class
+/// (static kClass) and a section name (static kSection): load, save and dump all come from the
+/// table.
 template <class Derived>
 class TabledOptions : public mrpt::config::CLoadableOptions {
  public:
@@ -283,6 +284,13 @@ class TabledOptions : public mrpt::config::CLoadableOptions {
   /// The values as an `.ini` section named Derived::kSection, each key with its documentation.
   void dumpToTextStream(std::ostream& out) const override {
     Derived::Table().Dump(out, Derived::kSection, Self());
+  }
+  /// A CMultiMetricMap .ini declaring one map of class Derived::kClass in [map] with these
+  /// values in its options section (Derived::kSection): share/appearance.ini and
+  /// share/differencing.ini are this dump of the defaults and drop into a user's .ini as they are.
+  void dumpAsMultiMap(std::ostream& out) const {
+    out << "[map]\n" << Derived::kClass << "_count = 1\n\n";
+    dumpToTextStream(out);
   }
   /// The defaults overridden by `section` of `source` (errors name `source_name`).
   static Derived FromConfig(const mrpt::config::CConfigFileBase& source, const std::string& section,

@@ -1,5 +1,7 @@
 #include "mrpt_plugins/register_maps.h"
 
+#include <mrpt/core/initializer.h>
+
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
 
@@ -11,3 +13,9 @@ void RegisterMaps() {
 }
 
 }  // namespace novelty::mrpt_plugins
+
+// On load of the library (a constructor function); the .ini factory entries register themselves
+// through MAP_DEFINITION_REGISTER's static initialisers in the map classes' files.
+MRPT_INITIALIZER(RegisterNoveltyMapsOnLoad) {
+  novelty::mrpt_plugins::RegisterMaps();
+}

@@ -1,8 +1,8 @@
 // Makes NoveltyMaps' map classes known to MRPT: to its class registry (reading archives) and to
-// the CMultiMetricMap .ini factory ("CAppearanceMap", "CDifferencingMap"). A program that uses
-// the classes only by name — from an .ini file or an archive — calls this once before, like
-// MRPT's own registerAllClasses_*() functions; referencing the classes here also keeps a static
-// link from dropping their registration code.
+// the CMultiMetricMap .ini factory ("CAppearanceMap", "CDifferencingMap"). This happens when the
+// library is loaded, as MRPT's own modules register theirs, so a program that names the maps only
+// in an .ini file or an archive finds them. RegisterMaps() does it again (harmless); a program
+// linked statically calls it once, which also keeps the linker from dropping the classes.
 #pragma once
 
 namespace novelty::mrpt_plugins {

@@ -9,6 +9,10 @@
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/serialization/CArchive.h>
+#include <mrpt/system/COutputLogger.h>
+
+#include <cmath>
+#include <limits>
 
 #include <filesystem>
 #include <memory>
@@ -18,22 +22,31 @@
 
 #include "mrpt_plugins/depth_source.h"
 #include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/pose_check.h"
+#include "mrpt_plugins/cimage_products.h"
 #include "mrpt_plugins/register_maps.h"
 
 namespace novelty::mrpt_plugins {
 
-// Config: the map's option table (appearance_map_options.h), with the map's options in `map`
-// and the depth source in `depth`.
+// Config: the map's option table (appearance_map_options.h), with the map's options in `map`,
+// the depth source in `depth` and the pose checks in `poses`.
+//
+// Poses: insertObservation(obs, robot_pose) takes the ROBOT's pose; the camera is at
+// robot_pose ⊕ obs.sensorPose (MRPT's convention). Poses a robot cannot have (pose_check.h) are
+// logged as warnings through MRPT's COutputLogger (the logger is named after the class).
 template <class Map, class Config, class Products>
-class ViewMapAdapter : public mrpt::maps::CMetricMap {
+class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutputLogger {
  public:
   bool isEmpty() const override { return map_->store().size() == 0; }
 
   /// Inserts a decoded frame directly (what insertObservation does after decoding), for callers
-  /// that read frames themselves. Same errors as the map's Insert.
+  /// that read frames themselves; T_world_cam is the camera's pose (+Z forward, +Y down), `time`
+  /// in seconds for the pose checks (NaN: unknown). Same errors as the map's Insert.
   const Products& InsertFrame(const cv::Mat& rgb, const cv::Mat& depth,
                               const core::PinholeCamera& camera,
-                              const Eigen::Isometry3d& T_world_cam) {
+                              const Eigen::Isometry3d& T_world_cam,
+                              double time = std::numeric_limits<double>::quiet_NaN()) {
+    WarnIfImplausible(T_world_cam, time);
     last_ = map_->Insert(rgb, depth, camera, T_world_cam);
     frame_ = core::Frame();
     frame_.rgb = rgb;
@@ -51,6 +64,10 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
   /// from the observation, the pose robot ⊕ sensor).
   const core::Frame& lastFrame() const { return frame_; }
   const Map& map() const { return *map_; }
+  /// The image the map expected for the last frame (the prior's mean), as an MRPT image.
+  mrpt::img::CImage expectedImage() const { return ToCImage(last_.expected_rgb); }
+  /// Frames whose camera pose the pose checks found implausible (each logged as a warning).
+  int poseWarnings() const { return pose_check_.warnings(); }
 
   /// MRPT-serialized map, written to a temporary file renamed into place.
   void SaveToFile(const std::string& path) const { SaveAtomically(*this, path); }
@@ -71,8 +88,10 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
 
  protected:
   ViewMapAdapter(const Config& config, const char* name, const char* extension)
-      : map_(std::make_unique<Map>(config.map)),
+      : mrpt::system::COutputLogger(name),
+        map_(std::make_unique<Map>(config.map)),
         depth_source_(config.depth),
+        pose_check_(config.poses),
         name_(name),
         extension_(extension) {}
 
@@ -81,6 +100,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
     Config c;
     c.map = map_->options();
     c.depth = depth_source_;
+    c.poses = pose_check_.options();
     return c;
   }
   /// Map file, version 2: every option by key (option_table.h), then the views.
@@ -96,6 +116,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
     if (version > kFileVersion) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
     Config c;
     c.depth = depth_source_;  // files before version 2 did not hold it: the map's stays
+    c.poses = pose_check_.options();
     if (version == kFileVersion) {
       Config::Table().Read(in, c);
     } else {
@@ -108,6 +129,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
     ReadViewMap(in, map->view_map());
     ReplaceMap(std::move(map));  // only now: a failure above leaves the map as it was
     depth_source_ = c.depth;
+    pose_check_ = PoseCheck(c.poses);
   }
 
   /// Replaces this map by the `Derived` map in `path`; throws std::runtime_error naming the file,
@@ -120,6 +142,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
     ViewMapAdapter& from = loaded;
     ReplaceMap(std::move(from.map_));
     depth_source_ = from.depth_source_;
+    pose_check_ = PoseCheck(from.pose_check_.options());
   }
   void ReplaceMap(std::unique_ptr<Map> map) {
     map_ = std::move(map);
@@ -131,9 +154,25 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
   Products last_;
   core::Frame frame_;
   DepthSourceOptions depth_source_;
+  PoseCheck pose_check_;
 
  private:
-  void internal_clear() override { ReplaceMap(std::make_unique<Map>(map_->options())); }
+  void internal_clear() override {
+    ReplaceMap(std::make_unique<Map>(map_->options()));
+    pose_check_.Reset();
+  }
+  // The first three implausible poses, then every hundredth: a wrong convention shows in every
+  // frame and must not drown the log.
+  void WarnIfImplausible(const Eigen::Isometry3d& T_world_cam, double time) {
+    const std::string problem = pose_check_.Check(T_world_cam, time);
+    const int n = pose_check_.warnings();
+    if (problem.empty() || (n > 3 && n % 100 != 0)) return;
+    MRPT_LOG_WARN_FMT(
+        "implausible camera pose (%d so far): %s. insertObservation takes the robot's pose; the "
+        "camera is at robot_pose + sensorPose (limits: the map's max_speed, max_tilt_deg, ... "
+        "options)",
+        n, problem.c_str());
+  }
   bool internal_insertObservation(
       const mrpt::obs::CObservation& obs,
       const std::optional<const mrpt::poses::CPose3D>& robot_pose = std::nullopt) override {
@@ -145,7 +184,9 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap {
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(std::string(name_) + ": " + e.what());
     }
-    InsertFrame(f.rgb, f.depth, f.camera, *f.T_world_cam);
+    InsertFrame(f.rgb, f.depth, f.camera, *f.T_world_cam,
+                obs.timestamp == INVALID_TIMESTAMP ? std::numeric_limits<double>::quiet_NaN()
+                                                   : mrpt::Clock::toDouble(obs.timestamp));
     return true;
   }
   double internal_computeObservationLikelihood(const mrpt::obs::CObservation&,

@@ -4,7 +4,7 @@
 
 #include <limits>
 
-#include "eval/false_color.h"
+#include "core/false_color.h"
 
 namespace novelty::eval {
 namespace {
@@ -27,7 +27,7 @@ TEST(NoveltyPanel, FiveCaptionedTilesWithTheCameraImageFirst) {
   EXPECT_EQ(cv::norm(panel(cv::Rect(0, strip, w, h)), rgb, cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(panel(cv::Rect(w + 4, strip, w, h)), p.expected_rgb, cv::NORM_INF), 0.0);
   // Differencing clamped to its scale draws as the top of the colour map, as FalseColor does.
-  const cv::Mat top = FalseColor(cv::Mat(1, 1, CV_32FC1, cv::Scalar(150)), 150.0);
+  const cv::Mat top = core::FalseColor(cv::Mat(1, 1, CV_32FC1, cv::Scalar(150)), 150.0);
   EXPECT_EQ(panel.at<cv::Vec3b>(strip + 5, 4 * (w + 4) + 5), top.at<cv::Vec3b>(0, 0));
 }
 

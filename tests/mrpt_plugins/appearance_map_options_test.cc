@@ -36,11 +36,11 @@ std::string Body(const std::string& path) {
 
 TEST(AppearanceMapOptions, ShippedIniIsTheDumpOfTheDefaults) {
   std::ostringstream dump;
-  AppearanceMapConfig().dumpToTextStream(dump);
+  AppearanceMapConfig().dumpAsMultiMap(dump);
   EXPECT_EQ(Body(std::string(NOVELTY_SOURCE_DIR) + "/share/appearance.ini"), dump.str())
       << "regenerate with: build/bin/novelty-info --dump-options CAppearanceMap";
   std::ostringstream diff_dump;
-  DifferencingMapConfig().dumpToTextStream(diff_dump);
+  DifferencingMapConfig().dumpAsMultiMap(diff_dump);
   EXPECT_EQ(Body(std::string(NOVELTY_SOURCE_DIR) + "/share/differencing.ini"), diff_dump.str())
       << "regenerate with: build/bin/novelty-info --dump-options CDifferencingMap";
 }

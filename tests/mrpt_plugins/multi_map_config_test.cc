@@ -2,8 +2,14 @@
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/maps/CMultiMetricMap.h>
 
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
+
+#include "mrpt_plugins/c_appearance_map.h"
+#include "mrpt_plugins/c_differencing_map.h"
 
 #include "mrpt_plugins/register_maps.h"
 
@@ -48,6 +54,54 @@ TEST(CheckMultiMapConfig, RejectsWhatMrptsLoaderIgnores) {
             "maps.ini: [map] xi: only <MapClass>_count keys belong in [map]");
   EXPECT_NE(ErrorOf("[map]\nCAppearanceMap_count = 1\n[map_CAppearanceMap_00_options\nxi = 9\n"),
             "");  // an unclosed header
+}
+
+std::string Read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string Shipped(const char* name) {
+  return Read(std::string(NOVELTY_SOURCE_DIR) + "/share/" + name);
+}
+
+// share/appearance.ini and share/differencing.ini drop into a CMultiMetricMap file as they are:
+// each alone declares its map, and the two pasted one after the other declare both (MRPT merges
+// the repeated [map] section).
+TEST(LoadMultiMapConfig, TheShippedFilesDropIn) {
+  for (const char* name : {"appearance.ini", "differencing.ini"}) {
+    const auto inits =
+        LoadMultiMapConfig(mrpt::config::CConfigFileMemory(Shipped(name)), "map", name);
+    EXPECT_EQ(inits.size(), 1u) << name;
+  }
+  const std::string both = Shipped("appearance.ini") + Shipped("differencing.ini");
+  mrpt::maps::CMultiMetricMap maps;
+  maps.setListOfMaps(LoadMultiMapConfig(mrpt::config::CConfigFileMemory(both), "map", "both"));
+  ASSERT_EQ(maps.maps.size(), 2u);
+  EXPECT_TRUE(maps.mapByClass<CAppearanceMap>());
+  EXPECT_TRUE(maps.mapByClass<CDifferencingMap>());
+}
+
+// A typo in a pasted file: the error names the file, the section and the key.
+TEST(LoadMultiMapConfig, TyposNameFileSectionAndKey) {
+  std::string text = Shipped("appearance.ini");
+  const auto at = text.find("forgetting_factor");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 17, "forgeting_factor");
+  try {
+    LoadMultiMapConfig(mrpt::config::CConfigFileMemory(text), "map", "robot.ini");
+    ADD_FAILURE() << "a misspelt key was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "robot.ini: [map_CAppearanceMap_00_options] forgeting_factor: unknown option");
+  }
+  std::string count = Shipped("appearance.ini");
+  count.replace(count.find("CAppearanceMap_count"), 20, "CApearanceMap_count");
+  EXPECT_THROW(LoadMultiMapConfig(mrpt::config::CConfigFileMemory(count), "map", "robot.ini"),
+               std::runtime_error);
+  EXPECT_THROW(LoadMultiMapConfig("/nonexistent/robot.ini"), std::runtime_error);
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 #include <gtest/gtest.h>
+#include <mrpt/maps/CMultiMetricMap.h>
 
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
-#include "examples/surprise_from_mrpt.h"
+#include "mrpt_plugins/c_appearance_map.h"
+#include "mrpt_plugins/multi_map_config.h"
 #include "tests/mrpt_plugins/clip_observations.h"
 
 namespace novelty::mrpt_plugins {
@@ -25,22 +27,25 @@ std::string Read(const std::string& path) {
 
 TEST(ReadmeExample, TheReadmeQuotesTheCompiledExample) {
   const std::string code =
-      Between(Read(std::string(NOVELTY_SOURCE_DIR) + "/examples/surprise_from_mrpt.cc"),
-              "// README example begins\n", "// README example ends\n");
+      Between(Read(std::string(NOVELTY_SOURCE_DIR) + "/examples/surprise_from_rawlog.cc"),
+              "  // README example begins\n", "  // README example ends\n");
   ASSERT_FALSE(code.empty());
   const std::string readme = Read(std::string(NOVELTY_SOURCE_DIR) + "/README.md");
   const std::string quoted = Between(readme, "```cpp\n", "```\n");
-  EXPECT_EQ(quoted, code) << "README.md's ```cpp block must equal examples/surprise_from_mrpt.cc";
+  EXPECT_EQ(quoted, code) << "README.md's ```cpp block must equal examples/surprise_from_rawlog.cc";
 }
 
-// The example run on a short clip with the shipped .ini: surprise appears once the map has views.
+// The example's steps on a short clip with the shipped .ini (the example itself is built against
+// the installed package and run by scripts/example.sh): surprise appears once the map has views,
+// its picture has the frame's size, and correct robot poses raise no pose warning.
 TEST(ReadmeExample, GivesSurpriseFromTheShippedIni) {
   mrpt::maps::CMultiMetricMap maps;
-  LoadMaps(std::string(NOVELTY_SOURCE_DIR) + "/share/novelty_run.ini", maps);
-  cv::Mat surprise;
-  for (const sim::SimulatedFrame& f : Frames()) {
-    surprise = Surprise(maps, Observation(f), mrpt::poses::CPose3D());
-  }
+  maps.setListOfMaps(
+      LoadMultiMapConfig(std::string(NOVELTY_SOURCE_DIR) + "/share/novelty_run.ini"));
+  for (const sim::SimulatedFrame& f : Frames())
+    maps.insertObservation(Observation(f), mrpt::poses::CPose3D());
+  const CAppearanceMap& map = *maps.mapByClass<CAppearanceMap>();
+  const cv::Mat& surprise = map.lastProducts().surprise;
   ASSERT_EQ(surprise.size(), cv::Size(160, 120));
   int finite = 0;
   for (auto it = surprise.begin<float>(); it != surprise.end<float>(); ++it) {
@@ -50,6 +55,32 @@ TEST(ReadmeExample, GivesSurpriseFromTheShippedIni) {
     }
   }
   EXPECT_GT(finite, 160 * 120 / 2);  // the arc returns over its own views
+  EXPECT_EQ(map.surpriseImage().getWidth(), 160u);
+  EXPECT_EQ(map.poseWarnings(), 0);
+}
+
+// The trap of the pose convention: the camera's pose passed where insertObservation wants the
+// robot's. The map cannot refuse it, but every such frame is warned about; the right poses of the
+// same frames raise nothing.
+TEST(ReadmeExample, TheCameraPosePassedAsTheRobotPoseIsWarnedAbout) {
+  Eigen::Isometry3d mount = Eigen::Isometry3d::Identity();  // camera on the robot, 1.1 m up
+  mount.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+  mount.linear() =
+      Eigen::AngleAxisd(16.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()) * mount.linear();
+  mount.translation() << 0.1, 0.0, 1.1;
+  const core::PinholeCamera camera = core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
+  CAppearanceMap right, wrong;
+  right.setMinLoggingLevel(mrpt::system::LVL_ERROR);  // the warnings are counted, not shown
+  wrong.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+  const int n = 12;
+  for (int k = 0; k < n; ++k) {
+    const sim::SimulatedFrame& f = Frames()[std::size_t(k)];
+    const auto obs = sensors::MakeRgbdObservation(f.time, f.rgb, f.depth, camera, mount);
+    right.insertObservation(obs, sensors::ToMrpt(f.T_world_cam * mount.inverse()));
+    wrong.insertObservation(obs, sensors::ToMrpt(f.T_world_cam));
+  }
+  EXPECT_EQ(right.poseWarnings(), 0);
+  EXPECT_EQ(wrong.poseWarnings(), n);
 }
 
 }  // namespace

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The portable build (-DNOVELTY_PORTABLE=ON, build-portable/): libraries for any x86-64 with their
+# AVX2 (x86-64-v3) and AVX-512 (x86-64-v4) variants in glibc-hwcaps/, chosen by the loader. Runs
+# the SIMD kernels' tests on every variant this CPU can run (the loader is told to ignore the
+# others: GLIBC_TUNABLES), then scripts/example.sh against this tree's installed package. Run
+# after scripts/build.sh (the packages are installed there).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tests=(lanes_test row_windows_test with_count_test normal_gamma_batch_test ycbcr_planes_test interleave_test fill_where_test
+       planar_blocks_test mesh_plan_test depth_mesh_warper_test quad_rasteriser_test
+       view_blender_test view_based_map_test c_appearance_map_test)
+cmake -S . -B build-portable -G Ninja -DCMAKE_BUILD_TYPE=Release -DNOVELTY_NATIVE=OFF \
+  -DNOVELTY_PORTABLE=ON > /dev/null
+cmake --build build-portable --parallel "$(nproc)" --target "${tests[@]}" novelty-sim novelty-run \
+  novelty-depth novelty-poses novelty-synth novelty-info
+
+# The variant the loader picks for a test, e.g. "glibc-hwcaps/x86-64-v3" or "" (baseline).
+variant() {
+  env ${1:+GLIBC_TUNABLES=$1} LD_DEBUG=libs build-portable/bin/normal_gamma_batch_test \
+    --gtest_list_tests 2>&1 | grep -o 'build-portable/lib/[^ ]*libnovelty_maps.so[^ ]*' | head -1
+}
+for mask in "" "glibc.cpu.hwcaps=-AVX512F" "glibc.cpu.hwcaps=-AVX512F,-AVX2"; do
+  echo "portable: ${mask:-no mask}: $(variant "$mask")"
+  for t in "${tests[@]}"; do
+    env ${mask:+GLIBC_TUNABLES=$mask} build-portable/bin/"$t" --gtest_brief=1 > /tmp/portable.log \
+      || { cat /tmp/portable.log; echo "portable: $t failed (${mask:-no mask})"; exit 1; }
+  done
+done
+bash scripts/example.sh build-portable
