@@ -18,6 +18,7 @@
 #include <optional>
 
 #include "core/frame_stem.h"
+#include "core/same_file.h"
 #include "eval/depth_accuracy.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rawlog_output.h"
@@ -53,8 +54,9 @@ int main(int argc, char** argv) {
     options.sweep.far = far.getValue();
     options.sweep.hypotheses = hypotheses.getValue();
     options.sweep.window = window.getValue();
-    if (std::filesystem::absolute(in.getValue()) == std::filesystem::absolute(out.getValue()))
-      throw std::invalid_argument("--out must differ from the input rawlog");
+    if (core::SameFile(in.getValue(), out.getValue()))
+      throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
+                                  in.getValue() + ": it would be overwritten");
 
     std::optional<sim::GroundTruthReader> ground_truth;
     if (truth.isSet()) ground_truth.emplace(truth.getValue());

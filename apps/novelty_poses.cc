@@ -33,6 +33,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/same_file.h"
 #include "sensors/localization/direct_odometry.h"
 #include "sensors/localization/visual_odometry.h"
 #include "sensors/rawlog/camera_pose_observation.h"
@@ -152,8 +153,9 @@ int main(int argc, char** argv) {
     TCLAP::ValueArg<std::string> truth("", "groundtruth", "Report errors against this folder",
                                        false, "", "DIR", cmd);
     cmd.parse(argc, argv);
-    if (std::filesystem::absolute(in.getValue()) == std::filesystem::absolute(out.getValue()))
-      throw std::invalid_argument("--out must differ from the input rawlog");
+    if (core::SameFile(in.getValue(), out.getValue()))
+      throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
+                                  in.getValue() + ": it would be overwritten");
 
     const bool visual = source.getValue() == "visual";
     int rejected = 0;

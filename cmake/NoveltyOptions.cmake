@@ -105,7 +105,8 @@ function(novelty_add_hwcaps_variant name level sources)
   target_compile_options(${variant} PRIVATE -march=${level})
   set_target_properties(${variant} PROPERTIES
     OUTPUT_NAME ${name} VERSION ${PROJECT_VERSION} SOVERSION ${NOVELTY_SOVERSION}
-    LIBRARY_OUTPUT_DIRECTORY ${CMAKE_LIBRARY_OUTPUT_DIRECTORY}/glibc-hwcaps/${level})
+    LIBRARY_OUTPUT_DIRECTORY ${CMAKE_LIBRARY_OUTPUT_DIRECTORY}/glibc-hwcaps/${level}
+    INSTALL_RPATH "$ORIGIN/../..")  # its dependencies (and their variants) are two folders up
   add_dependencies(${name} ${variant})  # whatever runs the library finds its variants built
   install(TARGETS ${variant} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/glibc-hwcaps/${level})
 endfunction()

@@ -80,6 +80,13 @@ double ParseOptionText(const OptionEntry& entry, const std::string& text) {
   return value;
 }
 
+void CheckPositive(double value, const char* key) {
+  if (!(value > 0.0)) throw std::invalid_argument(std::string(key) + " must be > 0");
+}
+void CheckNotNegative(double value, const char* key) {
+  if (!(value >= 0.0)) throw std::invalid_argument(std::string(key) + " must be >= 0");
+}
+
 std::string OptionText(const OptionEntry& entry, double field_value) {
   const double value = field_value / entry.scale;
   switch (entry.kind) {

@@ -307,6 +307,10 @@ class TabledOptions : public mrpt::config::CLoadableOptions {
   const Derived& Self() const { return static_cast<const Derived&>(*this); }
 };
 
+/// Range checks for OptionTable::Check: throw std::invalid_argument "KEY must be > 0" (>= 0).
+void CheckPositive(double value, const char* key);
+void CheckNotNegative(double value, const char* key);
+
 /// Opens an `.ini` file for TabledOptions::FromFile; throws std::runtime_error naming a missing
 /// file, one that is not text, or one MRPT cannot parse.
 std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string& path);

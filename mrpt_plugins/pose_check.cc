@@ -10,10 +10,6 @@ namespace {
 
 constexpr double kMinInterval = 0.1;  // s: timestamps closer than this (or none) count as 0.1 s
 
-void CheckNotNegative(double v, const char* key) {
-  if (!(v >= 0.0)) throw std::invalid_argument(std::string(key) + " must be >= 0 (0 = no check)");
-}
-
 std::string Format(const char* format, double a, double b) {
   char text[256];
   std::snprintf(text, sizeof text, format, a, b);

@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "mrpt_plugins/cimage_products.h"
 #include "mrpt_plugins/depth_source.h"
 #include "mrpt_plugins/map_files.h"
 #include "mrpt_plugins/pose_check.h"
-#include "mrpt_plugins/cimage_products.h"
 #include "mrpt_plugins/register_maps.h"
 
 namespace novelty::mrpt_plugins {

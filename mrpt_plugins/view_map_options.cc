@@ -4,17 +4,6 @@
 
 namespace novelty::mrpt_plugins {
 
-namespace {
-
-void CheckPositive(double v, const char* key) {
-  if (!(v > 0.0)) throw std::invalid_argument(std::string(key) + " must be > 0");
-}
-void CheckNotNegative(double v, const char* key) {
-  if (!(v >= 0.0)) throw std::invalid_argument(std::string(key) + " must be >= 0");
-}
-
-}  // namespace
-
 const OptionTable<appearance::ViewBasedMapOptions>& ViewMapOptionTable() {
   using O = appearance::ViewBasedMapOptions;
   static const OptionTable<O> table = [] {

@@ -17,13 +17,14 @@ cmake --build build-portable --parallel "$(nproc)" --target "${tests[@]}" novelt
 # The variant the loader picks for a test, e.g. "glibc-hwcaps/x86-64-v3" or "" (baseline).
 variant() {
   env ${1:+GLIBC_TUNABLES=$1} LD_DEBUG=libs build-portable/bin/normal_gamma_batch_test \
-    --gtest_list_tests 2>&1 | grep -o 'build-portable/lib/[^ ]*libnovelty_maps.so[^ ]*' | head -1
+    --gtest_list_tests 2>&1 | grep -o 'calling init: .*libnovelty_maps[^ ]*' | head -1
 }
+log=$(mktemp)
 for mask in "" "glibc.cpu.hwcaps=-AVX512F" "glibc.cpu.hwcaps=-AVX512F,-AVX2"; do
   echo "portable: ${mask:-no mask}: $(variant "$mask")"
   for t in "${tests[@]}"; do
-    env ${mask:+GLIBC_TUNABLES=$mask} build-portable/bin/"$t" --gtest_brief=1 > /tmp/portable.log \
-      || { cat /tmp/portable.log; echo "portable: $t failed (${mask:-no mask})"; exit 1; }
+    env ${mask:+GLIBC_TUNABLES=$mask} build-portable/bin/"$t" --gtest_brief=1 > "$log" 2>&1 \
+      || { cat "$log"; echo "portable: $t failed (${mask:-no mask})"; exit 1; }
   done
 done
 bash scripts/example.sh build-portable

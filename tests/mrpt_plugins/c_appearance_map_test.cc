@@ -12,7 +12,6 @@
 #include <sstream>
 
 #include "mrpt_plugins/map_files.h"
-#include "mrpt_plugins/register_maps.h"
 #include "tests/mrpt_plugins/clip_observations.h"
 
 namespace novelty::mrpt_plugins {
@@ -170,7 +169,6 @@ CAppearanceMap_count = 1
 [map_CAppearanceMap_00_options]
 forgetting_factor = 0.7
 )");
-  RegisterMaps();
   mrpt::maps::TSetOfMetricMapInitializers inits;
   inits.loadFromConfigFile(ini, "map");
   mrpt::maps::CMultiMetricMap multi;

@@ -6,7 +6,6 @@
 
 #include <filesystem>
 
-#include "mrpt_plugins/register_maps.h"
 #include "tests/mrpt_plugins/clip_observations.h"
 
 namespace novelty::mrpt_plugins {
@@ -41,7 +40,6 @@ CDifferencingMap_count = 1
 [map_CDifferencingMap_00_options]
 new_view_distance = 0.02
 )");
-  RegisterMaps();
   mrpt::maps::TSetOfMetricMapInitializers inits;
   inits.loadFromConfigFile(ini, "map");
   mrpt::maps::CMultiMetricMap multi;

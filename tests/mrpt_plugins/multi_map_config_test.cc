@@ -11,14 +11,12 @@
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
 
-#include "mrpt_plugins/register_maps.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
 
 // The error CheckMultiMapConfig gives for `text`, or "" when it accepts it.
 std::string ErrorOf(const std::string& text) {
-  RegisterMaps();
   const mrpt::config::CConfigFileMemory ini(text);
   try {
     CheckMultiMapConfig(ini, "map", "maps.ini", {"CAppearanceMap"});

@@ -10,7 +10,6 @@
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
-#include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sim/output/ground_truth_reader.h"
 #include "tests/sim/scenario/simulated_run.h"
@@ -44,7 +43,6 @@ arc 0 0 1.6 -90 -100 0.15
 
 // The maps of an .ini, as an MRPT program builds them.
 void BuildMaps(const mrpt::config::CConfigFileBase& ini, mrpt::maps::CMultiMetricMap& multi) {
-  RegisterMaps();
   mrpt::maps::TSetOfMetricMapInitializers inits;
   inits.loadFromConfigFile(ini, "map");
   multi.setListOfMaps(inits);

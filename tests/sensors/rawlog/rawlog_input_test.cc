@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "tests/sim/scenario/simulated_run.h"
+#include "tests/sensors/rawlog/tiny_run.h"
 
 namespace novelty::sensors {
 namespace {
@@ -21,18 +21,7 @@ TEST(ImagesDirOf, IsTheRawlogsNameWithImagesBesideIt) {
 // A rawlog opened from another folder than the working one: its external images load (MRPT's
 // own lookup would search beside the working folder).
 TEST(RawlogInput, FindsExternalImagesFromAnyWorkingFolder) {
-  const fs::path dir = sim::SimulateIntoTempFolder(R"(
-name tiny
-frames 3
-fps 5
-camera 64 48 60
-rig rgbd
-material wood phong 0.5 0.3 0.1
-object table box 1.0 0.6 0.70 wood at 0 0 fixed
-lamp l1 0.5 -0.5 2.5 1.5 1.5 1.5
-arc 0 0 1.5 -100 -80 0.1
-)",
-                                                   "novelty_rawlog_input");
+  const fs::path dir = SimulateTinyRun("input");
   const fs::path cwd = fs::current_path();
   fs::current_path(fs::temp_directory_path());
   RawlogInput input((dir / "tiny.rawlog").string());
@@ -45,7 +34,7 @@ arc 0 0 1.5 -100 -80 0.1
     }
   }
   fs::current_path(cwd);
-  EXPECT_EQ(images, 3);
+  EXPECT_EQ(images, 6);
   EXPECT_THROW(RawlogInput((dir / "missing.rawlog").string()), std::runtime_error);
 }
 
