@@ -8,17 +8,10 @@
 #include <optional>
 #include <string>
 
+#include "core/eigen_abi.h"
 #include "core/pinhole_camera.h"
 
 namespace novelty::core {
-
-// The public headers hold Eigen fixed-size types; their layout must not depend on the instruction
-// set a program is compiled for (AVX would make Eigen align them to 32 bytes, AVX-512 to 64). The
-// exported targets define EIGEN_MAX_ALIGN_BYTES=16 (cmake/NoveltyOptions.cmake); a program that
-// includes these headers without it fails here instead of crashing in the library.
-static_assert(alignof(Eigen::Isometry3d) == 16,
-              "NoveltyMaps: compile with -DEIGEN_MAX_ALIGN_BYTES=16 (link the NoveltyMaps:: "
-              "targets, which set it)");
 
 struct Frame {
   int index = 0;      ///< 1-based number in its source (a rawlog's RGB-D frames, a folder)

@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::core {
 
 struct PinholeCamera {

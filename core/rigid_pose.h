@@ -4,6 +4,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::core {
 
 /// True if T is a rigid transform (orthonormal rotation with det +1, finite translation).

@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 #include <map>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::eval {
 
 /// The last frame of the first run of the phase [first, last]: the frame whose camera position is

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "mrpt_plugins/option_table.h"
+#include "sensors/rawlog/brief_message.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 namespace novelty::mrpt_plugins {
@@ -134,11 +135,16 @@ void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<dou
 
 void SaveAtomically(const mrpt::serialization::CSerializable& object, const std::string& path) {
   const std::string tmp = path + ".tmp";
-  {
+  try {
     mrpt::io::CFileGZOutputStream file(tmp);
-    if (!file.fileOpenCorrectly()) throw std::runtime_error(tmp + ": cannot open for writing");
+    if (!file.fileOpenCorrectly()) throw std::runtime_error("cannot open " + tmp);
     auto arch = mrpt::serialization::archiveFrom(file);
     arch << object;
+  } catch (const std::exception& e) {  // MRPT's own message spans many lines: one is enough
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw std::runtime_error(path + ": cannot save (folder missing, not writable or full?): " +
+                             sensors::BriefMessage(e));
   }
   std::filesystem::rename(tmp, path);
 }

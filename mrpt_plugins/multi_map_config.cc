@@ -32,6 +32,9 @@ std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBa
   std::vector<std::string> keys, sections;
   ini.getAllKeys(section, keys);
   ini.getAllSections(sections);
+  if (keys.empty())
+    throw std::runtime_error(source + ": no section [" + section +
+                             "] declaring maps (<MapClass>_count = N)");
   std::map<std::string, int> counts;
   for (const std::string& key : keys) {
     const std::string where = source + ": [" + section + "] " + key;
@@ -39,8 +42,15 @@ std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBa
     if (suffix == std::string::npos || suffix + 6 != key.size())
       throw std::runtime_error(where + ": only <MapClass>_count keys belong in [" + section + "]");
     const std::string cls = key.substr(0, suffix);
-    const int n = ini.read_int(section, key, -1);
-    if (n < 0) throw std::runtime_error(where + ": not a count >= 0");
+    const std::string text = StripIniComment(ini.read_string(section, key, ""));
+    std::size_t used = 0;
+    int n = -1;
+    try {
+      n = std::stoi(text, &used);
+    } catch (const std::exception&) {
+    }
+    if (n < 0 || used != text.size())
+      throw std::runtime_error(where + " = '" + text + "': not a count >= 0");
     if (n > 0 && !std::unique_ptr<mrpt::maps::TMetricMapInitializer>(
                      mrpt::maps::TMetricMapInitializer::factory(cls)))
       throw std::runtime_error(where + ": unknown map class '" + cls + "'");

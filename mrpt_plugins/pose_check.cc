@@ -35,6 +35,9 @@ const OptionTable<PoseCheckOptions>& PoseCheckOptionTable() {
         .Add(
             "min_height", [](O & o) -> auto& { return o.min_height; },
             "m; ... or it is lower (below the floor, z = 0)")
+        .Add(
+            "sensor_pose_tolerance", [](O & o) -> auto& { return o.sensor_pose_tolerance; },
+            "m; ... or the robot pose is at the sensor's height on the robot (0 = no check)")
         .Check([](const O& o) {
           CheckNotNegative(o.max_speed, "max_speed");
           CheckNotNegative(o.max_turn_rate, "max_turn_rate_deg");
@@ -47,7 +50,17 @@ const OptionTable<PoseCheckOptions>& PoseCheckOptionTable() {
   return table;
 }
 
-std::string PoseCheck::Check(const Eigen::Isometry3d& T_world_cam, double time) {
+namespace {
+
+// Angle (rad) between a frame's z axis and the z axis of what it is expressed in.
+double Tilt(const Eigen::Isometry3d& pose) {
+  return std::acos(std::clamp(pose.linear()(2, 2), -1.0, 1.0));
+}
+
+}  // namespace
+
+std::string PoseCheck::Check(const Eigen::Isometry3d& T_world_cam, double time,
+                             const std::optional<Mount>& mount) {
   std::string problems;
   const auto add = [&problems](const std::string& p) {
     problems += (problems.empty() ? "" : "; ") + p;
@@ -60,6 +73,19 @@ std::string PoseCheck::Check(const Eigen::Isometry3d& T_world_cam, double time) 
   if (T_world_cam.translation().z() < options_.min_height)
     add(Format("camera %.2f m below the floor (limit %.2f m)", -T_world_cam.translation().z(),
                -options_.min_height));
+  if (mount && options_.sensor_pose_tolerance > 0) {
+    const double sensor_height = mount->sensor_on_robot.translation().z(),
+                 sensor_tilt = Tilt(mount->sensor_on_robot);
+    const bool distinct = std::abs(sensor_height) >= 0.05 || sensor_tilt >= 3.0 * M_PI / 180.0;
+    if (distinct &&
+        std::abs(mount->robot.translation().z() - sensor_height) <=
+            options_.sensor_pose_tolerance &&
+        std::abs(Tilt(mount->robot) - sensor_tilt) <= 2.0 * M_PI / 180.0)
+      add(
+          Format("the robot pose is at the sensor's height (%.2f m) and tilt (%.0f deg): "
+                 "robot + sensorPose passed as the robot pose?",
+                 sensor_height, sensor_tilt * 180 / M_PI));
+  }
   if (last_) {
     const double dt = std::isfinite(time) && std::isfinite(last_->time)
                           ? std::max(std::abs(time - last_->time), kMinInterval)

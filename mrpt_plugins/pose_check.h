@@ -2,14 +2,17 @@
 // camera at robot_pose ⊕ obs.sensorPose; a program that passes the camera's pose instead applies
 // the sensor pose twice, and the map silently gets fewer views and more surprise. Such poses
 // usually show: the camera ends up steeply tilted or rolled (looking into the floor), below the
-// floor, or it jumps between frames farther than a robot moves. Each is reported, never refused:
-// a handheld or ceiling camera may be fine with it (set the limit to 0 to turn a check off).
+// floor, or it jumps between frames farther than a robot moves; or the robot pose itself sits at
+// the sensor's height with the sensor's tilt (it is robot ⊕ sensorPose, a ground robot's pose is
+// at the floor and level). Each is reported, never refused: a handheld or ceiling camera may be
+// fine (set a limit to 0 to turn its check off).
 #pragma once
 
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>
 
+#include "core/eigen_abi.h"
 #include "mrpt_plugins/option_table.h"
 
 namespace novelty::mrpt_plugins {
@@ -25,19 +28,31 @@ struct PoseCheckOptions {
   double max_tilt = 60.0 * M_PI / 180.0;
   /// m; a camera centre lower than this is below the floor (the world's z = 0).
   double min_height = -0.05;
+  /// m; a robot pose within this of the sensor's height on the robot, and tilted like the sensor
+  /// (within 2 degrees), is the sensor's pose passed as the robot's. Only for sensors mounted at
+  /// least 5 cm up or tilted at least 3 degrees (others cannot be told apart).
+  double sensor_pose_tolerance = 0.02;
 };
 
-/// max_speed, max_turn_rate_deg, max_tilt_deg, min_height.
+/// max_speed, max_turn_rate_deg, max_tilt_deg, min_height, sensor_pose_tolerance.
 const OptionTable<PoseCheckOptions>& PoseCheckOptionTable();
 
 class PoseCheck {
  public:
   explicit PoseCheck(const PoseCheckOptions& options = {}) : options_(options) {}
 
+  /// Where the camera came from: the robot pose given and the sensor's pose on the robot (MRPT's
+  /// sensorPose), for observations inserted with insertObservation.
+  struct Mount {
+    Eigen::Isometry3d robot;
+    Eigen::Isometry3d sensor_on_robot;
+  };
+
   /// Checks the camera pose T_world_cam (camera +Z forward, +Y down) of the frame at `time`
-  /// (seconds; NaN if unknown) against the last one; returns what is implausible ("" if
-  /// nothing), in one line for a log.
-  std::string Check(const Eigen::Isometry3d& T_world_cam, double time);
+  /// (seconds; NaN if unknown) against the last one, and the robot pose it came from (if
+  /// `mount`); returns what is implausible ("" if nothing), in one line for a log.
+  std::string Check(const Eigen::Isometry3d& T_world_cam, double time,
+                    const std::optional<Mount>& mount = std::nullopt);
   /// Forget the last pose (a new run, a cleared map).
   void Reset() { last_.reset(); }
 

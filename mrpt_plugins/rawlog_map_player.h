@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::mrpt_plugins {
 
 enum class PoseSource { kGroundTruth, kRawlog, kOdometry };

@@ -25,6 +25,7 @@
 #include "mrpt_plugins/map_files.h"
 #include "mrpt_plugins/pose_check.h"
 #include "mrpt_plugins/register_maps.h"
+#include "sensors/rawlog/rgbd_observation.h"
 
 namespace novelty::mrpt_plugins {
 
@@ -46,14 +47,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
                               const core::PinholeCamera& camera,
                               const Eigen::Isometry3d& T_world_cam,
                               double time = std::numeric_limits<double>::quiet_NaN()) {
-    WarnIfImplausible(T_world_cam, time);
-    last_ = map_->Insert(rgb, depth, camera, T_world_cam);
-    frame_ = core::Frame();
-    frame_.rgb = rgb;
-    frame_.depth = depth;
-    frame_.camera = camera;
-    frame_.T_world_cam = T_world_cam;
-    return last_;
+    return Insert(rgb, depth, camera, T_world_cam, time, std::nullopt);
   }
   /// Where camera observations without depth get it (default: they are not used).
   void setDepthSource(const DepthSourceOptions& options) { depth_source_ = options; }
@@ -161,10 +155,23 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     ReplaceMap(std::make_unique<Map>(map_->options()));
     pose_check_.Reset();
   }
+  const Products& Insert(const cv::Mat& rgb, const cv::Mat& depth,
+                         const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+                         double time, const std::optional<PoseCheck::Mount>& mount) {
+    WarnIfImplausible(T_world_cam, time, mount);
+    last_ = map_->Insert(rgb, depth, camera, T_world_cam);
+    frame_ = core::Frame();
+    frame_.rgb = rgb;
+    frame_.depth = depth;
+    frame_.camera = camera;
+    frame_.T_world_cam = T_world_cam;
+    return last_;
+  }
   // The first three implausible poses, then every hundredth: a wrong convention shows in every
   // frame and must not drown the log.
-  void WarnIfImplausible(const Eigen::Isometry3d& T_world_cam, double time) {
-    const std::string problem = pose_check_.Check(T_world_cam, time);
+  void WarnIfImplausible(const Eigen::Isometry3d& T_world_cam, double time,
+                         const std::optional<PoseCheck::Mount>& mount) {
+    const std::string problem = pose_check_.Check(T_world_cam, time, mount);
     const int n = pose_check_.warnings();
     if (problem.empty() || (n > 3 && n % 100 != 0)) return;
     MRPT_LOG_WARN_FMT(
@@ -184,9 +191,14 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(std::string(name_) + ": " + e.what());
     }
-    InsertFrame(f.rgb, f.depth, f.camera, *f.T_world_cam,
-                obs.timestamp == INVALID_TIMESTAMP ? std::numeric_limits<double>::quiet_NaN()
-                                                   : mrpt::Clock::toDouble(obs.timestamp));
+    mrpt::poses::CPose3D sensor_on_robot;
+    obs.getSensorPose(sensor_on_robot);
+    const PoseCheck::Mount mount{sensors::ToEigen(robot_pose.value_or(mrpt::poses::CPose3D())),
+                                 sensors::ToEigen(sensor_on_robot)};
+    Insert(f.rgb, f.depth, f.camera, *f.T_world_cam,
+           obs.timestamp == INVALID_TIMESTAMP ? std::numeric_limits<double>::quiet_NaN()
+                                              : mrpt::Clock::toDouble(obs.timestamp),
+           mount);
     return true;
   }
   double internal_computeObservationLikelihood(const mrpt::obs::CObservation&,

@@ -19,6 +19,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "maps/appearance/view_based_map.h"
 #include "maps/stats/normal_gamma_batch.h"
 

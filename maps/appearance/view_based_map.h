@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "maps/views/depth_mesh_warper.h"
 #include "maps/views/reference_view_store.h"
 #include "maps/views/view_blender.h"

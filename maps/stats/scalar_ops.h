@@ -7,6 +7,8 @@
 #include <cmath>
 #include <type_traits>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::stats {
 
 namespace detail {

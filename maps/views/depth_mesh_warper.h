@@ -18,6 +18,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "core/pinhole_camera.h"
 #include "maps/views/mesh_plan.h"
 

@@ -10,6 +10,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "core/lanes.h"
 #include "core/pinhole_camera.h"
 #include "maps/views/mesh_plan.h"

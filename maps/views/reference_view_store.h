@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "core/frame.h"
 #include "core/pinhole_camera.h"
 

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "core/pinhole_camera.h"
 
 namespace novelty::views {

@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "maps/views/depth_mesh_warper.h"
 #include "maps/views/mesh_plan.h"
 #include "maps/views/reference_view_store.h"

@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "core/eigen_abi.h"
 #include "core/frame.h"
 #include "core/pinhole_camera.h"
 

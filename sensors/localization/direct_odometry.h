@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include "core/eigen_abi.h"
 #include "sensors/localization/epipolar_depth.h"
 #include "sensors/localization/keyframe_relocalizer.h"
 #include "sensors/localization/local_normalization.h"
@@ -39,7 +40,7 @@ struct DirectOdometryOptions {
   double keyframe_distance = 0.1;
   double keyframe_angle_deg = 8.0;
   double min_visible_fraction = 0.6;
-  int min_points = 100;   ///< a keyframe (or an alignment) with fewer points fails
+  int min_points = 100;  ///< a keyframe (or an alignment) with fewer points fails
   /// Photometric RMS of the aligned images above which tracking is lost (in the units of the
   /// normalized images, which `normalization.scale` keeps comparable to grey levels).
   double max_rms = 25.0;

@@ -10,6 +10,7 @@
 #include <opencv2/core.hpp>
 #include <optional>
 
+#include "core/eigen_abi.h"
 #include "sensors/localization/stereo_pair.h"
 #include "sensors/localization/stereo_triangulation.h"
 
@@ -17,8 +18,8 @@ namespace novelty::sensors {
 
 struct KeyframeRelocalizerOptions {
   StereoTriangulationOptions stereo;
-  int orb_features = 500;       ///< ORB features detected per image
-  double ratio = 0.8;           ///< Lowe's ratio test of the two nearest descriptors
+  int orb_features = 500;  ///< ORB features detected per image
+  double ratio = 0.8;      ///< Lowe's ratio test of the two nearest descriptors
   int ransac_iterations = 200;
   double reprojection_px = 2.0;  ///< RANSAC inlier threshold
   int min_inliers = 12;          ///< fewer: the keyframe does not match

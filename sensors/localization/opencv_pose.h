@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/core/eigen.hpp>
 
+#include "core/eigen_abi.h"
 #include "core/pinhole_camera.h"
 
 namespace novelty::sensors {

@@ -15,6 +15,8 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::sensors {
 
 struct SupportView {

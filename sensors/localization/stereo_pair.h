@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
+#include "core/eigen_abi.h"
 #include "core/pinhole_camera.h"
 
 namespace novelty::sensors {

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "sensors/localization/stereo_pair.h"
 
 namespace novelty::sensors {

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "sensors/localization/direct_odometry.h"
 #include "sensors/localization/sequence_registration.h"
 #include "sensors/localization/stereo_pair.h"

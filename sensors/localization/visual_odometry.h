@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "sensors/localization/keyframe_relocalizer.h"
 #include "sensors/localization/stereo_pair.h"
 #include "sensors/localization/stereo_triangulation.h"

@@ -10,6 +10,8 @@
 #include <Eigen/Geometry>
 #include <string>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::sensors {
 
 /// `time`: seconds since the Unix epoch; `std_position`/`std_angle`: the pose's uncertainty

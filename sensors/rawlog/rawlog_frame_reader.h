@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "core/frame.h"
 
 namespace novelty::sensors {

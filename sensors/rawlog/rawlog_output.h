@@ -13,6 +13,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "core/eigen_abi.h"
 #include "core/pinhole_camera.h"
 
 namespace novelty::sensors {

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::sensors {
 
 /// One tracker sample: each LED's measured world position (index 0…3 = LED 1…4), or none when

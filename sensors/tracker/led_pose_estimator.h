@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "core/eigen_abi.h"
 #include "sensors/tracker/led_plate.h"
 
 namespace novelty::sensors {

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::sensors {
 
 struct TimedPose {

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/eigen_abi.h"
+
 namespace novelty::sensors {
 
 struct RigidFitResult {

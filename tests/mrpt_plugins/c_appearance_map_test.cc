@@ -162,6 +162,22 @@ TEST(CAppearanceMap, TruncatedOrForeignFilesAreRejectedAndTheMapKept) {
   other.insertObservation(Observation(Frames()[3]));  // and it still works
 }
 
+// A save that cannot be written says so in one line naming the file, and leaves nothing behind.
+TEST(CAppearanceMap, AnUnwritableSaveIsOneLineNamingTheFile) {
+  CAppearanceMap map;
+  map.insertObservation(Observation(Frames()[0]));
+  const fs::path file = fs::temp_directory_path() / "novelty_no_such_folder" / "map.bin";
+  try {
+    map.SaveToFile(file.string());
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(file.string() + ": cannot save", 0), 0u) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+}
+
 TEST(CAppearanceMap, DeclaredInAMultiMetricMapIniWithItsOptions) {
   const mrpt::config::CConfigFileMemory ini(R"(
 [map]

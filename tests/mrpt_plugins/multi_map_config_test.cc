@@ -52,6 +52,11 @@ TEST(CheckMultiMapConfig, RejectsWhatMrptsLoaderIgnores) {
             "maps.ini: [map] xi: only <MapClass>_count keys belong in [map]");
   EXPECT_NE(ErrorOf("[map]\nCAppearanceMap_count = 1\n[map_CAppearanceMap_00_options\nxi = 9\n"),
             "");  // an unclosed header
+  EXPECT_EQ(ErrorOf("[maps]\nCAppearanceMap_count = 1\n"),
+            "maps.ini: no section [map] declaring maps (<MapClass>_count = N)");
+  EXPECT_EQ(ErrorOf("[map]\nCAppearanceMap_count = one\n"),
+            "maps.ini: [map] CAppearanceMap_count = 'one': not a count >= 0");
+  EXPECT_EQ(ErrorOf("[map]\nCAppearanceMap_count = 1 ; the map\n"), "");
 }
 
 std::string Read(const std::string& path) {

@@ -76,5 +76,24 @@ TEST(PoseCheck, EachLimitOnBothSides) {
   EXPECT_EQ(unchecked.Check(Robot(5.0, 0.0, 0.0) * RobotFromCamera(0.0), 0.1), "");
 }
 
+// The sensor's pose passed as the robot's: the robot pose sits at the sensor's height with its
+// tilt. The right robot pose (at the floor, level) and a sensor at the robot's origin (nothing
+// to tell apart) raise nothing.
+TEST(PoseCheck, TheSensorPosePassedAsTheRobotPoseIsReported) {
+  const double deg = M_PI / 180.0;
+  Eigen::Isometry3d sensor = Eigen::Isometry3d::Identity();  // MRPT's sensorPose: x forward, z up
+  sensor.linear() = Eigen::AngleAxisd(16 * deg, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  sensor.translation() << 0.1, 0.0, 1.1;
+  const Eigen::Isometry3d robot = Robot(2.0, 1.0, 0.7);
+  const Eigen::Isometry3d camera = RobotFromCamera(16 * deg);  // where the check looks anyway
+  EXPECT_EQ(PoseCheck().Check(camera, 0.0, PoseCheck::Mount{robot, sensor}), "");
+  EXPECT_NE(PoseCheck()
+                .Check(camera, 0.0, PoseCheck::Mount{robot * sensor, sensor})
+                .find("robot + sensorPose passed as the robot pose?"),
+            std::string::npos);
+  EXPECT_EQ(PoseCheck().Check(camera, 0.0, PoseCheck::Mount{robot, Eigen::Isometry3d::Identity()}),
+            "");
+}
+
 }  // namespace
 }  // namespace novelty::mrpt_plugins

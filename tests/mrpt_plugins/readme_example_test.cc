@@ -69,18 +69,22 @@ TEST(ReadmeExample, TheCameraPosePassedAsTheRobotPoseIsWarnedAbout) {
       Eigen::AngleAxisd(16.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()) * mount.linear();
   mount.translation() << 0.1, 0.0, 1.1;
   const core::PinholeCamera camera = core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
-  CAppearanceMap right, wrong;
-  right.setMinLoggingLevel(mrpt::system::LVL_ERROR);  // the warnings are counted, not shown
-  wrong.setMinLoggingLevel(mrpt::system::LVL_ERROR);
+  CAppearanceMap right, wrong, twice;
+  for (CAppearanceMap* m : {&right, &wrong, &twice})
+    m->setMinLoggingLevel(mrpt::system::LVL_ERROR);  // the warnings are counted, not shown
   const int n = 12;
   for (int k = 0; k < n; ++k) {
     const sim::SimulatedFrame& f = Frames()[std::size_t(k)];
     const auto obs = sensors::MakeRgbdObservation(f.time, f.rgb, f.depth, camera, mount);
     right.insertObservation(obs, sensors::ToMrpt(f.T_world_cam * mount.inverse()));
-    wrong.insertObservation(obs, sensors::ToMrpt(f.T_world_cam));
+    wrong.insertObservation(obs, sensors::ToMrpt(f.T_world_cam));  // the optical pose
+    mrpt::poses::CPose3D sensor;
+    obs.getSensorPose(sensor);  // robot ⊕ sensorPose: the sensor's pose in the world
+    twice.insertObservation(obs, sensors::ToMrpt(f.T_world_cam * mount.inverse()) + sensor);
   }
   EXPECT_EQ(right.poseWarnings(), 0);
   EXPECT_EQ(wrong.poseWarnings(), n);
+  EXPECT_EQ(twice.poseWarnings(), n);
 }
 
 }  // namespace

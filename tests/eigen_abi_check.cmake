@@ -1,0 +1,20 @@
+# Every installed header that includes Eigen also includes core/eigen_abi.h, whose static_assert
+# stops a program compiled without the exported EIGEN_MAX_ALIGN_BYTES=16 (the ABI of the
+# fixed-size types). Run: cmake -DSOURCE_DIR=… -P this file.
+set(missing "")
+foreach(part core maps eval sensors mrpt_plugins)
+  file(GLOB_RECURSE headers "${SOURCE_DIR}/${part}/*.h")
+  foreach(header ${headers})
+    file(STRINGS "${header}" eigen REGEX "^#include <Eigen/")
+    file(STRINGS "${header}" abi REGEX "^#include \"core/eigen_abi.h\"")
+    if(eigen AND NOT abi AND NOT header MATCHES "core/eigen_abi.h$")
+      file(RELATIVE_PATH where "${SOURCE_DIR}" "${header}")
+      list(APPEND missing "${where}")
+    endif()
+  endforeach()
+endforeach()
+if(missing)
+  list(JOIN missing "\n" text)
+  message(FATAL_ERROR "Headers including Eigen without core/eigen_abi.h:\n${text}")
+endif()
+message(STATUS "every Eigen header checks the ABI")
