@@ -35,7 +35,7 @@ bool Same(const cv::Mat& a, const cv::Mat& b) {
 
 int Play(const std::string& rawlog, const std::string& ini, const std::string& out, int k) {
   // README example begins
-  // The maps an .ini declares (share/novelty_run.ini: a CAppearanceMap and a CDifferencingMap);
+  // The maps an .ini declares (examples/maps.ini: a CAppearanceMap and a CDifferencingMap);
   // a misspelt class, section or key is an error naming the file, section and key.
   mrpt::maps::CMultiMetricMap maps, resumed;
   maps.setListOfMaps(novelty::mrpt_plugins::LoadMultiMapConfig(ini));

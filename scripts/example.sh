@@ -16,7 +16,7 @@ cmake -S examples -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" > /dev
 cmake --build "$work/build"
 "$prefix/bin/novelty-sim" -q -n 40 share/scenarios/glass_and_cup.scn -o "$work/clip"
 "$work/build/surprise_from_rawlog" "$work/clip/glass_and_cup.rawlog" \
-  "$prefix/share/novelty/novelty_run.ini" "$work/out" 20
+  examples/maps.ini "$work/out" 20
 pngs=$(ls "$work/out"/surprise_*.png | wc -l)
 [ "$pngs" -eq 4 ] || { echo "example: expected 4 surprise PNGs, found $pngs" >&2; exit 1; }
 echo "example: built against $prefix with default flags; 4 PNGs; save, load, continue identical"

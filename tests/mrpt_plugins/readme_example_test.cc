@@ -13,8 +13,9 @@ namespace novelty::mrpt_plugins {
 namespace {
 
 std::string Between(const std::string& text, const std::string& begin, const std::string& end) {
-  const auto a = text.find(begin), b = text.find(end);
-  if (a == std::string::npos || b == std::string::npos || b < a) return "";
+  const auto a = text.find(begin);
+  const auto b = a == std::string::npos ? a : text.find(end, a + begin.size());
+  if (b == std::string::npos) return "";
   return text.substr(a + begin.size(), b - a - begin.size());
 }
 
@@ -33,6 +34,26 @@ TEST(ReadmeExample, TheReadmeQuotesTheCompiledExample) {
   const std::string readme = Read(std::string(NOVELTY_SOURCE_DIR) + "/README.md");
   const std::string quoted = Between(readme, "```cpp\n", "```\n");
   EXPECT_EQ(quoted, code) << "README.md's ```cpp block must equal examples/surprise_from_rawlog.cc";
+}
+
+// The README shows examples/maps.ini (without its comment lines), and it loads: both maps, the
+// changed keys changed, the others at their defaults.
+TEST(ReadmeExample, TheReadmeShowsTheExamplesIniAndItLoads) {
+  const std::string path = std::string(NOVELTY_SOURCE_DIR) + "/examples/maps.ini";
+  std::string body;
+  std::istringstream in(Read(path));
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind('#', 0) != 0) body += line + "\n";
+  const std::string readme = Read(std::string(NOVELTY_SOURCE_DIR) + "/README.md");
+  EXPECT_EQ(Between(readme, "```ini\n", "```\n"), body)
+      << "README.md's ```ini block must equal examples/maps.ini";
+  mrpt::maps::CMultiMetricMap maps;
+  maps.setListOfMaps(LoadMultiMapConfig(path));
+  ASSERT_EQ(maps.maps.size(), 2u);
+  const CAppearanceMap& map = *maps.mapByClass<CAppearanceMap>();
+  EXPECT_EQ(map.map().options().surprise.update.forgetting_factor, 0.8);
+  EXPECT_EQ(map.map().options().views.new_view_distance,
+            appearance::AppearanceMapOptions().views.new_view_distance);
 }
 
 // The example's steps on a short clip with the shipped .ini (the example itself is built against
