@@ -78,8 +78,15 @@ function(novelty_add_library name)
   target_include_directories(${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
                                             $<INSTALL_INTERFACE:include/novelty>)
   target_compile_definitions(${name} PUBLIC ${NOVELTY_EIGEN_ALIGNMENT})
-  target_link_libraries(${name} PUBLIC ${ARG_DEPS} PRIVATE novelty_build_flags)
+  # BUILD_INTERFACE: our warning flags are not part of the exported interface (a static build
+  # would otherwise export them).
+  target_link_libraries(${name} PUBLIC ${ARG_DEPS} PRIVATE $<BUILD_INTERFACE:novelty_build_flags>)
+  target_compile_features(${name} PUBLIC cxx_std_17)
+  # Inline functions stay inside each library: those taking SIMD vector types by value are
+  # compiled differently per variant (x86-64, -v3, -v4), and one copy must not replace another.
+  target_compile_options(${name} PRIVATE -fvisibility-inlines-hidden)
   set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON
+                                           INSTALL_RPATH "$ORIGIN"
                                            EXPORT_NAME ${export_name}
                                            VERSION ${PROJECT_VERSION}
                                            SOVERSION ${NOVELTY_SOVERSION})
@@ -102,7 +109,7 @@ function(novelty_add_hwcaps_variant name level sources)
   target_link_libraries(${variant} PRIVATE ${deps})
   target_include_directories(${variant} PRIVATE ${PROJECT_SOURCE_DIR})
   target_compile_definitions(${variant} PRIVATE ${NOVELTY_EIGEN_ALIGNMENT})
-  target_compile_options(${variant} PRIVATE -march=${level})
+  target_compile_options(${variant} PRIVATE -march=${level} -fvisibility-inlines-hidden)
   set_target_properties(${variant} PROPERTIES
     OUTPUT_NAME ${name} VERSION ${PROJECT_VERSION} SOVERSION ${NOVELTY_SOVERSION}
     LIBRARY_OUTPUT_DIRECTORY ${CMAKE_LIBRARY_OUTPUT_DIRECTORY}/glibc-hwcaps/${level}

@@ -140,13 +140,14 @@ void SaveAtomically(const mrpt::serialization::CSerializable& object, const std:
     if (!file.fileOpenCorrectly()) throw std::runtime_error("cannot open " + tmp);
     auto arch = mrpt::serialization::archiveFrom(file);
     arch << object;
+    file.close();
+    std::filesystem::rename(tmp, path);
   } catch (const std::exception& e) {  // MRPT's own message spans many lines: one is enough
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
     throw std::runtime_error(path + ": cannot save (folder missing, not writable or full?): " +
                              sensors::BriefMessage(e));
   }
-  std::filesystem::rename(tmp, path);
 }
 
 void LoadInto(mrpt::serialization::CSerializable& object, const std::string& path,

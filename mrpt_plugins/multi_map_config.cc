@@ -69,7 +69,8 @@ std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBa
     DifferencingMapConfig::FromConfig(ini, MapSection(section, "CDifferencingMap", k, "options"),
                                       source);
   for (const std::string& s : sections) {
-    if (s == section || s.empty()) continue;
+    // Only the sections named like a map's: the file may hold the program's own sections too.
+    if (s.rfind(section + "_", 0) != 0) continue;
     bool read = false;
     for (const auto& [cls, n] : counts) {
       for (int k = 0; k < n && !read; ++k) {

@@ -15,9 +15,9 @@ namespace novelty::mrpt_plugins {
 
 /// Checks `section` (e.g. "map") of `ini` and returns the declared count per map class. Only
 /// <Class>_count keys of registered classes (RegisterMaps() for ours) are allowed there; every
-/// other section must be one a declared map reads (<section>_<Class>_<NN>_options, …_insertOpts,
-/// …_creationOpts, …_likelihoodOpts); our maps' option sections are read (unknown keys and bad
-/// values are errors); the classes in `exactly_one` must be declared once each. Throws
+/// section named "<section>_…" must be one a declared map reads (<section>_<Class>_<NN>_options,
+/// …_insertOpts, …_creationOpts, …_likelihoodOpts); our maps' option sections are read (unknown
+/// keys and bad values are errors); the classes in `exactly_one` must be declared once each. Throws
 /// std::runtime_error naming `source`.
 std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBase& ini,
                                                const std::string& section,

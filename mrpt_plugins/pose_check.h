@@ -5,7 +5,7 @@
 // floor, or it jumps between frames farther than a robot moves; or the robot pose itself sits at
 // the sensor's height with the sensor's tilt (it is robot ⊕ sensorPose, a ground robot's pose is
 // at the floor and level). Each is reported, never refused: a handheld or ceiling camera may be
-// fine (set a limit to 0 to turn its check off).
+// fine (a limit or tolerance of 0 turns its check off; min_height: a large negative height).
 #pragma once
 
 #include <Eigen/Geometry>

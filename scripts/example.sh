@@ -2,21 +2,28 @@
 # NoveltyMaps from a user's own MRPT program, as the README says to do it: installs a build tree
 # to a prefix (cmake --install), builds examples/ against the installed package with default
 # compiler flags (no -march, no build type), simulates a short glass-and-cup clip with the
-# installed novelty-sim and runs the example on it: PNGs written, and the maps saved after frame
-# 20, loaded and continued give the same surprise, bit for bit, as the maps that never stopped.
+# installed novelty-sim and scenario, and runs the example on it with examples/maps.ini: PNGs
+# written, and the maps saved after frame 20, loaded and continued give the same surprise, bit for
+# bit, as the maps that never stopped.
 #   bash scripts/example.sh [BUILD_DIR=build]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build="${1:-build}"
-prefix="$PWD/$build/install"
-work="$PWD/$build/example"
+build="$(realpath -m "${1:-build}")"
+if grep -q "^NOVELTY_SANITIZE:BOOL=ON" "$build/CMakeCache.txt"; then
+  # A sanitized library needs a sanitized program (the runtime must come first).
+  echo "example: skipped for a sanitizer build ($build)"
+  exit 0
+fi
+prefix="$build/install"
+work="$build/example"
 rm -rf "$prefix" "$work"
 cmake --install "$build" --prefix "$prefix" > /dev/null
 cmake -S examples -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
 cmake --build "$work/build"
-"$prefix/bin/novelty-sim" -q -n 40 share/scenarios/glass_and_cup.scn -o "$work/clip"
-"$work/build/surprise_from_rawlog" "$work/clip/glass_and_cup.rawlog" \
-  examples/maps.ini "$work/out" 20
-pngs=$(ls "$work/out"/surprise_*.png | wc -l)
+"$prefix/bin/novelty-sim" -q -n 40 "$prefix/share/novelty/scenarios/glass_and_cup.scn" \
+  -o "$work/clip"
+"$work/build/surprise_from_rawlog" "$work/clip/glass_and_cup.rawlog" examples/maps.ini \
+  "$work/out" 20
+pngs=$(find "$work/out" -name 'surprise_*.png' | wc -l)
 [ "$pngs" -eq 4 ] || { echo "example: expected 4 surprise PNGs, found $pngs" >&2; exit 1; }
 echo "example: built against $prefix with default flags; 4 PNGs; save, load, continue identical"

@@ -2,7 +2,8 @@
 # The portable build (-DNOVELTY_PORTABLE=ON, build-portable/): libraries for any x86-64 with their
 # AVX2 (x86-64-v3) and AVX-512 (x86-64-v4) variants in glibc-hwcaps/, chosen by the loader. Runs
 # the SIMD kernels' tests on every variant this CPU can run (the loader is told to ignore the
-# others: GLIBC_TUNABLES), then scripts/example.sh against this tree's installed package. Run
+# others: GLIBC_TUNABLES), the header-only kernels' tests built for x86-64-v3 (build-x86-64-v3/),
+# then scripts/example.sh against this tree's installed package. Run
 # after scripts/build.sh (the packages are installed there).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,5 +27,15 @@ for mask in "" "glibc.cpu.hwcaps=-AVX512F" "glibc.cpu.hwcaps=-AVX512F,-AVX2"; do
     env ${mask:+GLIBC_TUNABLES=$mask} build-portable/bin/"$t" --gtest_brief=1 > "$log" 2>&1 \
       || { cat "$log"; echo "portable: $t failed (${mask:-no mask})"; exit 1; }
   done
+done
+# Header-only kernels (core/lanes.h, row_windows.h, with_count.h) compile into each test
+# program; the portable tests above run their baseline form, these their AVX2 form.
+headers=(lanes_test row_windows_test with_count_test)
+cmake -S . -B build-x86-64-v3 -G Ninja -DCMAKE_BUILD_TYPE=Release -DNOVELTY_NATIVE=OFF \
+  -DCMAKE_CXX_FLAGS=-march=x86-64-v3 > /dev/null
+cmake --build build-x86-64-v3 --parallel "$(nproc)" --target "${headers[@]}"
+for t in "${headers[@]}"; do
+  build-x86-64-v3/bin/"$t" --gtest_brief=1 > "$log" 2>&1 \
+    || { cat "$log"; echo "x86-64-v3: $t failed"; exit 1; }
 done
 bash scripts/example.sh build-portable

@@ -166,16 +166,24 @@ TEST(CAppearanceMap, TruncatedOrForeignFilesAreRejectedAndTheMapKept) {
 TEST(CAppearanceMap, AnUnwritableSaveIsOneLineNamingTheFile) {
   CAppearanceMap map;
   map.insertObservation(Observation(Frames()[0]));
-  const fs::path file = fs::temp_directory_path() / "novelty_no_such_folder" / "map.bin";
-  try {
-    map.SaveToFile(file.string());
-    FAIL();
-  } catch (const std::runtime_error& e) {
-    const std::string what = e.what();
-    EXPECT_EQ(what.rfind(file.string() + ": cannot save", 0), 0u) << what;
-    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  // A missing folder (nothing can be written), and a path that is a folder (the temporary file
+  // is written, the rename fails).
+  const fs::path busy = fs::temp_directory_path() / "novelty_save_onto_a_folder";
+  fs::create_directories(busy / "inside");
+  for (const fs::path& file :
+       {fs::temp_directory_path() / "novelty_no_such_folder" / "map.bin", busy}) {
+    try {
+      map.SaveToFile(file.string());
+      ADD_FAILURE() << file;
+    } catch (const std::runtime_error& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind(file.string() + ": cannot save", 0), 0u) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+    EXPECT_FALSE(fs::exists(file.string() + ".tmp")) << file;
   }
-  EXPECT_FALSE(fs::exists(file.string() + ".tmp"));
+  EXPECT_TRUE(fs::is_directory(busy / "inside"));  // untouched
+  fs::remove_all(busy);
 }
 
 TEST(CAppearanceMap, DeclaredInAMultiMetricMapIniWithItsOptions) {

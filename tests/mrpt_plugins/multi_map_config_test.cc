@@ -11,7 +11,6 @@
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
 
-
 namespace novelty::mrpt_plugins {
 namespace {
 
@@ -57,6 +56,8 @@ TEST(CheckMultiMapConfig, RejectsWhatMrptsLoaderIgnores) {
   EXPECT_EQ(ErrorOf("[map]\nCAppearanceMap_count = one\n"),
             "maps.ini: [map] CAppearanceMap_count = 'one': not a count >= 0");
   EXPECT_EQ(ErrorOf("[map]\nCAppearanceMap_count = 1 ; the map\n"), "");
+  // The program's own sections may share the file; only map-like names are checked.
+  EXPECT_EQ(ErrorOf("[SLAM]\nrate = 5\n[map]\nCAppearanceMap_count = 1\n"), "");
 }
 
 std::string Read(const std::string& path) {
