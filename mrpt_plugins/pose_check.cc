@@ -42,6 +42,7 @@ const OptionTable<PoseCheckOptions>& PoseCheckOptionTable() {
           CheckNotNegative(o.max_speed, "max_speed");
           CheckNotNegative(o.max_turn_rate, "max_turn_rate_deg");
           CheckNotNegative(o.max_tilt, "max_tilt_deg");
+          CheckNotNegative(o.sensor_pose_tolerance, "sensor_pose_tolerance");
           if (!std::isfinite(o.min_height))
             throw std::invalid_argument("min_height must be finite");
         });
@@ -52,9 +53,13 @@ const OptionTable<PoseCheckOptions>& PoseCheckOptionTable() {
 
 namespace {
 
-// Angle (rad) between a frame's z axis and the z axis of what it is expressed in.
+// Angle (rad) between a direction and the +z (up) of the frame it is expressed in.
+double AngleFromUp(const Eigen::Vector3d& direction) {
+  return std::acos(std::clamp(direction.z() / direction.norm(), -1.0, 1.0));
+}
+// How far a frame's own z axis is tilted.
 double Tilt(const Eigen::Isometry3d& pose) {
-  return std::acos(std::clamp(pose.linear()(2, 2), -1.0, 1.0));
+  return AngleFromUp(pose.linear().col(2));
 }
 
 }  // namespace
@@ -65,8 +70,7 @@ std::string PoseCheck::Check(const Eigen::Isometry3d& T_world_cam, double time,
   const auto add = [&problems](const std::string& p) {
     problems += (problems.empty() ? "" : "; ") + p;
   };
-  const Eigen::Vector3d up = -T_world_cam.linear().col(1);  // image up: camera -Y
-  const double tilt = std::acos(std::clamp(up.z() / up.norm(), -1.0, 1.0));
+  const double tilt = AngleFromUp(-T_world_cam.linear().col(1));  // image up: camera -Y
   if (options_.max_tilt > 0 && tilt > options_.max_tilt)
     add(Format("camera tilted %.0f deg from upright (limit %.0f deg)", tilt * 180 / M_PI,
                options_.max_tilt * 180 / M_PI));

@@ -11,10 +11,8 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/COutputLogger.h>
 
-#include <cmath>
-#include <limits>
-
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>

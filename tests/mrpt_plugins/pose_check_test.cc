@@ -1,6 +1,7 @@
 #include "mrpt_plugins/pose_check.h"
 
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <cmath>
 
@@ -93,6 +94,19 @@ TEST(PoseCheck, TheSensorPosePassedAsTheRobotPoseIsReported) {
             std::string::npos);
   EXPECT_EQ(PoseCheck().Check(camera, 0.0, PoseCheck::Mount{robot, Eigen::Isometry3d::Identity()}),
             "");
+}
+
+// Each limit is range-checked when read from an .ini; negative limits are refused.
+TEST(PoseCheck, NegativeLimitsAreRefused) {
+  for (const char* key :
+       {"max_speed", "max_turn_rate_deg", "max_tilt_deg", "sensor_pose_tolerance"}) {
+    PoseCheckOptions o;
+    EXPECT_THROW(PoseCheckOptionTable().Load(
+                     mrpt::config::CConfigFileMemory(std::string("[p]\n") + key + " = -1\n"), "p",
+                     "t.ini", o),
+                 std::runtime_error)
+        << key;
+  }
 }
 
 }  // namespace
