@@ -13,7 +13,8 @@ Eigen::Vector3f ImageLookup(const cv::Mat& image, const Eigen::Vector2f& uv) {
   const int x0 = int(x), y0 = int(y);
   const int x1 = std::min(x0 + 1, image.cols - 1), y1 = std::min(y0 + 1, image.rows - 1);
   const float fx = x - float(x0), fy = y - float(y0);
-  auto px = [&](int yy, int xx) {
+  // An explicit return type: deduced, it would be an expression referring to a dead temporary.
+  auto px = [&](int yy, int xx) -> Eigen::Vector3f {
     const cv::Vec3b c = image.at<cv::Vec3b>(yy, xx);
     return Eigen::Vector3f(c[0], c[1], c[2]) / 255.0f;
   };
@@ -35,7 +36,7 @@ Eigen::Vector3f Material::DiffuseAt(const Eigen::Vector2f& uv) const {
     case Texture::Kind::kStripes:
       return (int(std::floor(uv.x() * texture.cells)) & 1) ? texture.second : diffuse;
     case Texture::Kind::kImage:
-      return texture.image.empty() ? diffuse : ImageLookup(texture.image, uv);
+      return texture.image.empty() || !uv.allFinite() ? diffuse : ImageLookup(texture.image, uv);
   }
   return diffuse;
 }

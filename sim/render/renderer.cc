@@ -135,7 +135,8 @@ class CameraResponse {
     for (int i = 0; i <= kSize; ++i) table_[i] = 255.0 * std::pow(double(i) / kSize, 1.0 / o.gamma);
   }
   double operator()(double radiance) const {
-    const double x = std::clamp(exposure_ * radiance, 0.0, 1.0) * kSize;
+    const double e = exposure_ * radiance;
+    const double x = (e > 0.0 ? std::min(e, 1.0) : 0.0) * kSize;  // NaN → black, not an index
     const int i = std::min(int(x), kSize - 1);
     return table_[i] + (x - i) * (table_[i + 1] - table_[i]);
   }

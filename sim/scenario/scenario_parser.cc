@@ -1,6 +1,7 @@
 #include "sim/scenario/scenario_parser.h"
 #include "core/rigid_pose.h"
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -22,6 +23,34 @@ const ObjectSpec* Scenario::FindObject(const std::string& n) const {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
+
+// The ranges every number is checked against (scenario_parser.h lists them): beyond them ODE and
+// Embree assert, buffers take gigabytes, or a run never ends.
+struct Range {
+  double lo, hi;
+};
+constexpr Range kPlace{-1000, 1000};     // positions, m
+constexpr Range kAngle{-3600, 3600};     // degrees
+constexpr Range kColour{0, 1e4};         // colours and lamp intensities
+constexpr Range kImageSide{8, 4096};     // camera width and height, pixels
+constexpr Range kCount{1, 1000000};      // frames, phase frames
+constexpr double kMaxSize = 100;         // object, room and window sizes, m
+constexpr double kMaxSeconds = 86400;    // times and durations
+
+std::string Str(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+// A name that is also a file name in --out: no folders, no hidden files.
+bool PlainName(const std::string& n) {
+  if (n.empty() || n.size() > 100 || n[0] == '.') return false;
+  for (const char c : n)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.')
+      return false;
+  return true;
+}
 
 // The tokens of one line and a cursor, with errors that name file and line.
 class Line {
@@ -47,26 +76,33 @@ class Line {
     }
     return v;
   }
-  double Positive(const char* what) {
+  /// A number in [lo, hi]: what the simulator (ODE, Embree, the frame buffers) can take.
+  double In(const char* what, Range r) {
     const double v = Number(what);
-    if (!(v > 0)) Fail(std::string(what) + " must be > 0, got " + std::to_string(v));
+    if (!(v >= r.lo && v <= r.hi)) {
+      Fail(std::string(what) + " must be in [" + Str(r.lo) + ", " + Str(r.hi) + "], got " + Str(v));
+    }
     return v;
   }
-  int Integer(const char* what) {
+  /// A number in (0, hi].
+  double Positive(const char* what, double hi) {
     const double v = Number(what);
+    if (!(v > 0 && v <= hi))
+      Fail(std::string(what) + " must be in (0, " + Str(hi) + "], got " + Str(v));
+    return v;
+  }
+  int Integer(const char* what, Range r) {
+    const double v = In(what, r);
     if (v != std::floor(v)) Fail(std::string(what) + " must be an integer");
     return static_cast<int>(v);
   }
   Eigen::Vector3f Colour(const char* what) {
     Eigen::Vector3f c;
-    for (int k = 0; k < 3; ++k) {
-      c[k] = static_cast<float>(Number(what));
-      if (c[k] < 0) Fail(std::string(what) + " components must be >= 0");
-    }
+    for (int k = 0; k < 3; ++k) c[k] = static_cast<float>(In(what, kColour));
     return c;
   }
-  Eigen::Vector3d Vec3(const char* what) {
-    const double x = Number(what), y = Number(what), z = Number(what);
+  Eigen::Vector3d Vec3(const char* what, Range r = kPlace) {
+    const double x = In(what, r), y = In(what, r), z = In(what, r);
     return {x, y, z};
   }
   bool Accept(const std::string& word) {
@@ -104,13 +140,13 @@ class Parser {
   void Statement(Line& l) {
     const std::string& k = l.Keyword();
     if (k == "name")
-      s_.name = l.Word("name");
+      Name(l);
     else if (k == "frames")
-      s_.frames = PositiveInt(l, "frames");
+      s_.frames = l.Integer("frames", kCount);
     else if (k == "fps")
-      s_.fps = l.Positive("fps");
+      s_.fps = l.In("fps", {0.1, 1000});
     else if (k == "seed")
-      s_.seed = static_cast<std::uint64_t>(l.Integer("seed"));
+      s_.seed = static_cast<std::uint64_t>(l.Integer("seed", {0, 2147483647}));
     else if (k == "camera")
       Camera(l);
     else if (k == "rig")
@@ -122,7 +158,8 @@ class Parser {
     else if (k == "static_camera")
       StaticCamera(l);
     else if (k == "room")
-      s_.room = {l.Positive("room x"), l.Positive("room y"), l.Positive("height")};
+      s_.room = {l.Positive("room x", kMaxSize), l.Positive("room y", kMaxSize),
+                 l.Positive("height", kMaxSize)};
     else if (k == "window")
       Window(l);
     else if (k == "ambient")
@@ -142,11 +179,11 @@ class Parser {
     else if (k == "arc")
       Arc(l);
     else if (k == "stop")
-      s_.trajectory.AddStop(l.Number("stop seconds"));
+      s_.trajectory.AddStop(l.In("stop seconds", {0, kMaxSeconds}));
     else if (k == "repeat")
-      s_.trajectory.Repeat(PositiveInt(l, "repeat count"));
+      Repeat(l);
     else if (k == "start_offset")
-      s_.start_offset = {l.Number("dx"), l.Number("dy")};
+      s_.start_offset = {l.In("dx", {-10, 10}), l.In("dy", {-10, 10})};
     else if (k == "event")
       Event(l);
     else if (k == "phase")
@@ -161,6 +198,13 @@ class Parser {
     if (!s_.static_camera && s_.trajectory.empty()) {
       throw std::runtime_error(where + ": neither 'static_camera' nor a trajectory ('arc')");
     }
+    // A frame's rays, bounded so that one frame renders in seconds, not hours.
+    const double rays = double(s_.camera.width) * s_.camera.height * s_.render.pixel_samples *
+                        s_.render.pixel_samples;
+    if (rays > double(1 << 26)) {
+      throw std::runtime_error(where + ": camera size × pixel_samples² is " + Str(rays) +
+                               " rays a frame, over " + Str(1 << 26));
+    }
     for (const EventSpec& e : s_.events) {
       if (e.time > s_.Duration()) {
         throw std::runtime_error(where + ":" + std::to_string(e.line) + ": event at " +
@@ -172,16 +216,23 @@ class Parser {
   }
 
  private:
-  static int PositiveInt(Line& l, const char* what) {
-    const int v = l.Integer(what);
-    if (v <= 0) l.Fail(std::string(what) + " must be > 0");
-    return v;
+  void Name(Line& l) {
+    s_.name = l.Word("name");
+    if (!PlainName(s_.name))
+      l.Fail("name '" + s_.name + "' must be a plain file name (letters, digits, _ - .)");
+  }
+
+  void Repeat(Line& l) {
+    constexpr int kMaxSegments = 100000;
+    const int times = l.Integer("repeat count", {1, kMaxSegments});
+    if (double(s_.trajectory.size()) * (times + 1) > kMaxSegments)
+      l.Fail("repeat makes more than " + std::to_string(kMaxSegments) + " trajectory segments");
+    s_.trajectory.Repeat(times);
   }
 
   void Camera(Line& l) {
-    const int w = PositiveInt(l, "width"), h = PositiveInt(l, "height");
-    const double fov = l.Positive("horizontal field of view");
-    if (fov >= 179) l.Fail("field of view must be < 179 degrees");
+    const int w = l.Integer("width", kImageSide), h = l.Integer("height", kImageSide);
+    const double fov = l.In("horizontal field of view", {1, 170});
     s_.camera = core::PinholeCamera::FromFov(w, h, fov * kDeg);
   }
 
@@ -192,9 +243,9 @@ class Parser {
     else if (kind == "rgbd")
       s_.rig.kind = RigKind::kRgbd;
     else if (kind == "stereo")
-      s_.rig = {RigKind::kStereo, l.Positive("baseline")};
+      s_.rig = {RigKind::kStereo, l.Positive("baseline", 10)};
     else if (kind == "trinocular")
-      s_.rig = {RigKind::kTrinocular, l.Positive("baseline")};
+      s_.rig = {RigKind::kTrinocular, l.Positive("baseline", 10)};
     else
       l.Fail("unknown rig '" + kind + "' (mono, rgbd, stereo, trinocular)");
   }
@@ -203,15 +254,15 @@ class Parser {
     while (!l.Done()) {
       const std::string key = l.Word("sensor setting");
       if (key == "noise")
-        s_.render.noise_sigma = l.Number("noise");
+        s_.render.noise_sigma = l.In("noise", {0, 100});
       else if (key == "gamma")
-        s_.render.gamma = l.Positive("gamma");
+        s_.render.gamma = l.In("gamma", {0.1, 10});
       else if (key == "exposure")
-        s_.render.exposure = l.Positive("exposure");
+        s_.render.exposure = l.In("exposure", {1e-4, 1e4});
       else if (key == "shadow_samples")
-        s_.render.soft_shadow_samples = PositiveInt(l, "shadow_samples");
+        s_.render.soft_shadow_samples = l.Integer("shadow_samples", {1, 256});
       else if (key == "pixel_samples")
-        s_.render.pixel_samples = PositiveInt(l, "pixel_samples");
+        s_.render.pixel_samples = l.Integer("pixel_samples", {1, 8});
       else
         l.Fail("unknown sensor setting '" + key +
                "' (noise, gamma, exposure, shadow_samples, pixel_samples)");
@@ -219,9 +270,9 @@ class Parser {
   }
 
   void Mount(Line& l) {
-    s_.mount.position = l.Vec3("mount position");
-    s_.mount.yaw = l.Number("mount yaw") * kDeg;
-    s_.mount.pitch = l.Number("mount pitch") * kDeg;
+    s_.mount.position = l.Vec3("mount position", {-10, 10});
+    s_.mount.yaw = l.In("mount yaw", kAngle) * kDeg;
+    s_.mount.pitch = l.In("mount pitch", {-90, 90}) * kDeg;
   }
 
   void StaticCamera(Line& l) {
@@ -235,13 +286,13 @@ class Parser {
 
   void Window(Line& l) {
     // Braced initialisation: the four values are read left to right (call arguments are not).
-    s_.window = Eigen::Vector4d{l.Number("window x"), l.Number("window z"), l.Positive("width"),
-                                l.Positive("height")};
+    s_.window = Eigen::Vector4d{l.In("window x", kPlace), l.In("window z", kPlace),
+                                l.Positive("width", kMaxSize), l.Positive("height", kMaxSize)};
   }
 
   void Daylight(Line& l) {
     DirectionalLight d;
-    d.direction = l.Vec3("daylight direction");
+    d.direction = l.Vec3("daylight direction", {-1e3, 1e3});
     if (d.direction.norm() < 1e-9) l.Fail("daylight direction is zero");
     d.direction.normalize();
     d.irradiance = l.Colour("daylight colour");
@@ -255,17 +306,17 @@ class Parser {
     m.diffuse = l.Colour("colour");
     if (kind == "phong") {
       if (!l.Done()) {
-        m.specular = float(l.Number("ks"));
-        m.shininess = float(l.Positive("shininess"));
+        m.specular = float(l.In("ks", {0, 1}));
+        m.shininess = float(l.Positive("shininess", 1e4));
       }
     } else if (kind == "metal" || kind == "glass") {
       m.kind = kind == "metal" ? Material::Kind::kMetal : Material::Kind::kGlass;
-      m.specular = float(l.Number("ks"));
-      m.shininess = float(l.Positive("shininess"));
+      m.specular = float(l.In("ks", {0, 1}));
+      m.shininess = float(l.Positive("shininess", 1e4));
       if (kind == "metal")
-        m.reflectivity = float(l.Number("reflectivity"));
+        m.reflectivity = float(l.In("reflectivity", {0, 1}));
       else
-        m.ior = float(l.Positive("index of refraction"));
+        m.ior = float(l.In("index of refraction", {1, 5}));
     } else {
       l.Fail("unknown material kind '" + kind + "' (phong, metal, glass)");
     }
@@ -281,11 +332,12 @@ class Parser {
     if (kind == "checker" || kind == "stripes") {
       t.kind = kind == "checker" ? Texture::Kind::kChecker : Texture::Kind::kStripes;
       t.second = l.Colour("second colour");
-      t.cells = float(l.Positive("cells"));
+      t.cells = float(l.Positive("cells", 1e4));
     } else if (kind == "image") {
       const std::string file = base_dir_ + "/" + l.Word("image file");
       cv::Mat bgr = cv::imread(file, cv::IMREAD_COLOR);
       if (bgr.empty()) l.Fail("cannot read texture image '" + file + "'");
+      if (bgr.cols > 8192 || bgr.rows > 8192) l.Fail("texture image '" + file + "' is over 8192 pixels");
       cv::cvtColor(bgr, t.image, cv::COLOR_BGR2RGB);
       t.kind = Texture::Kind::kImage;
     } else {
@@ -300,29 +352,30 @@ class Parser {
     if (s_.FindObject(o.name)) l.Fail("object '" + o.name + "' declared twice");
     o.id = static_cast<int>(s_.objects.size()) + 1;
     const std::string shape = l.Word("shape");
+    // Sizes from 1 mm: below, ODE's contacts and Embree's triangles degenerate.
+    const Range size{1e-3, kMaxSize};
     if (shape == "box")
-      o.shape = Shape::kBox, o.dims = l.Vec3("box size");
+      o.shape = Shape::kBox, o.dims = l.Vec3("box size", size);
     else if (shape == "cylinder")
-      o.shape = Shape::kCylinder, o.dims = {l.Positive("radius"), l.Positive("height"), 0};
+      o.shape = Shape::kCylinder, o.dims = {l.In("radius", size), l.In("height", size), 0};
     else if (shape == "cup")
-      o.shape = Shape::kCup, o.dims = {l.Positive("radius"), l.Positive("height"), 0};
+      o.shape = Shape::kCup, o.dims = {l.In("radius", size), l.In("height", size), 0};
     else if (shape == "sphere")
-      o.shape = Shape::kSphere, o.dims = {l.Positive("radius"), 0, 0};
+      o.shape = Shape::kSphere, o.dims = {l.In("radius", size), 0, 0};
     else if (shape == "plate")
-      o.shape = Shape::kPlate, o.dims = {l.Positive("radius"), 0, 0};
+      o.shape = Shape::kPlate, o.dims = {l.In("radius", size), 0, 0};
     else if (shape == "plane")
-      o.shape = Shape::kPlane, o.dims = {l.Positive("size x"), l.Positive("size y"), 0};
+      o.shape = Shape::kPlane, o.dims = {l.In("size x", size), l.In("size y", size), 0};
     else
       l.Fail("unknown shape '" + shape + "' (box, cylinder, sphere, cup, plate, plane)");
-    if (o.shape == Shape::kBox && (o.dims.array() <= 0).any()) l.Fail("box sizes must be > 0");
     o.material = l.Word("material");
     if (!s_.materials.count(o.material)) l.Fail("undeclared material '" + o.material + "'");
     if (!l.Accept("at")) l.Fail("expected 'at X Y' after the material");
-    o.xy = {l.Number("x"), l.Number("y")};
+    o.xy = {l.In("x", {-kMaxSize, kMaxSize}), l.In("y", {-kMaxSize, kMaxSize})};
     o.support = "floor";
     while (!l.Done()) {
       if (l.Accept("yaw"))
-        o.yaw = l.Number("yaw") * kDeg;
+        o.yaw = l.In("yaw", kAngle) * kDeg;
       else if (l.Accept("on"))
         o.support = l.Word("support");
       else if (l.Accept("fixed"))
@@ -330,7 +383,7 @@ class Parser {
       else if (l.Accept("absent"))
         o.present = false;
       else if (l.Accept("mass"))
-        o.mass = l.Positive("mass");
+        o.mass = l.In("mass", {1e-3, 1e4});
       else
         l.Fail("unexpected '" + l.Word("option") + "' (yaw, on, fixed, absent, mass)");
     }
@@ -347,7 +400,7 @@ class Parser {
     lamp.light.intensity = l.Colour("lamp intensity");
     while (!l.Done()) {
       if (l.Accept("radius"))
-        lamp.light.radius = l.Number("radius");
+        lamp.light.radius = l.In("radius", {0, 10});
       else if (l.Accept("off"))
         lamp.on = false;
       else
@@ -357,10 +410,11 @@ class Parser {
   }
 
   void Arc(Line& l) {
-    const Eigen::Vector2d c{l.Number("centre x"), l.Number("centre y")};
-    const double r = l.Positive("radius"), from = l.Number("from") * kDeg,
-                 to = l.Number("to") * kDeg;
-    const double speed = l.Positive("speed");
+    const Eigen::Vector2d c{l.In("centre x", {-kMaxSize, kMaxSize}),
+                            l.In("centre y", {-kMaxSize, kMaxSize})};
+    const double r = l.In("radius", {1e-2, kMaxSize}), from = l.In("from", kAngle) * kDeg,
+                 to = l.In("to", kAngle) * kDeg;
+    const double speed = l.In("speed", {1e-3, 10});
     if (from == to) l.Fail("arc from and to angles are equal");
     s_.trajectory.AddArc(c, r, from, to, speed);
   }
@@ -368,8 +422,7 @@ class Parser {
   void Event(Line& l) {
     EventSpec e;
     e.line = l.number();
-    e.time = l.Number("event time");
-    if (e.time < 0) l.Fail("event time must be >= 0");
+    e.time = l.In("event time", {0, kMaxSeconds});
     const std::string kind = l.Word("event kind");
     e.target = l.Word("event target");
     if (kind == "add" || kind == "remove" || kind == "move") {
@@ -379,8 +432,9 @@ class Parser {
       const ObjectSpec* o = s_.FindObject(e.target);
       if (!o) l.Fail("event on undeclared object '" + e.target + "'");
       if (o->fixed) l.Fail("object '" + e.target + "' is fixed furniture and cannot change");
-      if (e.kind == EventSpec::Kind::kMove) e.position = {l.Number("x"), l.Number("y"), 0};
-      if (l.Accept("arm")) e.arm_duration = l.Positive("arm seconds");
+      if (e.kind == EventSpec::Kind::kMove)
+        e.position = {l.In("x", {-kMaxSize, kMaxSize}), l.In("y", {-kMaxSize, kMaxSize}), 0};
+      if (l.Accept("arm")) e.arm_duration = l.Positive("arm seconds", 600);
     } else if (kind == "lamp" || kind == "lamp_on" || kind == "lamp_off") {
       e.kind = kind == "lamp"      ? EventSpec::Kind::kLampMove
                : kind == "lamp_on" ? EventSpec::Kind::kLampOn
@@ -398,8 +452,8 @@ class Parser {
   void Phase(Line& l) {
     PhaseSpec p;
     p.name = l.Word("phase name");
-    p.first_frame = PositiveInt(l, "first frame");
-    p.last_frame = PositiveInt(l, "last frame");
+    p.first_frame = l.Integer("first frame", kCount);
+    p.last_frame = l.Integer("last frame", kCount);
     if (p.last_frame < p.first_frame) l.Fail("phase ends before it starts");
     p.description = l.Rest();
     s_.phases.push_back(p);

@@ -20,6 +20,15 @@
 //   event T add|remove OBJECT [arm SECONDS] | move OBJECT X Y [arm SECONDS]
 //         | lamp LAMP X Y Z | lamp_on LAMP | lamp_off LAMP
 //   phase NAME FIRST LAST [DESCRIPTION…]        frames, 1-based, inclusive
+//
+// Every number is range-checked (beyond the ranges ODE and Embree assert, buffers take gigabytes
+// or a run never ends): positions and centres |·| ≤ 1000 m (objects, arcs, moves ≤ 100 m; mount
+// ≤ 10 m); sizes 1 mm…100 m; angles |·| ≤ 3600°, mount pitch ≤ 90°, field of view 1…170°;
+// colours and intensities 0…10⁴; ks and reflectivity 0…1; shininess ≤ 10⁴; IOR 1…5; camera
+// 8…4096 pixels a side with width·height·pixel_samples² ≤ 2²⁶ rays a frame; pixel_samples 1…8;
+// shadow_samples 1…256; noise 0…100; gamma 0.1…10; exposure 10⁻⁴…10⁴; fps 0.1…1000; frames
+// 1…10⁶; times 0…86400 s; arc speed ≤ 10 m/s; mass 1 g…10 t; repeat up to 10⁵ segments in all.
+// NAME is a plain file name (letters, digits, _ - .), since outputs are named after it.
 #pragma once
 
 #include <istream>

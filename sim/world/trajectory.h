@@ -28,6 +28,7 @@ class Trajectory {
 
   double Duration() const;
   bool empty() const { return segments_.empty(); }
+  std::size_t size() const { return segments_.size(); }  ///< arcs and stops
   /// Reference at time t (clamped to [0, Duration()]).
   TrajectoryReference At(double t) const;
 

@@ -89,7 +89,47 @@ TEST(ScenarioParser, ErrorsNameFileLineAndProblem) {
   EXPECT_EQ(ErrorOf("frames 3\n"), "test.scn: no 'name' statement");
   EXPECT_EQ(ErrorOf("name x\n"), "test.scn: neither 'static_camera' nor a trajectory ('arc')");
   EXPECT_EQ(ErrorOf(base + "arc 0 0 -1 0 10 0.1\n"),
-            "test.scn:3: radius must be > 0, got -1.000000");
+            "test.scn:3: radius must be in [0.01, 100], got -1");
+}
+
+// The reproducers of the reliability issue: each was accepted and then crashed, hung, allocated
+// gigabytes or wrote outside --out. Each is now an error naming the line, value and range.
+TEST(ScenarioParser, OutOfRangeNumbersAreRefusedBeforeTheSimulatorSeesThem) {
+  const std::string base = "name x\narc 0 0 1 0 10 0.1\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {"sensor pixel_samples 1000\n", "pixel_samples must be in [1, 8], got 1000"},
+      {"fps 1e-300\n", "fps must be in [0.1, 1000], got 1e-300"},
+      {"camera 20000 20000 60\n", "width must be in [8, 4096], got 20000"},
+      {"camera 46341 46341 60\n", "width must be in [8, 4096], got 46341"},
+      {"repeat 2000000000\n", "repeat count must be in [1, 100000], got 2e+09"},
+      {"ambient 1e39 0 0\n", "ambient colour must be in [0, 10000], got 1e+39"},
+      {"lamp l 0 0 2 1e300 1 1\n", "lamp intensity must be in [0, 10000], got 1e+300"},
+      {"material m phong 1 1 1\nobject a box 1e9 1 1 m at 0 0\n", "box size must be in"},
+      {"material m phong 1 1 1\nobject a box 1e-9 1 1 m at 0 0\n", "box size must be in"},
+      {"material m phong 1 1 1\nobject a sphere 0.1 m at 1e12 0\n", "x must be in"},
+      {"material m phong 1 1 1\nobject a sphere 0.1 m at 0 0 mass 1e20\n", "mass must be in"},
+      {"arc 0 0 1e10 0 10 0.1\n", "radius must be in [0.01, 100]"},
+      {"start_offset 1e8 0\n", "dx must be in [-10, 10]"},
+      {"mount 0 0 1 90 1e6\n", "mount pitch must be in [-90, 90]"},
+      {"sensor noise -3\n", "noise must be in [0, 100]"},
+      {"material g glass 1 1 1 0.5 10 0.2\n", "index of refraction must be in [1, 5]"},
+  };
+  for (const auto& [line, problem] : cases) {
+    const std::string e = ErrorOf(base + line);
+    EXPECT_NE(e.find("test.scn:"), std::string::npos) << line;
+    EXPECT_NE(e.find(problem), std::string::npos) << line << " → " << e;
+  }
+  EXPECT_NE(ErrorOf(base + "camera 4096 4096 60\nsensor pixel_samples 8\n").find("rays a frame"),
+            std::string::npos);
+}
+
+TEST(ScenarioParser, NameCannotLeaveTheOutputFolder) {
+  for (const char* bad : {"../../x", "a/b", ".hidden", "/etc/x"}) {
+    EXPECT_NE(ErrorOf(std::string("name ") + bad + "\narc 0 0 1 0 10 0.1\n").find("plain file name"),
+              std::string::npos)
+        << bad;
+  }
+  EXPECT_EQ(Parse("name run-2_b.1\narc 0 0 1 0 10 0.1\n").name, "run-2_b.1");
 }
 
 TEST(ScenarioParser, MissingFileIsNamed) {
