@@ -49,6 +49,14 @@ const OptionTable<AppearanceMapConfig>& AppearanceMapConfig::Table() {
         .Check([](const C& c) {
           c.map.surprise.update.Check();
           stats::CheckNormalGamma(c.map.initial_prior, "initial prior");
+          // The prior of a colour channel (0…255): beyond these, every pixel's surprise is 0
+          // or saturates, and the panels are black.
+          CheckInRange(c.map.initial_prior.alpha, 1e-3, 1e6, "initial_alpha");
+          CheckInRange(c.map.initial_prior.beta, 1e-3, 1e9, "initial_beta");
+          CheckInRange(c.map.initial_prior.tau, 0, 255, "initial_tau");
+          CheckInRange(c.map.initial_prior.sigma, 1e-3, 1e6, "initial_sigma");
+          CheckInRange(c.map.surprise.update.xi, 0, 1e6, "xi");
+          CheckInRange(c.map.surprise.update.sigma_max, 0, 1e6, "sigma_max");
         });
     return t;
   }();

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <stdexcept>
 
 #include "mrpt_plugins/option_table.h"
@@ -24,16 +25,52 @@ void WriteMat(mrpt::serialization::CArchive& out, const cv::Mat& m) {
   out.WriteBuffer(c.data, c.total() * c.elemSize());
 }
 
-cv::Mat ReadMat(mrpt::serialization::CArchive& in) {
+// An image of the view's size (checked before anything is allocated) and of a type maps store.
+cv::Mat ReadMat(mrpt::serialization::CArchive& in, const core::PinholeCamera& camera,
+                const std::string& what) {
   int32_t type, rows, cols;
   in >> type >> rows >> cols;
-  if (rows < 0 || cols < 0 || rows > 100000 || cols > 100000) {
-    throw std::runtime_error("corrupt image size " + std::to_string(rows) + "x" +
-                             std::to_string(cols));
+  if (rows != camera.height || cols != camera.width) {
+    throw std::runtime_error(std::string(kMapFileError) + what + " is " + std::to_string(cols) +
+                             "x" + std::to_string(rows) + ", the view's camera " +
+                             std::to_string(camera.width) + "x" + std::to_string(camera.height));
+  }
+  const int depth = CV_MAT_DEPTH(type), channels = CV_MAT_CN(type);
+  const bool known_depth = depth == CV_8U || depth == CV_16U || depth == CV_16F || depth == CV_32F;
+  if (type < 0 || !known_depth || channels > 16) {
+    throw std::runtime_error(std::string(kMapFileError) + what + " has an unknown type " +
+                             std::to_string(type));
   }
   cv::Mat m(rows, cols, type);
   in.ReadBuffer(m.data, m.total() * m.elemSize());
   return m;
+}
+
+// The view's camera: a size maps can hold, finite focal lengths and principal point.
+core::PinholeCamera ReadCamera(mrpt::serialization::CArchive& in, const std::string& what) {
+  int32_t w, h;
+  core::PinholeCamera c;
+  in >> w >> h >> c.fx >> c.fy >> c.cx >> c.cy;
+  if (w < 1 || h < 1 || w > 8192 || h > 8192)
+    throw std::runtime_error(std::string(kMapFileError) + what + ": implausible camera size " +
+                             std::to_string(w) + "x" + std::to_string(h));
+  c.width = w;
+  c.height = h;
+  try {
+    c.Check();
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(std::string(kMapFileError) + what + ": " + e.what());
+  }
+  return c;
+}
+
+// Depth as maps take it: metres, 0 or NaN where unknown; never negative or infinite.
+void CheckDepth(const cv::Mat& depth, const std::string& what) {
+  cv::Mat bad = depth < 0;
+  bad |= (depth == std::numeric_limits<float>::infinity());
+  if (const int n = cv::countNonZero(bad); n > 0)
+    throw std::runtime_error(std::string(kMapFileError) + what + ": " + std::to_string(n) +
+                             " negative or infinite depths");
 }
 
 void WritePose(mrpt::serialization::CArchive& out, const Eigen::Isometry3d& p) {
@@ -87,24 +124,24 @@ void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBase
 void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map) {
   int32_t n;
   in >> n;
-  if (n < 0 || n > 1000000) throw std::runtime_error("corrupt view count");
+  if (n < 0 || n > 1000000) throw std::runtime_error(std::string(kMapFileError) + "corrupt view count");
   std::vector<views::ReferenceView> views;
   std::vector<Eigen::Isometry3d> anchors;
   for (int32_t j = 0; j < n; ++j) {
+    const std::string what = "view " + std::to_string(j);
     views::ReferenceView v;
-    int32_t w, h;
-    in >> w >> h >> v.camera.fx >> v.camera.fy >> v.camera.cx >> v.camera.cy;
-    v.camera.width = w;
-    v.camera.height = h;
+    v.camera = ReadCamera(in, what);
     v.T_world_cam = ReadPose(in);
     anchors.push_back(ReadPose(in));
-    v.depth = ReadMat(in);
+    v.depth = ReadMat(in, v.camera, what + " depth");
+    CheckDepth(v.depth, what);
     int32_t planes;
     in >> planes;
+    if (planes < 0 || planes > 16)
+      throw std::runtime_error(std::string(kMapFileError) + what + ": implausible plane count");
     for (int32_t k = 0; k < planes; ++k) {
-      std::string name;
-      in >> name;
-      v.planes[name] = ReadMat(in);
+      const std::string name = ReadShortString(in, 64, what + " plane name");
+      v.planes[name] = ReadMat(in, v.camera, what + " plane '" + name + "'");
     }
     views.push_back(std::move(v));
   }

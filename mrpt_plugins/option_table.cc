@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "sensors/rawlog/brief_message.h"
 
@@ -21,9 +22,28 @@ std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string&
   if (!std::filesystem::is_regular_file(path))
     throw std::runtime_error(path + ": no such config file");
   std::ifstream in(path, std::ios::binary);
-  char c = 0;
-  while (in.get(c)) {  // an image or a map file given as a config must not read as no options
-    if (c == '\0') throw std::runtime_error(path + ": not a text .ini file");
+  const std::string content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  // An image or a map file given as a config must not read as no options.
+  if (content.find('\0') != std::string::npos)
+    throw std::runtime_error(path + ": not a text .ini file");
+  // Nor may a line MRPT's parser would skip (an unclosed "[section", a key without '=', a key
+  // before any section) drop its options in silence.
+  std::istringstream lines(content);
+  std::string line;
+  bool in_section = false;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    const std::string where = path + ":" + std::to_string(number) + ": ";
+    const std::string text = StripIniComment(line);
+    if (text.empty()) continue;
+    if (text.front() == '[') {
+      if (text.back() != ']' || text.size() < 3 || text.find(']') != text.size() - 1)
+        throw std::runtime_error(where + "bad section header '" + text + "'");
+      in_section = true;
+    } else if (text.find('=') == std::string::npos || text.front() == '=') {
+      throw std::runtime_error(where + "expected 'key = value' or '[section]', got '" + text + "'");
+    } else if (!in_section) {
+      throw std::runtime_error(where + "'" + text + "' is outside any [section]");
+    }
   }
   try {
     return std::make_unique<mrpt::config::CConfigFile>(path);
@@ -85,6 +105,26 @@ void CheckPositive(double value, const char* key) {
 }
 void CheckNotNegative(double value, const char* key) {
   if (!(value >= 0.0)) throw std::invalid_argument(std::string(key) + " must be >= 0");
+}
+std::string ReadShortString(mrpt::serialization::CArchive& in, std::size_t max_length,
+                            const std::string& what) {
+  uint32_t length = 0;
+  in >> length;
+  if (length > max_length) {
+    throw std::runtime_error(std::string(kMapFileError) + what + " of " + std::to_string(length) +
+                             " bytes (at most " + std::to_string(max_length) + ")");
+  }
+  std::string s(length, '\0');
+  if (length > 0) in.ReadBuffer(s.data(), length);
+  return s;
+}
+
+void CheckInRange(double value, double lo, double hi, const char* key) {
+  if (!(value >= lo && value <= hi)) {
+    std::ostringstream o;
+    o << key << " must be in [" << lo << ", " << hi << "], got " << value;
+    throw std::invalid_argument(o.str());
+  }
 }
 
 std::string OptionText(const OptionEntry& entry, double field_value) {

@@ -31,6 +31,11 @@ namespace novelty::mrpt_plugins {
 /// How errors in a map file's content begin (LoadInto in map_files.h puts the path instead).
 inline constexpr const char* kMapFileError = "map file: ";
 
+/// A string as MRPT's `<<` writes it (uint32 length, bytes), refused before any allocation when
+/// the length exceeds `max_length`: a corrupt length must not ask for gigabytes.
+std::string ReadShortString(mrpt::serialization::CArchive& in, std::size_t max_length,
+                            const std::string& what);
+
 /// The file behind `config` (a CConfigFile), else "map definition": how errors name it.
 std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config);
 
@@ -172,9 +177,9 @@ class OptionTable {
       throw std::runtime_error(std::string(kMapFileError) + "implausible option count");
     std::vector<bool> seen(rows_.size(), false);
     for (uint32_t i = 0; i < n; ++i) {
-      std::string key;
+      const std::string key = ReadShortString(in, 256, "option name");
       double value = 0.0;
-      in >> key >> value;
+      in >> value;
       const Row* r = Find(key);
       if (!r) {
         throw std::runtime_error(std::string(kMapFileError) + "unknown option '" + key +
@@ -310,6 +315,8 @@ class TabledOptions : public mrpt::config::CLoadableOptions {
 /// Range checks for OptionTable::Check: throw std::invalid_argument "KEY must be > 0" (>= 0).
 void CheckPositive(double value, const char* key);
 void CheckNotNegative(double value, const char* key);
+/// Throws std::invalid_argument "KEY must be in [lo, hi], got VALUE" (NaN fails too).
+void CheckInRange(double value, double lo, double hi, const char* key);
 
 /// Opens an `.ini` file for TabledOptions::FromFile; throws std::runtime_error naming a missing
 /// file, one that is not text, or one MRPT cannot parse.

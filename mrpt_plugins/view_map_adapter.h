@@ -118,7 +118,12 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
       Config::Table().ReadPositional(in, keys, c);
     }
     auto map = std::make_unique<Map>(c.map);
-    ReadViewMap(in, map->view_map());
+    try {
+      ReadViewMap(in, map->view_map());
+      map->CheckStoredPlanes();
+    } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
+      throw std::runtime_error(std::string(kMapFileError) + e.what());
+    }
     ReplaceMap(std::move(map));  // only now: a failure above leaves the map as it was
     depth_source_ = c.depth;
     pose_check_ = PoseCheck(c.poses);

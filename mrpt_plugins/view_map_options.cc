@@ -46,6 +46,8 @@ const OptionTable<appearance::ViewBasedMapOptions>& ViewMapOptionTable() {
         .Check([](const O& o) {
           CheckPositive(o.new_view_distance, "new_view_distance");
           CheckPositive(o.new_view_angle, "new_view_angle_deg");
+          CheckInRange(o.new_view_distance, 0, 100, "new_view_distance");
+          CheckInRange(o.new_view_angle * 180 / M_PI, 0, 180, "new_view_angle_deg");
           CheckPositive(o.warp.max_relative_depth_jump, "max_relative_depth_jump");
           CheckPositive(o.warp.near_plane, "near_plane");
           CheckNotNegative(o.warp.planar_block, "planar_block");

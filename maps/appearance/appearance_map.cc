@@ -1,4 +1,5 @@
 #include "maps/appearance/appearance_map.h"
+#include "maps/views/plane_check.h"
 
 #include <algorithm>
 #include <array>
@@ -31,6 +32,17 @@ void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const core::PinholeCam
   }
   if (!core::IsRigid(T_world_cam)) {
     throw std::invalid_argument(std::string(what) + ": pose is not a rigid transform");
+  }
+  // Unknown depth is 0 or NaN; a negative or infinite one is a broken sensor or decoder, and
+  // would warp pixels behind the camera or to infinity.
+  int bad = 0;
+  for (int r = 0; r < depth.rows; ++r) {
+    const float* d = depth.ptr<float>(r);
+    for (int c = 0; c < depth.cols; ++c) bad += d[c] < 0.0f || std::isinf(d[c]);
+  }
+  if (bad > 0) {
+    throw std::invalid_argument(std::string(what) + ": " + std::to_string(bad) +
+                                " depths are negative or infinite");
   }
 }
 
@@ -166,6 +178,11 @@ AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
     : options_(options), map_(options.views), tile_work_(std::make_unique<TileWorkPool>()) {
   options_.surprise.update.Check();
   stats::CheckNormalGamma(options_.initial_prior, "AppearanceMapOptions::initial_prior");
+}
+
+void AppearanceMap::CheckStoredPlanes() const {
+  views::CheckPlane(map_.store(), "ab_sigma", 7, views::PlaneValues::kPositive);
+  views::CheckPlane(map_.store(), "tau", 3, views::PlaneValues::kFinite);
 }
 
 AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& depth,

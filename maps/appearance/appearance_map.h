@@ -55,6 +55,9 @@ class AppearanceMap {
 
   const views::ReferenceViewStore& store() const { return map_.store(); }
   const AppearanceMapOptions& options() const { return options_; }
+  /// Throws std::invalid_argument naming the view and plane unless every view holds valid
+  /// parameters: α, β, σ finite and > 0, τ finite (for maps read from files).
+  void CheckStoredPlanes() const;
   /// The reference views and their anchors, for saving and loading a map.
   const ViewBasedMap& view_map() const { return map_; }
   ViewBasedMap& view_map() { return map_; }

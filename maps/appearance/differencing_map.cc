@@ -1,4 +1,5 @@
 #include "maps/appearance/differencing_map.h"
+#include "maps/views/plane_check.h"
 
 #include <limits>
 #include <opencv2/imgproc.hpp>
@@ -25,6 +26,10 @@ DifferencingProducts DifferencingMap::Insert(const cv::Mat& rgb, const cv::Mat& 
   core::FillWhere(out.expected_rgb, uncovered, cv::Scalar::all(0));
   out.update = map_.Update(camera, T_world_cam, depth.clone(), {{"ycbcr", x}}, p.selected);
   return out;
+}
+
+void DifferencingMap::CheckStoredPlanes() const {
+  views::CheckPlane(map_.store(), "ycbcr", 3, views::PlaneValues::kFiniteOrNaN);
 }
 
 }  // namespace novelty::appearance

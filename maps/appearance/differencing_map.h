@@ -26,6 +26,9 @@ class DifferencingMap {
                               const core::PinholeCamera& camera,
                               const Eigen::Isometry3d& T_world_cam);
   const views::ReferenceViewStore& store() const { return map_.store(); }
+  /// Throws std::invalid_argument naming the view unless every view holds a Y, Cb, Cr plane of
+  /// finite values (NaN: unknown) (for maps read from files).
+  void CheckStoredPlanes() const;
   const ViewBasedMapOptions& options() const { return options_; }
   /// The reference images and their anchors, for saving and loading a map.
   const ViewBasedMap& view_map() const { return map_; }

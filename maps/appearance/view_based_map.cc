@@ -1,4 +1,5 @@
 #include "maps/appearance/view_based_map.h"
+#include "core/rigid_pose.h"
 
 #include <algorithm>
 #include <atomic>
@@ -128,6 +129,10 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
   if (views.size() != anchors.size()) {
     throw std::invalid_argument("ViewBasedMap::Restore: " + std::to_string(views.size()) +
                                 " views but " + std::to_string(anchors.size()) + " anchors");
+  }
+  for (std::size_t j = 0; j < anchors.size(); ++j) {
+    if (!core::IsRigid(anchors[j]))
+      throw std::invalid_argument("view " + std::to_string(j) + ": anchor is not a rigid transform");
   }
   views::ReferenceViewStore store;
   std::vector<views::MeshPlan> plans;  // made now: a loaded map's views are meant to be warped
