@@ -22,6 +22,10 @@
 // and the map (OUT/map.appearance_map, or --map-out; --map-in continues from a saved map) with
 // its reference-view frusta as OUT/map.3Dscene for SceneViewer3D.
 // Progress on stderr.
+//
+// Exit status: 0 done; 1 an error (one line on stderr; nothing overwritten, no map saved when no
+// frame was inserted); 2 bad command line; 3 the rawlog ends early (cut short or corrupt): the
+// results and the map cover the frames read, and stderr names where it ended.
 #include <tclap/CmdLine.h>
 
 #include <chrono>
@@ -39,6 +43,7 @@
 #include <sstream>
 
 #include "core/frame_stem.h"
+#include "core/same_file.h"
 #include "core/write_rgb_image.h"
 #include "eval/attentional_selectivity.h"
 #include "eval/findings_report.h"
@@ -81,6 +86,11 @@ std::vector<double> ParseFactors(const std::string& list) {
       throw std::invalid_argument("--compare-views: '" + item + "' is not a finite factor >= 1");
     factors.push_back(f);
   }
+  // Each factor is a pair of maps as large as the main ones, and a row of every metric.
+  constexpr std::size_t kMaxFactors = 8;
+  if (factors.size() > kMaxFactors)
+    throw std::invalid_argument("--compare-views: " + std::to_string(factors.size()) +
+                                " factors, at most " + std::to_string(kMaxFactors));
   return factors;
 }
 
@@ -296,8 +306,18 @@ RunArgs ParseArgs(int argc, char** argv) {
   // Where the map goes is checked before the run, not after it.
   if (std::filesystem::is_directory(a.map_out))
     throw std::runtime_error("--map-out " + a.map_out + ": is a directory");
+  // Outputs never replace inputs (--map-out may be --map-in: a map continued and saved back).
+  for (const std::string& input : {a.rawlog, a.config}) {
+    if (!input.empty() && core::SameFile(input, a.map_out))
+      throw std::runtime_error("--map-out " + a.map_out + " is the input " + input);
+  }
+  if (std::filesystem::exists(a.out) && !std::filesystem::is_directory(a.out))
+    throw std::runtime_error("--out " + a.out + ": is a file, not a folder");
   return a;
 }
+
+// A rawlog that ends early: results for the frames read were written, and the exit says so.
+constexpr int kExitPartial = 3;
 
 // The maps' .ini: --config (checked to be a text file), else kDefaultMaps.
 std::unique_ptr<mrpt::config::CConfigFileBase> OpenMapsConfig(const std::string& path) {
@@ -420,7 +440,7 @@ int main(int argc, char** argv) {
         "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
         "  map:     %s\n  report:  %s/report.html\n",
         run.frames, player.skipped(), run.seconds, a.out.c_str(), a.map_out.c_str(), a.out.c_str());
-    return 0;
+    return player.stopped_by().empty() ? 0 : kExitPartial;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());
     return 2;

@@ -6,11 +6,13 @@
 #include <mrpt/obs/CObservationStereoImages.h>
 #include <mrpt/poses/CPose3D.h>
 
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 
 #include "sensors/rawlog/brief_message.h"
 #include "sensors/rawlog/camera_pose_observation.h"
+#include "sensors/rawlog/external_files.h"
 #include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
@@ -25,6 +27,25 @@ Eigen::Isometry3d CameraOnRobotOf(const mrpt::obs::CObservation& obs) {
     return sensors::CameraOnRobot(*scan);
   const auto& pair = dynamic_cast<const mrpt::obs::CObservationStereoImages&>(obs);
   return sensors::ToEigen(mrpt::poses::CPose3D(pair.cameraPose));
+}
+
+// Throws std::runtime_error naming the folder if an image of `obs` is stored in a file whose
+// folder does not exist: then every frame would be skipped, one by one, for the same reason.
+void CheckImageFolder(const mrpt::obs::CObservation& obs, const std::string& where) {
+  std::vector<const mrpt::img::CImage*> images;
+  if (const auto* scan = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obs)) {
+    images = {&scan->intensityImage};
+  } else if (const auto* pair = dynamic_cast<const mrpt::obs::CObservationStereoImages*>(&obs)) {
+    images = {&pair->imageLeft, &pair->imageRight};
+  }
+  for (const mrpt::img::CImage* image : images) {
+    if (!image->isExternallyStored()) continue;
+    const std::filesystem::path file = image->getExternalStorageFileAbsolutePath();
+    if (!std::filesystem::is_directory(file.parent_path())) {
+      throw std::runtime_error(where + ": image folder " + file.parent_path().string() +
+                               " is missing");
+    }
+  }
 }
 
 }  // namespace
@@ -100,12 +121,14 @@ bool RawlogMapPlayer::Next(mrpt::maps::CMultiMetricMap& maps, int& frame) {
     frame = ++m.frames;
     const std::string where =
         m.input.path() + ": frame " + std::to_string(frame) + " (" + obs->sensorLabel + ")";
+    CheckImageFolder(*obs, where);
     const std::optional<mrpt::poses::CPose3D> robot = m.RobotPose(*obs, frame);
     if (!robot) {
       skip_reasons_.push_back(where + ": no pose");
       continue;
     }
     try {
+      sensors::CheckExternalDepth(*obs);
       obs->load();  // once for all the maps that decode it; unloaded when they are done
       const bool used = maps.insertObservation(*obs, *robot);
       obs->unload();

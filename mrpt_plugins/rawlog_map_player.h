@@ -38,7 +38,8 @@ class RawlogMapPlayer {
   ~RawlogMapPlayer();
 
   /// Inserts the next camera frame into `maps`; false at the end of the rawlog. `frame`
-  /// receives its 1-based number.
+  /// receives its 1-based number. A frame that cannot be used is skipped (skip_reasons); an
+  /// image folder that does not exist throws std::runtime_error naming it.
   bool Next(mrpt::maps::CMultiMetricMap& maps, int& frame);
 
   int skipped() const { return int(skip_reasons_.size()); }

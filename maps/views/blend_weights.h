@@ -3,6 +3,8 @@
 // view) and the bilinear footprint it samples. Included by view_blender.cc only.
 #pragma once
 
+#include <cstdint>
+
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -49,8 +51,12 @@ inline auto FootprintOf(const WarpField& w, const Plane& p, float view_weight,
   // The map rows are streamed once per view; fetching ahead hides the misses. Every line the
   // pixels span is fetched: sixteen pixels' (u, v) fill two lines, and fetching only the first
   // left every other line a miss (BM_AppearanceMapSevenViews, docs/performance_history.md).
-  const char* ahead = reinterpret_cast<const char*>(w.map.ptr<cv::Vec2f>(y) + x + 64);
-  for (std::size_t b = 0; b < 2 * sizeof(T); b += 64) __builtin_prefetch(ahead + b);
+  // As an address, not a pointer: near the last row it lies past the map, and pointer
+  // arithmetic beyond an array is undefined (a prefetch of any address is harmless).
+  const std::uintptr_t ahead =
+      reinterpret_cast<std::uintptr_t>(w.map.ptr<cv::Vec2f>(y) + x) + 64 * sizeof(cv::Vec2f);
+  for (std::size_t b = 0; b < 2 * sizeof(T); b += 64)
+    __builtin_prefetch(reinterpret_cast<const void*>(ahead + b));
   // Covered where the map holds source coordinates (uncovered: −1): the depth is read only when
   // an option needs it, which saves a third of what the kernel streams through.
   auto valid = u > -0.5f;

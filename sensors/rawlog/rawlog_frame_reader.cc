@@ -1,4 +1,5 @@
 #include "sensors/rawlog/rawlog_frame_reader.h"
+#include "sensors/rawlog/external_files.h"
 
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/rawlog_input.h"
@@ -41,6 +42,7 @@ bool RawlogFrameReader::Next(core::Frame& frame) {
     const int index = ++frames_;
     const std::string where = path_ + ": RGB-D frame " + std::to_string(index);
     try {
+      CheckExternalDepth(*scan);
       scan->load();
       DecodeRgbd(*scan, frame.rgb, frame.depth, frame.camera);
       frame.index = index;

@@ -1,5 +1,6 @@
 #include "sensors/stereo/plane_sweep.h"
 
+#include <cmath>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
@@ -37,8 +38,23 @@ void CheckInput(const cv::Mat& reference, const core::PinholeCamera& camera,
                                   " or of another type than the reference image");
     others[i].camera.Check();
   }
-  if (!(o.near > 0 && o.far > o.near) || o.hypotheses < 2)
-    throw std::invalid_argument("plane sweep: need 0 < near < far and at least 2 hypotheses");
+  if (!(o.near > 0 && o.far > o.near && std::isfinite(o.far)) || o.hypotheses < 2 ||
+      o.hypotheses > kMaxHypotheses)
+    throw std::invalid_argument("plane sweep: need 0 < near < far and 2…" +
+                                std::to_string(kMaxHypotheses) + " hypotheses");
+  if (o.window < 1 || o.window > 63)
+    throw std::invalid_argument("plane sweep: window must be 1…63, got " + std::to_string(o.window));
+  // Cost volumes, belief propagation's messages and their pyramid hold floats per pixel and
+  // hypothesis: a 1282×1110 pair with 64 hypotheses peaked at 7.5 GB, 20 volumes' worth. Bounded
+  // before anything is allocated.
+  const double bytes = 20.0 * 4.0 * camera.width * camera.height * o.hypotheses;
+  if (bytes > kMaxVolumeBytes) {
+    throw std::invalid_argument(
+        "plane sweep: " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +
+        " with " + std::to_string(o.hypotheses) + " hypotheses needs about " +
+        std::to_string(int(bytes / (1 << 20))) + " MB, over " +
+        std::to_string(int(kMaxVolumeBytes / (1 << 20))) + " MB: fewer hypotheses or smaller images");
+  }
 }
 
 }  // namespace

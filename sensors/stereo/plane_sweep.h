@@ -16,6 +16,10 @@
 
 namespace novelty::sensors {
 
+/// Bounds checked before anything is allocated (a frame's volumes must fit a robot's memory).
+inline constexpr int kMaxHypotheses = 512;
+inline constexpr double kMaxVolumeBytes = 2.0 * (1 << 30);
+
 struct PlaneSweepOptions {
   double near = 0.5;    ///< nearest depth hypothesis (m)
   double far = 5.0;     ///< farthest depth hypothesis (m)

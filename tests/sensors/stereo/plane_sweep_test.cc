@@ -65,5 +65,28 @@ TEST(PlaneSweep, RefusesRigsWithImagesOfDifferentSizes) {
   EXPECT_THROW(PlaneSweep(ref, camera, {}, {}), std::invalid_argument);
 }
 
+// The reliability issue's reproducers: 100 000 hypotheses died of bad_alloc, a 1282×1110 pair
+// took 7.5 GB. Both are refused before anything is allocated, saying why.
+TEST(PlaneSweep, RefusesVolumesARobotCannotHold) {
+  const core::PinholeCamera small = core::PinholeCamera::FromFov(32, 24, M_PI / 3);
+  const cv::Mat a = Texture(32, 24, 4);
+  PlaneSweepOptions many;
+  many.hypotheses = 100000;
+  EXPECT_THROW(PlaneSweep(a, small, {{a, small, Eigen::Isometry3d::Identity()}}, many),
+               std::invalid_argument);
+  const core::PinholeCamera big = core::PinholeCamera::FromFov(1282, 1110, M_PI / 3);
+  const cv::Mat b(1110, 1282, CV_8UC3, cv::Scalar::all(0));
+  try {
+    PlaneSweep(b, big, {{b, big, Eigen::Isometry3d::Identity()}}, {});
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("MB"), std::string::npos) << e.what();
+  }
+  PlaneSweepOptions window;
+  window.window = 0;
+  EXPECT_THROW(PlaneSweep(a, small, {{a, small, Eigen::Isometry3d::Identity()}}, window),
+               std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace novelty::sensors
