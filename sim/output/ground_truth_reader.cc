@@ -1,5 +1,7 @@
 #include "sim/output/ground_truth_reader.h"
+#include "core/rigid_pose.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
@@ -52,6 +54,10 @@ GroundTruthReader::GroundTruthReader(const std::string& dir) : dir_(dir) {
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
     T.linear() = q.normalized().toRotationMatrix();
     T.translation() = Eigen::Vector3d(std::stod(f[3]), std::stod(f[4]), std::stod(f[5]));
+    // A NaN or zero quaternion normalises to NaN: the pose would warp every view to nowhere.
+    if (!(std::abs(q.norm() - 1.0) < 1e-3) || !core::IsRigid(T, 1e-6))
+      throw std::invalid_argument("not a rigid pose (quaternion norm " + std::to_string(q.norm()) +
+                                  ")");
     poses_[std::stoi(f[0])] = T;
   });
   ReadRows(dir + "/objects.csv", false, [&](const std::vector<std::string>& f) {

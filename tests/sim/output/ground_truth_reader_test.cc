@@ -92,6 +92,21 @@ TEST(GroundTruthReader, BadFilesAreNamedWithTheirLine) {
     EXPECT_NE(std::string(e.what()).find("poses.csv:2: malformed row"), std::string::npos)
         << e.what();
   }
+  // A NaN or zero quaternion is not a pose.
+  for (const char* q : {"nan,0,0,1", "0,0,0,0", "0,0,0,2"}) {
+    std::ofstream(dir / "poses.csv") << "frame,time,phase,x,y,z,qx,qy,qz,qw\n1,0,A,1,2,3," << q
+                                     << "\n";
+    try {
+      GroundTruthReader reader(dir.string());
+      ADD_FAILURE() << q;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("poses.csv:2: malformed row (not a rigid pose"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  std::ofstream(dir / "poses.csv") << "frame,time,phase,x,y,z,qx,qy,qz,qw\n1,0,A,1,2,3,0,0,0,1\n";
+  EXPECT_EQ(GroundTruthReader(dir.string()).CameraPoses().size(), 1u);
 }
 
 }  // namespace
