@@ -5,6 +5,9 @@
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/opengl/CFrustum.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -83,6 +86,15 @@ Eigen::Isometry3d ReadPose(mrpt::serialization::CArchive& in) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c) in >> p.matrix()(r, c);
   return p;
+}
+
+// fsync of a file or a folder; throws std::runtime_error if it fails.
+void SyncToDisk(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) throw std::runtime_error("cannot open " + path + " to sync it");
+  const int synced = ::fsync(fd);
+  ::close(fd);
+  if (synced != 0) throw std::runtime_error("cannot sync " + path + " to disk");
 }
 
 }  // namespace
@@ -178,7 +190,11 @@ void SaveAtomically(const mrpt::serialization::CSerializable& object, const std:
     auto arch = mrpt::serialization::archiveFrom(file);
     arch << object;
     file.close();
+    // On disk before the rename, and the rename on disk before we return: a power cut then
+    // leaves the old map or the new one, never a renamed empty file.
+    SyncToDisk(tmp);
     std::filesystem::rename(tmp, path);
+    SyncToDisk(std::filesystem::absolute(path).parent_path().string());
   } catch (const std::exception& e) {  // MRPT's own message spans many lines: one is enough
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);

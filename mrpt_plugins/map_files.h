@@ -34,7 +34,8 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
 void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<double>& badness,
                    mrpt::opengl::CSetOfObjects& o);
 
-/// Serializes `object` to `path` through a temporary file and a rename.
+/// Serializes `object` to `path` through a temporary file (`path`.tmp, synced to disk) and a
+/// rename: a process killed at any moment, or a full disk, leaves `path` the old map or the new.
 void SaveAtomically(const mrpt::serialization::CSerializable& object, const std::string& path);
 /// Deserializes `path` into `object` (a fresh one: on failure the caller's map is untouched);
 /// throws std::runtime_error naming the file and `kind`.
