@@ -2,6 +2,8 @@
 #
 #   NOVELTY_WERROR     (ON)  treat compiler warnings in our code as errors
 #   NOVELTY_SANITIZE   (OFF) build with AddressSanitizer + UndefinedBehaviorSanitizer
+#   NOVELTY_FUZZ       (OFF) with clang: the libFuzzer targets of tests/fuzz, every library
+#                            instrumented for them (scripts/sanitize.sh builds both)
 #   NOVELTY_NATIVE     (ON)  -march=native: the per-pixel kernels are vectorised with Eigen and
 #                            need AVX2/FMA to meet the budgets of DESIGN.md; binaries are built on
 #                            the machine that runs them, so this is safe. Turn off to ship binaries
@@ -21,6 +23,7 @@ option(NOVELTY_WERROR "Treat warnings as errors in NoveltyMaps code" ON)
 option(NOVELTY_SANITIZE "Build with address and undefined-behaviour sanitizers" OFF)
 option(NOVELTY_NATIVE "Optimise for the build machine's CPU (-march=native)" ON)
 option(BUILD_SHARED_LIBS "Build NoveltyMaps' libraries as shared libraries" ON)
+option(NOVELTY_FUZZ "Build the libFuzzer targets of tests/fuzz (clang; all our code instrumented)" OFF)
 option(NOVELTY_PORTABLE "Build for any x86-64, with AVX2/AVX-512 variants chosen at run time" OFF)
 if(NOVELTY_PORTABLE)
   if(NOVELTY_NATIVE)
@@ -50,6 +53,12 @@ endif()
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
   target_compile_options(novelty_build_flags INTERFACE -Wno-uninitialized
                                                        -Wno-maybe-uninitialized -Wno-array-bounds)
+endif()
+if(NOVELTY_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "NOVELTY_FUZZ=ON needs clang (libFuzzer): CXX=clang++ cmake ...")
+  endif()
+  target_compile_options(novelty_build_flags INTERFACE -fsanitize=fuzzer-no-link)
 endif()
 if(NOVELTY_SANITIZE)
   # Alignment checks are off: MRPT 2.5 declares its OpenGL classes 32-byte aligned

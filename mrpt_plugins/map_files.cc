@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
@@ -44,8 +45,18 @@ cv::Mat ReadMat(mrpt::serialization::CArchive& in, const core::PinholeCamera& ca
     throw std::runtime_error(std::string(kMapFileError) + what + " has an unknown type " +
                              std::to_string(type));
   }
+  // Read in chunks, allocated as they arrive: a corrupt or cut file fails after at most a chunk
+  // more than it holds, instead of first asking for the gigabytes its header claims.
+  const std::size_t bytes = std::size_t(rows) * cols * CV_ELEM_SIZE(type);
+  constexpr std::size_t kChunk = std::size_t(1) << 22;
+  std::vector<uint8_t> data;
+  while (data.size() < bytes) {
+    const std::size_t at = data.size(), n = std::min(kChunk, bytes - at);
+    data.resize(at + n);
+    in.ReadBuffer(data.data() + at, n);
+  }
   cv::Mat m(rows, cols, type);
-  in.ReadBuffer(m.data, m.total() * m.elemSize());
+  if (bytes > 0) std::memcpy(m.data, data.data(), bytes);
   return m;
 }
 

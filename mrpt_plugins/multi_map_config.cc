@@ -49,8 +49,11 @@ std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBa
       n = std::stoi(text, &used);
     } catch (const std::exception&) {
     }
-    if (n < 0 || used != text.size())
-      throw std::runtime_error(where + " = '" + text + "': not a count >= 0");
+    // Each map holds its own reference views: a robot runs a few, not thousands.
+    constexpr int kMaxMapsPerClass = 16;
+    if (n < 0 || n > kMaxMapsPerClass || used != text.size())
+      throw std::runtime_error(where + " = '" + text + "': not a count in 0…" +
+                               std::to_string(kMaxMapsPerClass));
     if (n > 0 && !std::unique_ptr<mrpt::maps::TMetricMapInitializer>(
                      mrpt::maps::TMetricMapInitializer::factory(cls)))
       throw std::runtime_error(where + ": unknown map class '" + cls + "'");

@@ -18,11 +18,7 @@ std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config) {
   return file ? file->getAssociatedFile() : "map definition";
 }
 
-std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path))
-    throw std::runtime_error(path + ": no such config file");
-  std::ifstream in(path, std::ios::binary);
-  const std::string content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+void CheckIniText(const std::string& content, const std::string& path) {
   // An image or a map file given as a config must not read as no options.
   if (content.find('\0') != std::string::npos)
     throw std::runtime_error(path + ": not a text .ini file");
@@ -45,6 +41,13 @@ std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string&
       throw std::runtime_error(where + "'" + text + "' is outside any [section]");
     }
   }
+}
+
+std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path))
+    throw std::runtime_error(path + ": no such config file");
+  std::ifstream in(path, std::ios::binary);
+  CheckIniText({std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()}, path);
   try {
     return std::make_unique<mrpt::config::CConfigFile>(path);
   } catch (const std::exception& e) {  // MRPT's message spans lines of parser detail

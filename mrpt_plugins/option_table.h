@@ -318,8 +318,12 @@ void CheckNotNegative(double value, const char* key);
 /// Throws std::invalid_argument "KEY must be in [lo, hi], got VALUE" (NaN fails too).
 void CheckInRange(double value, double lo, double hi, const char* key);
 
+/// Throws std::runtime_error "PATH:LINE: …" for `.ini` text with lines MRPT's parser would skip
+/// in silence (an unclosed "[section", a line without '=', a key before any section), or
+/// "PATH: not a text .ini file" for binary content.
+void CheckIniText(const std::string& content, const std::string& path);
 /// Opens an `.ini` file for TabledOptions::FromFile; throws std::runtime_error naming a missing
-/// file, one that is not text, or one MRPT cannot parse.
+/// file, one that is not text (CheckIniText), or one MRPT cannot parse.
 std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string& path);
 
 template <class Derived>

@@ -54,7 +54,9 @@ TEST(CheckMultiMapConfig, RejectsWhatMrptsLoaderIgnores) {
   EXPECT_EQ(ErrorOf("[maps]\nCAppearanceMap_count = 1\n"),
             "maps.ini: no section [map] declaring maps (<MapClass>_count = N)");
   EXPECT_EQ(ErrorOf("[map]\nCAppearanceMap_count = one\n"),
-            "maps.ini: [map] CAppearanceMap_count = 'one': not a count >= 0");
+            "maps.ini: [map] CAppearanceMap_count = 'one': not a count in 0…16");
+  EXPECT_EQ(ErrorOf("[map]\nCAppearanceMap_count = 1000000\n"),
+            "maps.ini: [map] CAppearanceMap_count = '1000000': not a count in 0…16");
   EXPECT_EQ(ErrorOf("[map]\nCAppearanceMap_count = 1 ; the map\n"), "");
   // The program's own sections may share the file; only map-like names are checked.
   EXPECT_EQ(ErrorOf("[SLAM]\nrate = 5\n[map]\nCAppearanceMap_count = 1\n"), "");
