@@ -48,7 +48,8 @@ target_link_libraries(novelty_ode INTERFACE PkgConfig::ODE)
 target_compile_definitions(novelty_ode INTERFACE dIDEDOUBLE)
 
 find_package(Threads REQUIRED)
-find_package(ZLIB REQUIRED)  # completeness of MRPT's gzip'd external depth files
+find_package(ZLIB REQUIRED)
+find_package(zstd REQUIRED CONFIG)  # map files' planes (maps/views/plane_codec)  # completeness of MRPT's gzip'd external depth files
 
 find_package(GTest QUIET)
 novelty_require(GTest_FOUND "libgtest-dev libgmock-dev")

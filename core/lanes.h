@@ -18,6 +18,32 @@ constexpr int kLanes = 16;
 typedef float F16 __attribute__((vector_size(4 * kLanes)));
 typedef int32_t I16 __attribute__((vector_size(4 * kLanes)));
 
+/// GCC's __builtin_shuffle: lane k of the result is lane index[k] of `a` (of a, then b, for
+/// two). Clang has only shuffles by constant indices, so there (the fuzzing build) a loop.
+template <class V>
+inline V Shuffle(V a, I16 index) {
+#if defined(__clang__)
+  V r;
+  for (int k = 0; k < kLanes; ++k) r[k] = a[index[k] & (kLanes - 1)];
+  return r;
+#else
+  return __builtin_shuffle(a, index);
+#endif
+}
+template <class V>
+inline V Shuffle(V a, V b, I16 index) {
+#if defined(__clang__)
+  V r;
+  for (int k = 0; k < kLanes; ++k) {
+    const int i = index[k] & (2 * kLanes - 1);
+    r[k] = i < kLanes ? a[i] : b[i - kLanes];
+  }
+  return r;
+#else
+  return __builtin_shuffle(a, b, index);
+#endif
+}
+
 inline F16 Load(const float* p) {
   F16 v;
   std::memcpy(&v, p, sizeof v);
@@ -59,7 +85,11 @@ inline I16 GatherBytes(const char* base, I16 offset) {
   return (I16)_mm512_i32gather_epi32((__m512i)offset, base, 1);
 #else
   I16 v;
-  for (int k = 0; k < kLanes; ++k) std::memcpy(&v[k], base + offset[k], 4);
+  for (int k = 0; k < kLanes; ++k) {
+    int32_t word;
+    std::memcpy(&word, base + offset[k], 4);
+    v[k] = word;
+  }
   return v;
 #endif
 }
@@ -189,18 +219,18 @@ inline void StoreMasked(float* p, F16 v, I16 mask) {
 inline void StoreMaskedPairs(float* p, F16 a, F16 b, I16 mask) {
   const I16 lo{0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23};
   const I16 spread_lo{0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7};
-  StoreMasked(p, __builtin_shuffle(a, b, lo), __builtin_shuffle(mask, spread_lo));
-  StoreMasked(p + kLanes, __builtin_shuffle(a, b, lo + 8), __builtin_shuffle(mask, spread_lo + 8));
+  StoreMasked(p, Shuffle(a, b, lo), Shuffle(mask, spread_lo));
+  StoreMasked(p + kLanes, Shuffle(a, b, lo + 8), Shuffle(mask, spread_lo + 8));
 }
 /// The inverse of StoreMaskedPairs: a[k] = p[2k], b[k] = p[2k+1] where mask[k], 0 elsewhere
 /// (masked-out pairs are not read).
 inline void LoadMaskedPairs(const float* p, I16 mask, F16& a, F16& b) {
   const I16 spread_lo{0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7};
-  const F16 lo = LoadMasked(p, __builtin_shuffle(mask, spread_lo));
-  const F16 hi = LoadMasked(p + kLanes, __builtin_shuffle(mask, spread_lo + 8));
+  const F16 lo = LoadMasked(p, Shuffle(mask, spread_lo));
+  const F16 hi = LoadMasked(p + kLanes, Shuffle(mask, spread_lo + 8));
   const I16 even{0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30};
-  a = __builtin_shuffle(lo, hi, even);
-  b = __builtin_shuffle(lo, hi, even + 1);
+  a = Shuffle(lo, hi, even);
+  b = Shuffle(lo, hi, even + 1);
 }
 /// p[index[k]] = v[k] per lane (one scatter instruction with AVX-512).
 inline void Scatter(float* p, I16 index, F16 v) {

@@ -1,7 +1,7 @@
 #include "mrpt_plugins/map_files.h"
 
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/opengl/CFrustum.h>
 
@@ -15,6 +15,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "maps/views/plane_codec.h"
 #include "mrpt_plugins/option_table.h"
 #include "sensors/rawlog/brief_message.h"
 #include "sensors/rawlog/rgbd_observation.h"
@@ -23,15 +24,36 @@ namespace novelty::mrpt_plugins {
 
 namespace {
 
-void WriteMat(mrpt::serialization::CArchive& out, const cv::Mat& m) {
-  const cv::Mat c = m.isContinuous() ? m : m.clone();
-  out << int32_t(c.type()) << int32_t(c.rows) << int32_t(c.cols);
-  out.WriteBuffer(c.data, c.total() * c.elemSize());
+// Type, size, then the values as views::EncodePlane gives them (file version 3), or raw.
+void WriteMat(mrpt::serialization::CArchive& out, const cv::Mat& m, bool encoded) {
+  out << int32_t(m.type()) << int32_t(m.rows) << int32_t(m.cols);
+  if (!encoded) {
+    const cv::Mat c = m.isContinuous() ? m : m.clone();
+    out.WriteBuffer(c.data, c.total() * c.elemSize());
+    return;
+  }
+  const std::vector<uint8_t> bytes = views::EncodePlane(m);
+  out << uint32_t(bytes.size());
+  out.WriteBuffer(bytes.data(), bytes.size());
 }
 
-// An image of the view's size (checked before anything is allocated) and of a type maps store.
+// `bytes` bytes, allocated in chunks as they arrive: a corrupt or cut file fails after at most a
+// chunk more than it holds, instead of first asking for the gigabytes its header claims.
+std::vector<uint8_t> ReadChunked(mrpt::serialization::CArchive& in, std::size_t bytes) {
+  constexpr std::size_t kChunk = std::size_t(1) << 22;
+  std::vector<uint8_t> data;
+  while (data.size() < bytes) {
+    const std::size_t at = data.size(), n = std::min(kChunk, bytes - at);
+    data.resize(at + n);
+    in.ReadBuffer(data.data() + at, n);
+  }
+  return data;
+}
+
+// An image of the view's size (checked before anything is allocated) and of a type maps store;
+// `encoded`: as WriteMat writes it (version 3), else raw values (versions 0-2).
 cv::Mat ReadMat(mrpt::serialization::CArchive& in, const core::PinholeCamera& camera,
-                const std::string& what) {
+                const std::string& what, bool encoded) {
   int32_t type, rows, cols;
   in >> type >> rows >> cols;
   if (rows != camera.height || cols != camera.width) {
@@ -45,16 +67,22 @@ cv::Mat ReadMat(mrpt::serialization::CArchive& in, const core::PinholeCamera& ca
     throw std::runtime_error(std::string(kMapFileError) + what + " has an unknown type " +
                              std::to_string(type));
   }
-  // Read in chunks, allocated as they arrive: a corrupt or cut file fails after at most a chunk
-  // more than it holds, instead of first asking for the gigabytes its header claims.
   const std::size_t bytes = std::size_t(rows) * cols * CV_ELEM_SIZE(type);
-  constexpr std::size_t kChunk = std::size_t(1) << 22;
-  std::vector<uint8_t> data;
-  while (data.size() < bytes) {
-    const std::size_t at = data.size(), n = std::min(kChunk, bytes - at);
-    data.resize(at + n);
-    in.ReadBuffer(data.data() + at, n);
+  if (bytes > (std::size_t(1) << 28))
+    throw std::runtime_error(std::string(kMapFileError) + what + " is over 256 MB");
+  if (encoded) {
+    uint32_t size = 0;
+    in >> size;
+    if (size > bytes + bytes / 8 + 1024)  // more than zstd's worst case for the plane
+      throw std::runtime_error(std::string(kMapFileError) + what + ": implausible encoded size");
+    const std::vector<uint8_t> data = ReadChunked(in, size);
+    try {
+      return views::DecodePlane(data.data(), data.size(), rows, cols, type);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(std::string(kMapFileError) + what + ": " + e.what());
+    }
   }
+  const std::vector<uint8_t> data = ReadChunked(in, bytes);
   cv::Mat m(rows, cols, type);
   if (bytes > 0) std::memcpy(m.data, data.data(), bytes);
   return m;
@@ -126,7 +154,8 @@ bool DecodeObservation(const mrpt::obs::CObservation& obs,
   return true;
 }
 
-void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map) {
+void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map,
+                  bool encoded) {
   const views::ReferenceViewStore& store = map.store();
   out << int32_t(store.size());
   for (int j = 0; j < store.size(); ++j) {
@@ -135,16 +164,16 @@ void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBase
         << v.camera.cx << v.camera.cy;
     WritePose(out, v.T_world_cam);
     WritePose(out, map.anchors()[std::size_t(j)]);
-    WriteMat(out, v.depth);
+    WriteMat(out, v.depth, encoded);
     out << int32_t(v.planes.size());
     for (const auto& [name, plane] : v.planes) {
       out << name;
-      WriteMat(out, plane);
+      WriteMat(out, plane, encoded);
     }
   }
 }
 
-void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map) {
+void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map, bool encoded) {
   int32_t n;
   in >> n;
   if (n < 0 || n > 1000000) throw std::runtime_error(std::string(kMapFileError) + "corrupt view count");
@@ -156,7 +185,7 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
     v.camera = ReadCamera(in, what);
     v.T_world_cam = ReadPose(in);
     anchors.push_back(ReadPose(in));
-    v.depth = ReadMat(in, v.camera, what + " depth");
+    v.depth = ReadMat(in, v.camera, what + " depth", encoded);
     CheckDepth(v.depth, what);
     int32_t planes;
     in >> planes;
@@ -164,7 +193,7 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
       throw std::runtime_error(std::string(kMapFileError) + what + ": implausible plane count");
     for (int32_t k = 0; k < planes; ++k) {
       const std::string name = ReadShortString(in, 64, what + " plane name");
-      v.planes[name] = ReadMat(in, v.camera, what + " plane '" + name + "'");
+      v.planes[name] = ReadMat(in, v.camera, what + " plane '" + name + "'", encoded);
     }
     views.push_back(std::move(v));
   }
@@ -196,7 +225,9 @@ void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<dou
 void SaveAtomically(const mrpt::serialization::CSerializable& object, const std::string& path) {
   const std::string tmp = path + ".tmp";
   try {
-    mrpt::io::CFileGZOutputStream file(tmp);
+    // Plain: the planes are compressed already (views::EncodePlane); MRPT's reader takes plain
+    // and gzip'd files alike, so maps saved gzip'd before load as they did.
+    mrpt::io::CFileOutputStream file(tmp);
     if (!file.fileOpenCorrectly()) throw std::runtime_error("cannot open " + tmp);
     auto arch = mrpt::serialization::archiveFrom(file);
     arch << object;

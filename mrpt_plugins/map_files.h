@@ -24,10 +24,14 @@ bool DecodeObservation(const mrpt::obs::CObservation& obs,
                        const std::optional<const mrpt::poses::CPose3D>& robot_pose,
                        core::Frame& frame);
 
-/// Views (camera, pose, anchor, depth, named planes) of a view-based map.
-void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map);
-/// Reads what WriteViewMap wrote into `map` (replacing its views only if all reads succeed).
-void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map);
+/// Views (camera, pose, anchor, depth, named planes) of a view-based map, the images encoded by
+/// views::EncodePlane (map file version 3), or raw (`encoded` false: versions 0-2, for tests).
+void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map,
+                  bool encoded = true);
+/// Reads what WriteViewMap wrote into `map` (replacing its views only if all reads succeed);
+/// `encoded` false: the raw images of file versions 0-2.
+void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map,
+                 bool encoded = true);
 
 /// One frustum per reference view at its pose; `badness[j]` in [0, 1] colours view j from green
 /// to red (empty: all grey).

@@ -95,8 +95,9 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     c.poses = pose_check_.options();
     return c;
   }
-  /// Map file, version 2: every option by key (option_table.h), then the views.
-  static constexpr uint8_t kFileVersion = 2;
+  /// Map file, version 3: every option by key (option_table.h), then the views with their images
+  /// encoded (views::EncodePlane). Version 2 stored the images raw.
+  static constexpr uint8_t kFileVersion = 3;
   void WriteMapFile(mrpt::serialization::CArchive& out) const {
     Config::Table().Write(out, CurrentConfig());
     WriteViewMap(out, map_->view_map());
@@ -105,11 +106,15 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   /// others get the behaviour they had then: OptionEntry::legacy). The map is replaced only when
   /// everything was read.
   void ReadMapFile(mrpt::serialization::CArchive& in, uint8_t version) {
-    if (version > kFileVersion) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+    if (version > kFileVersion) {
+      throw std::runtime_error(std::string(kMapFileError) + "format version " +
+                               std::to_string(version) + ", newer than this program's (" +
+                               std::to_string(kFileVersion) + ")");
+    }
     Config c;
     c.depth = depth_source_;  // files before version 2 did not hold it: the map's stays
     c.poses = pose_check_.options();
-    if (version == kFileVersion) {
+    if (version >= 2) {
       Config::Table().Read(in, c);
     } else {
       std::vector<std::string> keys = Config::Version0Keys();
@@ -119,7 +124,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     }
     auto map = std::make_unique<Map>(c.map);
     try {
-      ReadViewMap(in, map->view_map());
+      ReadViewMap(in, map->view_map(), version >= 3);
       map->CheckStoredPlanes();
     } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
       throw std::runtime_error(std::string(kMapFileError) + e.what());

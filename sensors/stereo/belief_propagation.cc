@@ -59,8 +59,8 @@ struct Level {
 
 // Writes the 32 values of a natural-order row chunk (x = 32m … 32m+31) as block m+1 of each half.
 inline void SplitChunk(F16 a, F16 b, float* half0, float* half1) {
-  Store(half0, __builtin_shuffle(a, b, kEvens));
-  Store(half1, __builtin_shuffle(a, b, kOdds));
+  Store(half0, Shuffle(a, b, kEvens));
+  Store(half1, Shuffle(a, b, kOdds));
 }
 
 // Per thread: the four outgoing messages of sixteen pixels, label by label.
@@ -83,13 +83,13 @@ void StoreMessage(float* dest, std::size_t block_size, int shift, int labels, I1
     if (shift == 0) {
       Store(d, keep ? Load(d) : m);
     } else if (shift < 0) {  // receiver of lane k is lane k − 1
-      const F16 r = __builtin_shuffle(m, kRotateDown);
-      const I16 own = (lane < 15) & ~__builtin_shuffle(keep, kRotateDown);
+      const F16 r = Shuffle(m, kRotateDown);
+      const I16 own = (lane < 15) & ~Shuffle(keep, kRotateDown);
       Store(d, own ? r : Load(d));
       if (!keep[0]) d[int(kLanes) - 1 - int(block_size)] = m[0];  // lane 15 of the block before
     } else {  // receiver of lane k is lane k + 1
-      const F16 r = __builtin_shuffle(m, kRotateUp);
-      const I16 own = (lane > 0) & ~__builtin_shuffle(keep, kRotateUp);
+      const F16 r = Shuffle(m, kRotateUp);
+      const I16 own = (lane > 0) & ~Shuffle(keep, kRotateUp);
       Store(d, own ? r : Load(d));
       if (!keep[15]) d[block_size] = m[15];  // lane 0 of the block after
     }
@@ -242,7 +242,7 @@ void InheritMessages(const Level& coarse, Level& fine) {
           for (int l = 0; l < fine.labels; ++l) {
             const std::size_t o = std::size_t(l) * kLanes;
             const F16 a = Load(parent + c0 + o), c = Load(parent + c1 + o);
-            const F16 v = __builtin_shuffle(a, c, high ? kZipHigh : kZipLow);
+            const F16 v = Shuffle(a, c, high ? kZipHigh : kZipLow);
             Store(child + f0 + o, v);
             Store(child + f1 + o, v);
           }

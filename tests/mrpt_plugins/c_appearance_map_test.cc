@@ -19,15 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool SameMaps(const cv::Mat& a, const cv::Mat& b) {
-  for (int i = 0; i < a.rows * a.cols; ++i) {
-    const float x = a.at<float>(i), y = b.at<float>(i);
-    if (!(x == y || (std::isnan(x) && std::isnan(y)))) return false;
-  }
-  return true;
-}
-
-TEST(CAppearanceMap, SurpriseAfterSaveAndLoadEqualsSurpriseWithout) {
+// Map files store the planes compactly (views::EncodePlane): the surprise a reloaded map gives is
+// within 1 % (relative L1, the reliability issue's target) of the map's that was never saved,
+// over the same pixels.
+TEST(CAppearanceMap, SurpriseAfterACompactSaveAndLoadIsWithinOnePercentOfWithout) {
   CAppearanceMap kept;
   for (int k = 0; k < 20; ++k) ASSERT_TRUE(kept.insertObservation(Observation(Frames()[k])));
   EXPECT_FALSE(kept.isEmpty());
@@ -36,12 +31,22 @@ TEST(CAppearanceMap, SurpriseAfterSaveAndLoadEqualsSurpriseWithout) {
   CAppearanceMap reloaded;
   reloaded.LoadFromFile(file.string());
   EXPECT_EQ(reloaded.map().store().size(), kept.map().store().size());
+  double error = 0.0, total = 0.0;
   for (std::size_t k = 20; k < Frames().size(); ++k) {
     kept.insertObservation(Observation(Frames()[k]));
     reloaded.insertObservation(Observation(Frames()[k]));
-    ASSERT_TRUE(SameMaps(kept.lastProducts().surprise, reloaded.lastProducts().surprise))
-        << "frame " << k;
+    const cv::Mat a = kept.lastProducts().surprise, b = reloaded.lastProducts().surprise;
+    for (int i = 0; i < a.rows * a.cols; ++i) {
+      const float x = a.at<float>(i), y = b.at<float>(i);
+      ASSERT_EQ(std::isnan(x), std::isnan(y)) << "frame " << k << ": coverage differs";
+      if (std::isnan(x)) continue;
+      error += std::abs(x - y);
+      total += std::abs(x);
+    }
   }
+  ASSERT_GT(total, 0.0);
+  EXPECT_LT(error / total, 0.01);
+  std::printf("[ COMPACT  ] surprise after reload: relative L1 error %.4f %%\n", 100 * error / total);
 }
 
 // Reads map-file bodies of any version, as MRPT's archive does after the class name.
@@ -68,7 +73,7 @@ TEST(CAppearanceMap, MapFilesOfEveryVersionLoadWithTheOptionsTheyWereMadeWith) {
     mrpt::io::CMemoryStream buffer;
     auto out = mrpt::serialization::archiveFrom(buffer);
     WriteOldOptions(out, version);
-    WriteViewMap(out, source.map().view_map());
+    WriteViewMap(out, source.map().view_map(), false);  // raw images, as then
     buffer.Seek(0);
     auto in = mrpt::serialization::archiveFrom(buffer);
     FileReader loaded;
@@ -87,7 +92,7 @@ TEST(CAppearanceMap, MapFilesOfEveryVersionLoadWithTheOptionsTheyWereMadeWith) {
     // Options no older file held keep their defaults.
     EXPECT_EQ(o.views.warp.planar_block, appearance::ViewBasedMapOptions().warp.planar_block);
   }
-  // Version 2: every option by key, the depth source too.
+  // Version 3 (2 with raw images): every option by key, the depth source too.
   AppearanceMapConfig c;
   c.map.views.warp.planar_block = 4;
   c.map.surprise.update.xi = 0.03;
@@ -99,13 +104,20 @@ TEST(CAppearanceMap, MapFilesOfEveryVersionLoadWithTheOptionsTheyWereMadeWith) {
   buffer.Seek(0);
   auto in = mrpt::serialization::archiveFrom(buffer);
   FileReader loaded;
-  loaded.serializeFrom(in, 2);
+  loaded.serializeFrom(in, 3);
   EXPECT_EQ(loaded.map().options().views.warp.planar_block, 4);
   EXPECT_EQ(loaded.map().options().surprise.update.xi, 0.03);
   EXPECT_EQ(loaded.depthSource().kind, DepthSourceOptions::Kind::kStereo);
   buffer.Seek(0);
   auto again = mrpt::serialization::archiveFrom(buffer);
-  EXPECT_ANY_THROW(loaded.serializeFrom(again, 3));  // a newer file than this build reads
+  try {  // a newer file than this build reads
+    loaded.serializeFrom(again, 4);
+    ADD_FAILURE() << "version 4 was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("format version 4, newer than this program's (3)"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // A map file from a newer build: an option this build does not know.

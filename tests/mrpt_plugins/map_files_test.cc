@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -36,7 +37,9 @@ std::vector<uint8_t> Bytes(const std::function<void(mrpt::serialization::CArchiv
 }
 
 // A small saved map as bytes, and where its views begin: the file is [MRPT's object header]
-// [options] [views] [MRPT's end marker], and the views are what WriteViewMap writes.
+// [options] [views] [MRPT's end marker], and the views are what WriteViewMap writes. Written as
+// file version 2 (raw images), so that values sit at known offsets; that older files load is
+// tested on the way.
 struct SavedMap {
   std::vector<uint8_t> file;
   std::size_t views_at = 0;
@@ -48,9 +51,19 @@ const SavedMap& Saved() {
     CAppearanceMap map;
     for (int k = 0; k < 3; ++k) map.insertObservation(Observation(Frames()[k]));
     SavedMap s;
-    s.file = Bytes([&](auto& a) { a << map; });
-    const std::size_t views = Bytes([&](auto& a) { WriteViewMap(a, map.map().view_map()); }).size();
-    s.views_at = s.file.size() - 1 - views;
+    const std::vector<uint8_t> v3 = Bytes([&](auto& a) { a << map; });
+    const std::size_t encoded =
+        Bytes([&](auto& a) { WriteViewMap(a, map.map().view_map()); }).size();
+    const std::vector<uint8_t> raw =
+        Bytes([&](auto& a) { WriteViewMap(a, map.map().view_map(), false); });
+    s.views_at = v3.size() - 1 - encoded;
+    s.file.assign(v3.begin(), v3.begin() + std::ptrdiff_t(s.views_at));
+    s.file.insert(s.file.end(), raw.begin(), raw.end());
+    s.file.push_back(v3.back());  // MRPT's end-of-object marker
+    // MRPT's header: the class name, then the version byte.
+    const std::string name = "CAppearanceMap";
+    const auto at = std::search(s.file.begin(), s.file.end(), name.begin(), name.end());
+    s.file[std::size_t(at - s.file.begin()) + name.size()] = 2;
     s.width = map.map().store().view(0).camera.width;
     s.height = map.map().store().view(0).camera.height;
     s.views = map.map().store().size();
