@@ -5,7 +5,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake pkg-config git ninja-build clang-format
+  build-essential cmake pkg-config git ninja-build clang-format clang libclang-rt-dev
   libmrpt-dev mrpt-apps
   libopencv-dev libopencv-contrib-dev
   libeigen3-dev libceres-dev liboctomap-dev libopengv-dev
