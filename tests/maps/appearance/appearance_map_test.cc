@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "eval/attentional_selectivity.h"
@@ -347,7 +349,27 @@ TEST(AppearanceMap, BadFramesAreRejectedAndLeaveTheMapUnchanged) {
   Eigen::Isometry3d bad = f.T_world_cam;
   bad.linear() *= 1.1;
   EXPECT_THROW(map.Insert(f.rgb, f.depth, cam, bad), std::invalid_argument);
+  Eigen::Isometry3d nan_pose = f.T_world_cam;
+  nan_pose.translation().x() = std::nan("");
+  EXPECT_THROW(map.Insert(f.rgb, f.depth, cam, nan_pose), std::invalid_argument);
+  // Unknown depth is 0 or NaN; negative or infinite depth is a broken sensor: the frame is refused.
+  for (const float broken : {-0.5f, std::numeric_limits<float>::infinity()}) {
+    cv::Mat depth = f.depth.clone();
+    depth.at<float>(7, 9) = broken;
+    depth.at<float>(50, 60) = broken;
+    try {
+      map.Insert(f.rgb, depth, cam, f.T_world_cam);
+      ADD_FAILURE() << broken;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("2 depths are negative or infinite"), std::string::npos)
+          << e.what();
+    }
+  }
+  cv::Mat unknown = f.depth.clone();
+  unknown.at<float>(7, 9) = std::numeric_limits<float>::quiet_NaN();
+  unknown.at<float>(8, 9) = 0.0f;
   EXPECT_EQ(map.store().size(), 1);
+  EXPECT_NO_THROW(map.Insert(f.rgb, unknown, cam, f.T_world_cam));
 }
 
 }  // namespace
