@@ -2,7 +2,9 @@
 // (examples/CMakeLists.txt). Plays an RGB-D rawlog into the maps of a CMultiMetricMap .ini through
 // insertObservation, writes the surprise of every tenth frame as a PNG, saves the maps after frame
 // K, loads them into a second CMultiMetricMap and plays the rest into both: the loaded maps must
-// give the same surprise as the ones that never stopped (exit 1 if not).
+// give the surprise of the ones that never stopped, over the same pixels and within 1 % (map files
+// store the planes rounded to what the surprise can tell apart: docs/map_storage.md; exit 1 if
+// not).
 //
 //   surprise_from_rawlog RAWLOG MAPS.ini OUT_DIR [K=20]
 //
@@ -15,7 +17,7 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstring>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -27,10 +29,18 @@
 
 using novelty::mrpt_plugins::CAppearanceMap;
 
-// Bit for bit, NaN (no prediction) included.
-bool Same(const cv::Mat& a, const cv::Mat& b) {
-  return a.size() == b.size() && a.type() == b.type() &&
-         std::memcmp(a.data, b.data, a.total() * a.elemSize()) == 0;
+// The same pixels predicted (NaN where not) and a relative L1 difference within 1 %.
+bool Close(const cv::Mat& a, const cv::Mat& b) {
+  if (a.size() != b.size() || a.type() != CV_32FC1 || b.type() != CV_32FC1) return false;
+  double difference = 0.0, total = 0.0;
+  for (int i = 0; i < a.rows * a.cols; ++i) {
+    const float x = a.at<float>(i), y = b.at<float>(i);
+    if (std::isnan(x) != std::isnan(y)) return false;
+    if (std::isnan(x)) continue;
+    difference += std::abs(x - y);
+    total += std::abs(x);
+  }
+  return difference <= 0.01 * total;
 }
 
 int Play(const std::string& rawlog, const std::string& ini, const std::string& out, int k) {
@@ -41,7 +51,7 @@ int Play(const std::string& rawlog, const std::string& ini, const std::string& o
   maps.setListOfMaps(novelty::mrpt_plugins::LoadMultiMapConfig(ini));
   novelty::sensors::RawlogInput input(rawlog);  // also finds the rawlog's external images
   std::optional<mrpt::poses::CPose3D> robot;
-  int frame = 0, identical = 0;
+  int frame = 0, matching = 0;
   while (const auto object = input.Next()) {
     if (const auto o = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(object))
       robot = o->pose.mean;
@@ -59,16 +69,16 @@ int Play(const std::string& rawlog, const std::string& ini, const std::string& o
       novelty::mrpt_plugins::LoadInto(resumed, out + "/maps.bin", "CMultiMetricMap");
     } else if (frame > k) {
       resumed.insertObservation(*rgbd, *robot);
-      identical += Same(map.lastProducts().surprise,
+      matching += Close(map.lastProducts().surprise,
                         resumed.mapByClass<CAppearanceMap>()->lastProducts().surprise);
     }
   }
   // README example ends
   std::printf(
       "%d frames; after loading the maps saved at frame %d, %d of %d frames gave the "
-      "same surprise\n",
-      frame, k, identical, std::max(0, frame - k));
-  return frame > k && identical == frame - k ? 0 : 1;
+      "surprise of the maps never saved (within 1 %%)\n",
+      frame, k, matching, std::max(0, frame - k));
+  return frame > k && matching == frame - k ? 0 : 1;
 }
 
 int main(int argc, char** argv) {

@@ -203,8 +203,11 @@ class OptionTable {
       if (!r) throw std::logic_error("OptionTable::ReadPositional: no option " + key);
       double value = 0.0;
       if (r->entry.kind == OptionKind::kFlag) {
-        bool b = false;
+        uint8_t b = 0;  // MRPT writes a bool as one byte; any other value than 0 or 1 is corrupt
         in >> b;
+        if (b > 1)
+          throw std::runtime_error(std::string(kMapFileError) + key + ": flag byte " +
+                                   std::to_string(b) + ", not 0 or 1");
         value = b;
       } else {
         in >> value;

@@ -3,6 +3,7 @@
 //   OUT/map_file/   a small appearance map and a differencing map (class byte + plain archive)
 //   OUT/rawlog/     a small plain rawlog: robot poses and RGB-D frames with their images inside
 //   OUT/scenario/   the shipped scenarios        OUT/ini/   the shipped .ini files
+//   and in each, the inputs of tests/fuzz/regressions/<target>/ that a fuzzer once failed on
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CObservationRobotPose.h>
@@ -99,6 +100,14 @@ int main(int argc, char** argv) {
   CopyAll(source / "share", ".ini", out / "ini");
   fs::copy_file(source / "examples" / "maps.ini", out / "ini" / "example_maps.ini",
                 fs::copy_options::overwrite_existing);
+  // Inputs the fuzzers once failed on (tests/fuzz/regressions/<target>/): every run retries them.
+  for (const char* d : {"map_file", "rawlog", "scenario", "ini"}) {
+    const fs::path found = source / "tests" / "fuzz" / "regressions" / d;
+    if (!fs::is_directory(found)) continue;
+    for (const auto& e : fs::directory_iterator(found))
+      fs::copy_file(e.path(), out / d / ("regression_" + e.path().filename().string()),
+                    fs::copy_options::overwrite_existing);
+  }
   std::printf("fuzz_seeds: corpora in %s\n", out.c_str());
   return 0;
 }

@@ -4,6 +4,7 @@
 #include <mrpt/maps/CMultiMetricMap.h>
 
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -12,10 +13,15 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
+  std::unique_ptr<mrpt::config::CConfigFileMemory> ini;
   try {
     novelty::mrpt_plugins::CheckIniText(text, "fuzz.ini");
-    const mrpt::config::CConfigFileMemory ini(text);
-    const auto maps = novelty::mrpt_plugins::LoadMultiMapConfig(ini, "map", "fuzz.ini");
+    ini = std::make_unique<mrpt::config::CConfigFileMemory>(text);
+  } catch (const std::exception&) {  // MRPT's parser ($eval{…} etc.): OpenConfigFile reports it
+    return 0;
+  }
+  try {
+    const auto maps = novelty::mrpt_plugins::LoadMultiMapConfig(*ini, "map", "fuzz.ini");
     mrpt::maps::CMultiMetricMap multi;
     multi.setListOfMaps(maps);
   } catch (const std::runtime_error&) {

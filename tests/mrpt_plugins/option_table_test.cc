@@ -172,6 +172,19 @@ TEST(OptionTable, ReadsPositionalFilesWithFlagsAsBools) {
   EXPECT_FALSE(o.on);
   EXPECT_EQ(o.angle, 0.2);
   EXPECT_EQ(o.added_later, 0.0);  // legacy
+  // A flag byte other than 0 or 1 (found by map_file_fuzzer: reading it as a bool was undefined).
+  mrpt::io::CMemoryStream corrupt;
+  auto c = mrpt::serialization::archiveFrom(corrupt);
+  c << 0.4 << uint8_t(97) << 0.2;
+  corrupt.Seek(0);
+  auto cr = mrpt::serialization::archiveFrom(corrupt);
+  try {
+    ToyTable().ReadPositional(cr, {"rate", "on", "angle_deg"}, o);
+    ADD_FAILURE() << "flag byte 97 was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("on: flag byte 97, not 0 or 1"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(OptionTable, IncludeCarriesEntriesAndChecks) {
