@@ -438,8 +438,9 @@ int main(int argc, char** argv) {
     map.SaveSceneFile(a.out + "/map.3Dscene");  // for SceneViewer3D
     std::printf(
         "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
-        "  map:     %s\n  report:  %s/report.html\n",
-        run.frames, player.skipped(), run.seconds, a.out.c_str(), a.map_out.c_str(), a.out.c_str());
+        "  map:     %s (%s)\n  report:  %s/report.html\n",
+        run.frames, player.skipped(), run.seconds, a.out.c_str(), a.map_out.c_str(),
+        map.asString().c_str(), a.out.c_str());
     return player.stopped_by().empty() ? 0 : kExitPartial;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());

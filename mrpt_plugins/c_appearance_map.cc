@@ -39,8 +39,7 @@ CAppearanceMap::CAppearanceMap(const AppearanceMapConfig& config)
 
 std::string CAppearanceMap::asString() const {
   std::ostringstream s;
-  s << "CAppearanceMap: " << map_->store().size() << " reference views, "
-    << map_->store().BytesUsed() / (1024 * 1024) << " MiB";
+  s << "CAppearanceMap: " << StoreSummary(map_->store());
   return s.str();
 }
 
@@ -48,7 +47,7 @@ void CAppearanceMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const 
   const views::ReferenceViewStore& store = map_->store();
   std::vector<double> badness;
   for (int j = 0; j < store.size(); ++j) {
-    badness.push_back(std::log1p(MeanUncertainty(store.view(j))) / std::log1p(1e4));
+    badness.push_back(std::log1p(MeanUncertainty(store.Decoded(j))) / std::log1p(1e4));
   }
   AddViewFrusta(store, badness, o);
 }

@@ -21,7 +21,7 @@ CDifferencingMap::CDifferencingMap(const DifferencingMapConfig& config)
 
 std::string CDifferencingMap::asString() const {
   std::ostringstream s;
-  s << "CDifferencingMap: " << map_->store().size() << " reference views";
+  s << "CDifferencingMap: " << StoreSummary(map_->store());
   return s.str();
 }
 

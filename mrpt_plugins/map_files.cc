@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -24,17 +25,19 @@ namespace novelty::mrpt_plugins {
 
 namespace {
 
-// Type, size, then the values as views::EncodePlane gives them (file version 3), or raw.
-void WriteMat(mrpt::serialization::CArchive& out, const cv::Mat& m, bool encoded) {
+// Type, size, then the bytes of an encoded plane (file versions ≥ 3).
+void WriteEncoded(mrpt::serialization::CArchive& out, const views::EncodedView::Plane& p,
+                  const core::PinholeCamera& camera) {
+  out << int32_t(p.type) << int32_t(camera.height) << int32_t(camera.width);
+  out << uint32_t(p.bytes.size());
+  out.WriteBuffer(p.bytes.data(), p.bytes.size());
+}
+
+// Type, size, then the raw values (file versions 0-2).
+void WriteRaw(mrpt::serialization::CArchive& out, const cv::Mat& m) {
   out << int32_t(m.type()) << int32_t(m.rows) << int32_t(m.cols);
-  if (!encoded) {
-    const cv::Mat c = m.isContinuous() ? m : m.clone();
-    out.WriteBuffer(c.data, c.total() * c.elemSize());
-    return;
-  }
-  const std::vector<uint8_t> bytes = views::EncodePlane(m);
-  out << uint32_t(bytes.size());
-  out.WriteBuffer(bytes.data(), bytes.size());
+  const cv::Mat c = m.isContinuous() ? m : m.clone();
+  out.WriteBuffer(c.data, c.total() * c.elemSize());
 }
 
 // `bytes` bytes, allocated in chunks as they arrive: a corrupt or cut file fails after at most a
@@ -50,10 +53,10 @@ std::vector<uint8_t> ReadChunked(mrpt::serialization::CArchive& in, std::size_t 
   return data;
 }
 
-// An image of the view's size (checked before anything is allocated) and of a type maps store;
-// `encoded`: as WriteMat writes it (version 3), else raw values (versions 0-2).
-cv::Mat ReadMat(mrpt::serialization::CArchive& in, const core::PinholeCamera& camera,
-                const std::string& what, bool encoded) {
+// The type and byte count of an image of the view's size and of a type maps store, checked
+// before anything is allocated.
+int ReadImageHeader(mrpt::serialization::CArchive& in, const core::PinholeCamera& camera,
+                    const std::string& what, std::size_t& bytes) {
   int32_t type, rows, cols;
   in >> type >> rows >> cols;
   if (rows != camera.height || cols != camera.width) {
@@ -67,23 +70,33 @@ cv::Mat ReadMat(mrpt::serialization::CArchive& in, const core::PinholeCamera& ca
     throw std::runtime_error(std::string(kMapFileError) + what + " has an unknown type " +
                              std::to_string(type));
   }
-  const std::size_t bytes = std::size_t(rows) * cols * CV_ELEM_SIZE(type);
+  bytes = std::size_t(rows) * cols * CV_ELEM_SIZE(type);
   if (bytes > (std::size_t(1) << 28))
     throw std::runtime_error(std::string(kMapFileError) + what + " is over 256 MB");
-  if (encoded) {
-    uint32_t size = 0;
-    in >> size;
-    if (size > bytes + bytes / 8 + 1024)  // more than zstd's worst case for the plane
-      throw std::runtime_error(std::string(kMapFileError) + what + ": implausible encoded size");
-    const std::vector<uint8_t> data = ReadChunked(in, size);
-    try {
-      return views::DecodePlane(data.data(), data.size(), rows, cols, type);
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(std::string(kMapFileError) + what + ": " + e.what());
-    }
-  }
+  return type;
+}
+
+// An encoded image as WriteEncoded writes it (versions ≥ 3), not yet decoded.
+views::EncodedView::Plane ReadEncoded(mrpt::serialization::CArchive& in,
+                                      const core::PinholeCamera& camera, const std::string& what) {
+  std::size_t bytes = 0;
+  views::EncodedView::Plane p;
+  p.type = ReadImageHeader(in, camera, what, bytes);
+  uint32_t size = 0;
+  in >> size;
+  if (size > bytes + bytes / 8 + 1024)  // more than zstd's worst case for the plane
+    throw std::runtime_error(std::string(kMapFileError) + what + ": implausible encoded size");
+  p.bytes = ReadChunked(in, size);
+  return p;
+}
+
+// A raw image as WriteRaw writes it (versions 0-2).
+cv::Mat ReadRaw(mrpt::serialization::CArchive& in, const core::PinholeCamera& camera,
+                const std::string& what) {
+  std::size_t bytes = 0;
+  const int type = ReadImageHeader(in, camera, what, bytes);
   const std::vector<uint8_t> data = ReadChunked(in, bytes);
-  cv::Mat m(rows, cols, type);
+  cv::Mat m(camera.height, camera.width, type);
   if (bytes > 0) std::memcpy(m.data, data.data(), bytes);
   return m;
 }
@@ -155,29 +168,47 @@ bool DecodeObservation(const mrpt::obs::CObservation& obs,
 }
 
 void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map,
-                  bool encoded) {
+                  uint8_t version) {
   const views::ReferenceViewStore& store = map.store();
+  views::PlaneCodecOptions shuffled;
+  shuffled.encoding = views::PlaneEncoding::kShuffled;
   out << int32_t(store.size());
   for (int j = 0; j < store.size(); ++j) {
-    const views::ReferenceView& v = store.view(j);
-    out << int32_t(v.camera.width) << int32_t(v.camera.height) << v.camera.fx << v.camera.fy
-        << v.camera.cx << v.camera.cy;
-    WritePose(out, v.T_world_cam);
+    const core::PinholeCamera& c = store.camera(j);
+    out << int32_t(c.width) << int32_t(c.height) << c.fx << c.fy << c.cx << c.cy;
+    WritePose(out, store.pose(j));
     WritePose(out, map.anchors()[std::size_t(j)]);
-    WriteMat(out, v.depth, encoded);
-    out << int32_t(v.planes.size());
-    for (const auto& [name, plane] : v.planes) {
-      out << name;
-      WriteMat(out, plane, encoded);
+    if (version >= 3) {
+      // What a compact map holds already (version 4), else encoded now, a view at a time.
+      const views::EncodedView e =
+          version >= 4 ? store.Encoded(j) : views::EncodeView(store.Decoded(j), shuffled);
+      WriteEncoded(out, e.planes.at(""), c);
+      out << int32_t(e.planes.size() - 1);
+      for (const auto& [name, plane] : e.planes) {
+        if (name.empty()) continue;
+        out << name;
+        WriteEncoded(out, plane, c);
+      }
+    } else {
+      const views::ReferenceView v = store.Decoded(j);
+      WriteRaw(out, v.depth);
+      out << int32_t(v.planes.size());
+      for (const auto& [name, plane] : v.planes) {
+        out << name;
+        WriteRaw(out, plane);
+      }
     }
   }
 }
 
-void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map, bool encoded) {
+void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map,
+                 uint8_t version) {
   int32_t n;
   in >> n;
   if (n < 0 || n > 1000000) throw std::runtime_error(std::string(kMapFileError) + "corrupt view count");
   std::vector<views::ReferenceView> views;
+  std::vector<views::EncodedView> encoded;  // version 4: kept as they are by a compact map
+  const bool compact = map.store().options().decoded_views > 0;
   std::vector<Eigen::Isometry3d> anchors;
   for (int32_t j = 0; j < n; ++j) {
     const std::string what = "view " + std::to_string(j);
@@ -185,19 +216,53 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
     v.camera = ReadCamera(in, what);
     v.T_world_cam = ReadPose(in);
     anchors.push_back(ReadPose(in));
-    v.depth = ReadMat(in, v.camera, what + " depth", encoded);
-    CheckDepth(v.depth, what);
+    views::EncodedView e;
+    e.encoding = version >= 4 ? views::PlaneEncoding::kPredicted : views::PlaneEncoding::kShuffled;
+    if (version >= 3) e.planes[""] = ReadEncoded(in, v.camera, what + " depth");
+    else v.depth = ReadRaw(in, v.camera, what + " depth");
     int32_t planes;
     in >> planes;
     if (planes < 0 || planes > 16)
       throw std::runtime_error(std::string(kMapFileError) + what + ": implausible plane count");
     for (int32_t k = 0; k < planes; ++k) {
       const std::string name = ReadShortString(in, 64, what + " plane name");
-      v.planes[name] = ReadMat(in, v.camera, what + " plane '" + name + "'", encoded);
+      if (name.empty())
+        throw std::runtime_error(std::string(kMapFileError) + what + ": a plane without a name");
+      const std::string plane = what + " plane '" + name + "'";
+      if (version >= 3) e.planes[name] = ReadEncoded(in, v.camera, plane);
+      else v.planes[name] = ReadRaw(in, v.camera, plane);
+    }
+    if (version >= 3) {
+      try {
+        views::DecodeInto(e, v);
+      } catch (const std::runtime_error& error) {
+        throw std::runtime_error(std::string(kMapFileError) + what + " " + error.what());
+      }
+    }
+    CheckDepth(v.depth, what);
+    if (version >= 4 && compact) {  // held as it was read: no second copy of 200 views decoded
+      v.depth.release();
+      v.planes.clear();
     }
     views.push_back(std::move(v));
+    if (version >= 4) encoded.push_back(std::move(e));
   }
-  map.Restore(std::move(views), std::move(anchors));
+  map.Restore(std::move(views), std::move(anchors), std::move(encoded));
+}
+
+std::string StoreSummary(const views::ReferenceViewStore& store) {
+  int decoded = 0;
+  for (int j = 0; j < store.size(); ++j) decoded += store.decoded(j);
+  char text[200];
+  std::snprintf(text, sizeof text, "%d reference views, %.1f MiB", store.size(),
+                double(store.BytesUsed()) / (1 << 20));
+  std::string s = text;
+  if (store.options().decoded_views > 0) {
+    std::snprintf(text, sizeof text, " (%d decoded, the rest compact; %ld encodings, %ld decodings)",
+                  decoded, store.counts().encoded, store.counts().decoded);
+    s += text;
+  }
+  return s;
 }
 
 void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<double>& badness,
@@ -206,9 +271,9 @@ void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<dou
   Eigen::Isometry3d cam_from_frustum = Eigen::Isometry3d::Identity();
   cam_from_frustum.linear() << 0, -1, 0, 0, 0, -1, 1, 0, 0;
   for (int j = 0; j < store.size(); ++j) {
-    const views::ReferenceView& v = store.view(j);
-    const double hfov = 2.0 * std::atan(0.5 * v.camera.width / std::abs(v.camera.fx));
-    const double vfov = 2.0 * std::atan(0.5 * v.camera.height / std::abs(v.camera.fy));
+    const core::PinholeCamera& c = store.camera(j);
+    const double hfov = 2.0 * std::atan(0.5 * c.width / std::abs(c.fx));
+    const double vfov = 2.0 * std::atan(0.5 * c.height / std::abs(c.fy));
     auto f = mrpt::opengl::CFrustum::Create(0.01f, 0.08f, float(hfov * 180 / M_PI),
                                             float(vfov * 180 / M_PI), 1.0f, true, false);
     if (badness.empty()) {
@@ -217,7 +282,7 @@ void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<dou
       const double u = std::clamp(badness[std::size_t(j)], 0.0, 1.0);
       f->setColor_u8(uint8_t(255 * u), uint8_t(255 * (1 - u)), 40);
     }
-    f->setPose(sensors::ToMrpt(v.T_world_cam * cam_from_frustum));
+    f->setPose(sensors::ToMrpt(store.pose(j) * cam_from_frustum));
     o.insert(f);
   }
 }

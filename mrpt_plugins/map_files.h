@@ -24,14 +24,19 @@ bool DecodeObservation(const mrpt::obs::CObservation& obs,
                        const std::optional<const mrpt::poses::CPose3D>& robot_pose,
                        core::Frame& frame);
 
-/// Views (camera, pose, anchor, depth, named planes) of a view-based map, the images encoded by
-/// views::EncodePlane (map file version 3), or raw (`encoded` false: versions 0-2, for tests).
+/// Views (camera, pose, anchor, depth, named planes) of a view-based map in map file format
+/// `version`: 4 (views::EncodedView, as a compact map holds them), 3 (views::PlaneEncoding::
+/// kShuffled) or ≤ 2 (raw images; versions 0-2, for tests).
 void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map,
-                  bool encoded = true);
-/// Reads what WriteViewMap wrote into `map` (replacing its views only if all reads succeed);
-/// `encoded` false: the raw images of file versions 0-2.
+                  uint8_t version = 4);
+/// Reads what WriteViewMap wrote in `version` into `map` (replacing its views only if all reads
+/// succeed).
 void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map,
-                 bool encoded = true);
+                 uint8_t version = 4);
+
+/// "N reference views, X MiB", and for a compact store how many are decoded and how often
+/// views were encoded and decoded: what asString says of a view-based map.
+std::string StoreSummary(const views::ReferenceViewStore& store);
 
 /// One frustum per reference view at its pose; `badness[j]` in [0, 1] colours view j from green
 /// to red (empty: all grey).

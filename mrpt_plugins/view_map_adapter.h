@@ -95,9 +95,10 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     c.poses = pose_check_.options();
     return c;
   }
-  /// Map file, version 3: every option by key (option_table.h), then the views with their images
-  /// encoded (views::EncodePlane). Version 2 stored the images raw.
-  static constexpr uint8_t kFileVersion = 3;
+  /// Map file, version 4: every option by key (option_table.h), then the views with their images
+  /// encoded (views::EncodedView: rounded, predicted, zstd). Version 3 encoded them without the
+  /// prediction, version 2 stored them raw (docs/map_storage.md).
+  static constexpr uint8_t kFileVersion = 4;
   void WriteMapFile(mrpt::serialization::CArchive& out) const {
     Config::Table().Write(out, CurrentConfig());
     WriteViewMap(out, map_->view_map());
@@ -124,7 +125,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     }
     auto map = std::make_unique<Map>(c.map);
     try {
-      ReadViewMap(in, map->view_map(), version >= 3);
+      ReadViewMap(in, map->view_map(), version);
       map->CheckStoredPlanes();
     } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
       throw std::runtime_error(std::string(kMapFileError) + e.what());

@@ -43,6 +43,9 @@ const OptionTable<appearance::ViewBasedMapOptions>& ViewMapOptionTable() {
         .Add(
             "angle_power", [](O & o) -> auto& { return o.blend.angle_power; },
             "blend weight (cos phi / cos phi_best)^A per pixel (0 = thesis's average)", 1.0, 0.0)
+        .Add(
+            "decoded_views", [](O & o) -> auto& { return o.storage.decoded_views; },
+            "views held decoded in memory, the rest compact (0 = all decoded; map_storage.md)")
         .Check([](const O& o) {
           CheckPositive(o.new_view_distance, "new_view_distance");
           CheckPositive(o.new_view_angle, "new_view_angle_deg");
@@ -55,6 +58,7 @@ const OptionTable<appearance::ViewBasedMapOptions>& ViewMapOptionTable() {
           CheckNotNegative(o.blend.depth_tolerance, "depth_tolerance");
           CheckNotNegative(o.blend.resolution_power, "resolution_power");
           CheckNotNegative(o.blend.angle_power, "angle_power");
+          CheckInRange(o.storage.decoded_views, 0, 100000, "decoded_views");
         });
     return t;
   }();

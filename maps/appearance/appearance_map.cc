@@ -181,8 +181,8 @@ AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
 }
 
 void AppearanceMap::CheckStoredPlanes() const {
-  views::CheckPlane(map_.store(), "ab_sigma", 7, views::PlaneValues::kPositive);
-  views::CheckPlane(map_.store(), "tau", 3, views::PlaneValues::kFinite);
+  views::CheckPlanes(map_.store(), {{"ab_sigma", 7, views::PlaneValues::kPositive},
+                                    {"tau", 3, views::PlaneValues::kFinite}});
 }
 
 AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& depth,

@@ -7,9 +7,10 @@
 // view stores one α and three β and σ as half floats ("ab_sigma", 7 channels) and the three τ as
 // floats ("tau"): τ must stay exact to a few hundredths, since a shift dτ adds dτ²α/(2σ0β) to
 // the surprise (eq. 4.19) and σ0 goes down to σ_min = 0.01; half floats resolve τ ≈ 200 only to
-// 0.125. That is 7·2 + 3·4 = 26 B/pixel + 4 B depth = 2.3 MB per 320×240 view (200 views:
-// 461 MB, against 737 MB for 4×3 floats plus depth). appearance_map_test.cc measures the effect
-// on surprise against all-float storage.
+// 0.125. That is 7·2 + 3·4 = 26 B/pixel + 4 B depth = 2.3 MB per decoded 320×240 view;
+// appearance_map_test.cc measures the effect on surprise against all-float storage. All but the
+// views used last are held compact (ViewBasedMapOptions::storage, about 7.4 B/pixel): 200 views
+// take about 143 MB (docs/map_storage.md).
 // Pixels no reference view covers get the initial prior (α=1, β=1, τ=0, σ=5) for the update, and
 // no surprise (NaN): there is nothing to be surprised against.
 #pragma once

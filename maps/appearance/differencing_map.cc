@@ -29,7 +29,7 @@ DifferencingProducts DifferencingMap::Insert(const cv::Mat& rgb, const cv::Mat& 
 }
 
 void DifferencingMap::CheckStoredPlanes() const {
-  views::CheckPlane(map_.store(), "ycbcr", 3, views::PlaneValues::kFiniteOrNaN);
+  views::CheckPlanes(map_.store(), {{"ycbcr", 3, views::PlaneValues::kFiniteOrNaN}});
 }
 
 }  // namespace novelty::appearance

@@ -41,7 +41,7 @@ void Prediction::BlendRows(const cv::Range& rows) const {
 }
 
 ViewBasedMap::ViewBasedMap(const ViewBasedMapOptions& options)
-    : options_(options), warper_(options.warp, views::WarpOutputsFor(options.blend)) {}
+    : options_(options), store_(options.storage), warper_(options.warp, views::WarpOutputsFor(options.blend)) {}
 
 ViewBasedMap::~ViewBasedMap() = default;
 
@@ -81,14 +81,17 @@ Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
   // A camera exactly at a reference view (a static camera) needs no warp: the view's own
   // planes are the prediction, shared as stored, every pixel valid.
   for (int j : p.selected) {
+    if (!SameCamera(store_.camera(j), camera) || !SamePose(store_.pose(j), T_world_cam)) continue;
     const views::ReferenceView& v = store_.view(j);
-    if (!SameCamera(v.camera, camera) || !SamePose(v.T_world_cam, T_world_cam)) continue;
+    Trim({j});
     p.selected = {j};
     for (std::size_t k = 0; k < names.size(); ++k) p.value[k] = v.planes.at(names[k].first);
     p.valid = cv::Mat(camera.height, camera.width, CV_8UC1, cv::Scalar(255));
     return p;
   }
   std::vector<views::SourceView> sources;
+  for (int j : p.selected) store_.view(j);  // decoded (the cache may hold them already)
+  Trim(p.selected);
   for (int j : p.selected) {
     const views::ReferenceView& v = store_.view(j);
     views::MeshPlan& plan = plans_[std::size_t(j)];
@@ -124,9 +127,14 @@ Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
   return p;
 }
 
+void ViewBasedMap::Trim(const std::vector<int>& keep) {
+  for (int j : store_.Trim(keep)) plans_[std::size_t(j)] = {};
+}
+
 void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
-                           std::vector<Eigen::Isometry3d> anchors) {
-  if (views.size() != anchors.size()) {
+                           std::vector<Eigen::Isometry3d> anchors,
+                           std::vector<views::EncodedView> encoded) {
+  if (views.size() != anchors.size() || (!encoded.empty() && encoded.size() != views.size())) {
     throw std::invalid_argument("ViewBasedMap::Restore: " + std::to_string(views.size()) +
                                 " views but " + std::to_string(anchors.size()) + " anchors");
   }
@@ -134,12 +142,12 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
     if (!core::IsRigid(anchors[j]))
       throw std::invalid_argument("view " + std::to_string(j) + ": anchor is not a rigid transform");
   }
-  views::ReferenceViewStore store;
-  std::vector<views::MeshPlan> plans;  // made now: a loaded map's views are meant to be warped
-  for (views::ReferenceView& v : views) {
-    const int added = store.Add(std::move(v));  // checks every view
-    plans.push_back(PlanMesh(store.view(added).depth));
+  views::ReferenceViewStore store(options_.storage);
+  for (std::size_t j = 0; j < views.size(); ++j) {
+    store.Add(std::move(views[j]), encoded.empty() ? views::EncodedView{} : std::move(encoded[j]));
+    store.Trim();  // a compact map holds its views compact while it loads
   }
+  std::vector<views::MeshPlan> plans(std::size_t(store.size()));  // made at each view's first warp
   store_ = std::move(store);
   anchors_ = std::move(anchors);
   plans_ = std::move(plans);
@@ -181,6 +189,9 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const core::PinholeCamera& camer
     store_.Replace(r.view, std::move(v));
     plans_[std::size_t(r.view)] = std::move(plan);  // the depth changed
   }
+  std::vector<int> keep = selected;
+  keep.push_back(r.view);
+  Trim(keep);
   return r;
 }
 

@@ -39,6 +39,10 @@ struct ViewBasedMapOptions {
   views::ViewSelectionOptions selection;
   views::WarpOptions warp;
   views::BlendOptions blend;  ///< the blend view synthesis uses (view_blender.h defaults)
+  /// How the views are held: compact (plane_codec.h) but for the 12 used last, which leaves
+  /// room for the 7 a prediction selects and the views around them as the camera moves on.
+  /// 200 appearance-map views at 320×240: about 140 MB instead of 460 (docs/map_storage.md).
+  views::ReferenceViewStoreOptions storage{12, {}};
 };
 
 /// What a view-based map predicts at one viewpoint: the selected views and, per requested plane,
@@ -106,17 +110,22 @@ class ViewBasedMap {
   const views::ReferenceViewStore& store() const { return store_; }
   /// The pose of each view when it was created (same order as the store).
   const std::vector<Eigen::Isometry3d>& anchors() const { return anchors_; }
-  /// Replaces the whole content (for loading a saved map). Throws std::invalid_argument if the
-  /// counts differ or a view is invalid; the map is then unchanged.
-  void Restore(std::vector<views::ReferenceView> views, std::vector<Eigen::Isometry3d> anchors);
+  /// Replaces the whole content (for loading a saved map). `encoded`: the views as the file held
+  /// them encoded (EncodeView), kept by a compact map; empty: encoded as needed. Throws
+  /// std::invalid_argument if the counts differ or a view is invalid; the map is then unchanged.
+  void Restore(std::vector<views::ReferenceView> views, std::vector<Eigen::Isometry3d> anchors,
+               std::vector<views::EncodedView> encoded = {});
 
  private:
   ViewBasedMapOptions options_;
+  // Keeps the views the store evicts out of the plans too.
+  void Trim(const std::vector<int>& keep);
+
   views::ReferenceViewStore store_;
   std::vector<Eigen::Isometry3d> anchors_;  // pose of each view when it was created
-  // Per view, its mesh plan for the warper (mesh_plan.h; a byte per pixel): made when a view is
-  // loaded, given with it by Update, or else made at its first warp (a static camera replaces
-  // its view every frame and never warps it).
+  // Per view, its mesh plan for the warper (mesh_plan.h; a byte per pixel): given with it by
+  // Update, or else made at its first warp (a static camera replaces its view every frame and
+  // never warps it); dropped with the decoded view when the store evicts it.
   std::vector<views::MeshPlan> plans_;
   views::DepthMeshWarper warper_;
   // The last deferred prediction's blend, reused (warp fields and result images written in

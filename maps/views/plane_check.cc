@@ -24,20 +24,22 @@ std::string FirstBadValue(const cv::Mat& plane, PlaneValues rule) {
 
 }  // namespace
 
-void CheckPlane(const ReferenceViewStore& store, const std::string& name, int channels,
-                PlaneValues values) {
+void CheckPlanes(const ReferenceViewStore& store, const std::vector<PlaneRule>& rules) {
   for (int j = 0; j < store.size(); ++j) {
-    const std::string what = "view " + std::to_string(j) + ": plane '" + name + "'";
-    const auto it = store.view(j).planes.find(name);
-    if (it == store.view(j).planes.end()) throw std::invalid_argument(what + " is missing");
-    const cv::Mat& p = it->second;
-    if (p.channels() != channels || (p.depth() != CV_32F && p.depth() != CV_16F)) {
-      throw std::invalid_argument(what + " must have " + std::to_string(channels) +
-                                  " float channels, has " + std::to_string(p.channels()) +
-                                  " of depth " + std::to_string(p.depth()));
+    const ReferenceView v = store.Decoded(j);  // one at a time: a compact map stays compact
+    for (const PlaneRule& rule : rules) {
+      const std::string what = "view " + std::to_string(j) + ": plane '" + rule.name + "'";
+      const auto it = v.planes.find(rule.name);
+      if (it == v.planes.end()) throw std::invalid_argument(what + " is missing");
+      const cv::Mat& p = it->second;
+      if (p.channels() != rule.channels || (p.depth() != CV_32F && p.depth() != CV_16F)) {
+        throw std::invalid_argument(what + " must have " + std::to_string(rule.channels) +
+                                    " float channels, has " + std::to_string(p.channels()) +
+                                    " of depth " + std::to_string(p.depth()));
+      }
+      if (const std::string bad = FirstBadValue(p, rule.values); !bad.empty())
+        throw std::invalid_argument(what + " holds an invalid value " + bad);
     }
-    if (const std::string bad = FirstBadValue(p, values); !bad.empty())
-      throw std::invalid_argument(what + " holds an invalid value " + bad);
   }
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "maps/views/reference_view_store.h"
 
@@ -15,9 +16,15 @@ enum class PlaneValues {
   kFiniteOrNaN,  ///< finite, or NaN for "unknown" (a colour where the depth was unknown)
 };
 
-/// Throws std::invalid_argument "view J: plane NAME …" unless every view of `store` has plane
-/// `name` with `channels` channels of float or half-float values obeying `values`.
-void CheckPlane(const ReferenceViewStore& store, const std::string& name, int channels,
-                PlaneValues values);
+struct PlaneRule {
+  std::string name;
+  int channels;
+  PlaneValues values;
+};
+
+/// Throws std::invalid_argument "view J: plane NAME …" unless every view of `store` has, for
+/// each rule, plane `name` with `channels` channels of float or half-float values obeying
+/// `values`. Each view is decoded once (a compact store's views one at a time).
+void CheckPlanes(const ReferenceViewStore& store, const std::vector<PlaneRule>& rules);
 
 }  // namespace novelty::views

@@ -49,6 +49,51 @@ TEST(CAppearanceMap, SurpriseAfterACompactSaveAndLoadIsWithinOnePercentOfWithout
   std::printf("[ COMPACT  ] surprise after reload: relative L1 error %.4f %%\n", 100 * error / total);
 }
 
+// A map that holds its views compact in memory (all but the last `decoded_views`, rounded and
+// predicted: plane_codec.h) gives the surprise of one that holds them all decoded within 1 %
+// (relative L1, the reliability issue's target) over the same pixels, and its compact views
+// take at most 8.47 bytes a pixel: with the default 12 decoded views (30 B/pixel each), 200
+// views at 320×240 then fit the 150 MB.
+TEST(CAppearanceMap, ACompactMapInMemoryGivesTheSurpriseOfADecodedOneWithinOnePercent) {
+  AppearanceMapConfig decoded_config, compact_config;
+  decoded_config.map.views.storage.decoded_views = 0;
+  compact_config.map.views.storage.decoded_views = 2;  // evictions at almost every frame
+  CAppearanceMap decoded(decoded_config), compact(compact_config);
+  double error = 0.0, total = 0.0;
+  // Twice through the clip: the second pass predicts from views evicted long before.
+  for (std::size_t n = 0; n < 2 * Frames().size(); ++n) {
+    const std::size_t k = n % Frames().size();
+    ASSERT_TRUE(decoded.insertObservation(Observation(Frames()[k])));
+    ASSERT_TRUE(compact.insertObservation(Observation(Frames()[k])));
+    const cv::Mat a = decoded.lastProducts().surprise, b = compact.lastProducts().surprise;
+    for (int i = 0; i < int(a.total()); ++i) {
+      const float x = a.at<float>(i), y = b.at<float>(i);
+      ASSERT_EQ(std::isnan(x), std::isnan(y)) << "frame " << k << ": coverage differs";
+      if (std::isnan(x)) continue;
+      error += std::abs(x - y);
+      total += std::abs(x);
+    }
+  }
+  ASSERT_GT(total, 0.0);
+  EXPECT_LT(error / total, 0.01);
+  const views::ReferenceViewStore& store = compact.map().store();
+  ASSERT_EQ(store.size(), decoded.map().store().size());
+  int decoded_views = 0;
+  std::size_t compact_bytes = 0;
+  for (int j = 0; j < store.size(); ++j) {
+    if (store.decoded(j)) ++decoded_views;
+    else compact_bytes += store.Encoded(j).BytesUsed();
+  }
+  EXPECT_EQ(decoded_views, 2);
+  const double pixels = double(store.camera(0).width) * store.camera(0).height;
+  const double per_pixel = compact_bytes / pixels / (store.size() - decoded_views);
+  EXPECT_LE(per_pixel, 8.47);
+  std::printf("[ COMPACT  ] in memory: %d views, %.2f B/pixel compact (%.1f decoded), "
+              "surprise relative L1 error %.2g %%\n",
+              store.size(), per_pixel, double(decoded.map().store().BytesUsed()) / pixels / store.size(),
+              100 * error / total);
+}
+
 // Reads map-file bodies of any version, as MRPT's archive does after the class name.
 struct FileReader : CAppearanceMap {
   using CAppearanceMap::CAppearanceMap;
@@ -73,7 +118,7 @@ TEST(CAppearanceMap, MapFilesOfEveryVersionLoadWithTheOptionsTheyWereMadeWith) {
     mrpt::io::CMemoryStream buffer;
     auto out = mrpt::serialization::archiveFrom(buffer);
     WriteOldOptions(out, version);
-    WriteViewMap(out, source.map().view_map(), false);  // raw images, as then
+    WriteViewMap(out, source.map().view_map(), 2);  // raw images, as then
     buffer.Seek(0);
     auto in = mrpt::serialization::archiveFrom(buffer);
     FileReader loaded;
@@ -92,29 +137,40 @@ TEST(CAppearanceMap, MapFilesOfEveryVersionLoadWithTheOptionsTheyWereMadeWith) {
     // Options no older file held keep their defaults.
     EXPECT_EQ(o.views.warp.planar_block, appearance::ViewBasedMapOptions().warp.planar_block);
   }
-  // Version 3 (2 with raw images): every option by key, the depth source too.
+  // Versions 2-4: every option by key, the depth source too; then the views raw (2), encoded
+  // without (3) or with prediction (4, what a compact map holds).
   AppearanceMapConfig c;
   c.map.views.warp.planar_block = 4;
   c.map.surprise.update.xi = 0.03;
   c.depth.kind = DepthSourceOptions::Kind::kStereo;
-  const FileReader configured(c);
+  for (const int version : {2, 3, 4}) {
+    mrpt::io::CMemoryStream buffer;
+    auto out = mrpt::serialization::archiveFrom(buffer);
+    AppearanceMapConfig::Table().Write(out, c);
+    WriteViewMap(out, source.map().view_map(), uint8_t(version));
+    buffer.Seek(0);
+    auto in = mrpt::serialization::archiveFrom(buffer);
+    FileReader loaded;
+    loaded.serializeFrom(in, uint8_t(version));
+    EXPECT_EQ(loaded.map().options().views.warp.planar_block, 4) << version;
+    EXPECT_EQ(loaded.map().options().surprise.update.xi, 0.03);
+    EXPECT_EQ(loaded.depthSource().kind, DepthSourceOptions::Kind::kStereo);
+    ASSERT_EQ(loaded.map().store().size(), source.map().store().size());
+    // Raw images come back exactly; encoded ones rounded (plane_codec.h: τ within 2⁻¹⁵).
+    const cv::Mat a = source.map().store().Decoded(0).planes.at("tau"),
+                  b = loaded.map().store().Decoded(0).planes.at("tau");
+    EXPECT_LE(cv::norm(a, b, cv::NORM_INF), version == 2 ? 0.0 : 255.0 / 32768) << version;
+  }
   mrpt::io::CMemoryStream buffer;
   auto out = mrpt::serialization::archiveFrom(buffer);
-  configured.serializeTo(out);
-  buffer.Seek(0);
-  auto in = mrpt::serialization::archiveFrom(buffer);
-  FileReader loaded;
-  loaded.serializeFrom(in, 3);
-  EXPECT_EQ(loaded.map().options().views.warp.planar_block, 4);
-  EXPECT_EQ(loaded.map().options().surprise.update.xi, 0.03);
-  EXPECT_EQ(loaded.depthSource().kind, DepthSourceOptions::Kind::kStereo);
+  FileReader(c).serializeTo(out);
   buffer.Seek(0);
   auto again = mrpt::serialization::archiveFrom(buffer);
   try {  // a newer file than this build reads
-    loaded.serializeFrom(again, 4);
-    ADD_FAILURE() << "version 4 was read";
+    FileReader().serializeFrom(again, 5);
+    ADD_FAILURE() << "version 5 was read";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("format version 4, newer than this program's (3)"),
+    EXPECT_NE(std::string(e.what()).find("format version 5, newer than this program's (4)"),
               std::string::npos)
         << e.what();
   }

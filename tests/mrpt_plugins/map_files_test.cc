@@ -51,15 +51,15 @@ const SavedMap& Saved() {
     CAppearanceMap map;
     for (int k = 0; k < 3; ++k) map.insertObservation(Observation(Frames()[k]));
     SavedMap s;
-    const std::vector<uint8_t> v3 = Bytes([&](auto& a) { a << map; });
+    const std::vector<uint8_t> current = Bytes([&](auto& a) { a << map; });
     const std::size_t encoded =
         Bytes([&](auto& a) { WriteViewMap(a, map.map().view_map()); }).size();
     const std::vector<uint8_t> raw =
-        Bytes([&](auto& a) { WriteViewMap(a, map.map().view_map(), false); });
-    s.views_at = v3.size() - 1 - encoded;
-    s.file.assign(v3.begin(), v3.begin() + std::ptrdiff_t(s.views_at));
+        Bytes([&](auto& a) { WriteViewMap(a, map.map().view_map(), 2); });
+    s.views_at = current.size() - 1 - encoded;
+    s.file.assign(current.begin(), current.begin() + std::ptrdiff_t(s.views_at));
     s.file.insert(s.file.end(), raw.begin(), raw.end());
-    s.file.push_back(v3.back());  // MRPT's end-of-object marker
+    s.file.push_back(current.back());  // MRPT's end-of-object marker
     // MRPT's header: the class name, then the version byte.
     const std::string name = "CAppearanceMap";
     const auto at = std::search(s.file.begin(), s.file.end(), name.begin(), name.end());

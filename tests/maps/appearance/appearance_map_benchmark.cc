@@ -127,6 +127,28 @@ void BM_AppearanceMapSevenViews(benchmark::State& state) {
 }
 BENCHMARK(BM_AppearanceMapSevenViews)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// A compact map (views::ReferenceViewStore, decoded_views > 0) encodes a view when it leaves the
+// decoded cache and decodes it when a prediction selects it again: one 320×240 appearance-map
+// view (depth, α β σ as halves, τ as floats), 2 threads.
+void BM_EncodeView(benchmark::State& state) {
+  static const SevenViewMap seven = MakeSevenViewMap();
+  std::size_t bytes = 0;
+  for (auto _ : state) bytes = views::EncodeView(seven.views[0], {}).BytesUsed();
+  state.counters["bytes/pixel"] = double(bytes) / kCam.width / kCam.height;
+}
+BENCHMARK(BM_EncodeView)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_DecodeView(benchmark::State& state) {
+  static const SevenViewMap seven = MakeSevenViewMap();
+  const views::EncodedView e = views::EncodeView(seven.views[0], {});
+  views::ReferenceView v = seven.views[0];
+  for (auto _ : state) {
+    views::DecodeInto(e, v);
+    benchmark::DoNotOptimize(v.depth.data);
+  }
+}
+BENCHMARK(BM_DecodeView)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void BM_DifferencingMapMovingCamera(benchmark::State& state) {
   static const std::vector<Frame> frames =
       Simulate("arc 0 0 1.6 -100 -80 0.1\nstop 0.5\narc 0 0 1.6 -80 -100 0.1\n");

@@ -60,5 +60,41 @@ TEST(ReferenceViewStore, AFrameWithAPoseBecomesAView) {
   EXPECT_EQ(v.depth.data, f.depth.data);
 }
 
+// A compact store keeps the views used last decoded and the others encoded; a view comes back
+// decoded with its values rounded as plane_codec.h says, and the views a caller still uses are
+// never evicted.
+TEST(ReferenceViewStore, ACompactStoreHoldsTheViewsUsedLastDecoded) {
+  ReferenceViewStoreOptions o;
+  o.decoded_views = 2;
+  ReferenceViewStore compact(o), plain;
+  for (int j = 0; j < 5; ++j) {
+    ReferenceView v = View();
+    v.planes["tau"] = cv::Mat(24, 32, CV_32FC3);
+    cv::randu(v.planes["tau"], 0, 255);
+    v.T_world_cam.translation().x() = 0.1 * j;
+    plain.Add(v);
+    compact.Add(v);
+    EXPECT_EQ(compact.Trim({0}), j >= 2 && j != 0 ? std::vector<int>{j - 1} : std::vector<int>{})
+        << j;
+  }
+  // View 0 was kept at every Trim; 4 is the last added; 1, 2, 3 are encoded.
+  for (int j = 0; j < 5; ++j) EXPECT_EQ(compact.decoded(j), j == 0 || j == 4) << j;
+  EXPECT_LT(compact.BytesUsed(), plain.BytesUsed());
+  EXPECT_NEAR(compact.pose(2).translation().x(), 0.2, 1e-15);  // geometry stays decoded
+  const ReferenceView copy = compact.Decoded(2);  // decoded, but not into the cache
+  EXPECT_FALSE(compact.decoded(2));
+  const cv::Mat& tau = compact.view(2).planes.at("tau");  // now in the cache
+  EXPECT_TRUE(compact.decoded(2));
+  EXPECT_EQ(cv::norm(copy.planes.at("tau"), tau, cv::NORM_INF), 0.0);
+  EXPECT_LE(cv::norm(tau, plain.view(2).planes.at("tau"), cv::NORM_INF), 255.0 / 32768);
+  EXPECT_EQ(cv::norm(compact.view(2).planes.at("rgb"), plain.view(2).planes.at("rgb"),
+                     cv::NORM_INF), 0.0);  // integers exactly
+  // Encoded twice, the same bytes: an evicted view that did not change is not encoded again.
+  EXPECT_EQ(compact.Encoded(2).planes.at("tau").bytes, compact.Encoded(2).planes.at("tau").bytes);
+  EXPECT_EQ(compact.Trim({2}).size(), 1u);  // three decoded (0, 2, 4): the oldest but 2 goes
+  EXPECT_TRUE(compact.decoded(2));
+  EXPECT_EQ(plain.Trim(), std::vector<int>{});  // not compact: nothing is ever evicted
+}
+
 }  // namespace
 }  // namespace novelty::views
