@@ -16,6 +16,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/depth_check.h"
 #include "maps/views/plane_codec.h"
 #include "mrpt_plugins/option_table.h"
 #include "sensors/rawlog/brief_message.h"
@@ -119,11 +120,9 @@ core::PinholeCamera ReadCamera(mrpt::serialization::CArchive& in, const std::str
   return c;
 }
 
-// Depth as maps take it: metres, 0 or NaN where unknown; never negative or infinite.
+// Depth as maps take it (core/depth_check.h).
 void CheckDepth(const cv::Mat& depth, const std::string& what) {
-  cv::Mat bad = depth < 0;
-  bad |= (depth == std::numeric_limits<float>::infinity());
-  if (const int n = cv::countNonZero(bad); n > 0)
+  if (const int n = core::CountBrokenDepths(depth); n > 0)
     throw std::runtime_error(std::string(kMapFileError) + what + ": " + std::to_string(n) +
                              " negative or infinite depths");
 }

@@ -29,25 +29,6 @@ Eigen::Isometry3d CameraOnRobotOf(const mrpt::obs::CObservation& obs) {
   return sensors::ToEigen(mrpt::poses::CPose3D(pair.cameraPose));
 }
 
-// Throws std::runtime_error naming the folder if an image of `obs` is stored in a file whose
-// folder does not exist: then every frame would be skipped, one by one, for the same reason.
-void CheckImageFolder(const mrpt::obs::CObservation& obs, const std::string& where) {
-  std::vector<const mrpt::img::CImage*> images;
-  if (const auto* scan = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obs)) {
-    images = {&scan->intensityImage};
-  } else if (const auto* pair = dynamic_cast<const mrpt::obs::CObservationStereoImages*>(&obs)) {
-    images = {&pair->imageLeft, &pair->imageRight};
-  }
-  for (const mrpt::img::CImage* image : images) {
-    if (!image->isExternallyStored()) continue;
-    const std::filesystem::path file = image->getExternalStorageFileAbsolutePath();
-    if (!std::filesystem::is_directory(file.parent_path())) {
-      throw std::runtime_error(where + ": image folder " + file.parent_path().string() +
-                               " is missing");
-    }
-  }
-}
-
 }  // namespace
 
 PoseSource ParsePoseSource(const std::string& text) {
@@ -121,7 +102,7 @@ bool RawlogMapPlayer::Next(mrpt::maps::CMultiMetricMap& maps, int& frame) {
     frame = ++m.frames;
     const std::string where =
         m.input.path() + ": frame " + std::to_string(frame) + " (" + obs->sensorLabel + ")";
-    CheckImageFolder(*obs, where);
+    sensors::CheckImageFolder(*obs, where);
     const std::optional<mrpt::poses::CPose3D> robot = m.RobotPose(*obs, frame);
     if (!robot) {
       skip_reasons_.push_back(where + ": no pose");

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/depth_check.h"
 #include "core/fill_where.h"
 #include "core/interleave.h"
 #include "core/rigid_pose.h"
@@ -33,14 +34,7 @@ void CheckFrame(const cv::Mat& rgb, const cv::Mat& depth, const core::PinholeCam
   if (!core::IsRigid(T_world_cam)) {
     throw std::invalid_argument(std::string(what) + ": pose is not a rigid transform");
   }
-  // Unknown depth is 0 or NaN; a negative or infinite one is a broken sensor or decoder, and
-  // would warp pixels behind the camera or to infinity.
-  int bad = 0;
-  for (int r = 0; r < depth.rows; ++r) {
-    const float* d = depth.ptr<float>(r);
-    for (int c = 0; c < depth.cols; ++c) bad += d[c] < 0.0f || std::isinf(d[c]);
-  }
-  if (bad > 0) {
+  if (const int bad = core::CountBrokenDepths(depth); bad > 0) {
     throw std::invalid_argument(std::string(what) + ": " + std::to_string(bad) +
                                 " depths are negative or infinite");
   }

@@ -1,11 +1,13 @@
 #include "sensors/rawlog/external_files.h"
 
 #include <mrpt/obs/CObservation3DRangeScan.h>
+#include <mrpt/obs/CObservationStereoImages.h>
 #include <zlib.h>
 
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 namespace novelty::sensors {
 
@@ -22,6 +24,23 @@ void CheckGzipComplete(const std::string& path) {
   if (n < 0 || (error != Z_OK && error != Z_STREAM_END)) {
     throw std::runtime_error(path + ": truncated or corrupt gzip" +
                              (error == Z_BUF_ERROR ? std::string(" (ends early)") : ""));
+  }
+}
+
+void CheckImageFolder(const mrpt::obs::CObservation& obs, const std::string& where) {
+  std::vector<const mrpt::img::CImage*> images;
+  if (const auto* scan = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obs)) {
+    images = {&scan->intensityImage};
+  } else if (const auto* pair = dynamic_cast<const mrpt::obs::CObservationStereoImages*>(&obs)) {
+    images = {&pair->imageLeft, &pair->imageRight};
+  }
+  for (const mrpt::img::CImage* image : images) {
+    if (!image->isExternallyStored()) continue;
+    const std::filesystem::path file = image->getExternalStorageFileAbsolutePath();
+    if (!std::filesystem::is_directory(file.parent_path())) {
+      throw std::runtime_error(where + ": image folder " + file.parent_path().string() +
+                               " is missing");
+    }
   }
 }
 

@@ -9,6 +9,11 @@
 
 namespace novelty::sensors {
 
+/// Throws std::runtime_error "`where`: image folder F is missing" if an image of `obs` (a
+/// CObservation3DRangeScan or CObservationStereoImages) is stored in a file whose folder does not
+/// exist: a reader then stops, since every frame would be skipped one by one for that reason.
+void CheckImageFolder(const mrpt::obs::CObservation& obs, const std::string& where);
+
 /// Throws std::runtime_error naming the file if a depth matrix of `obs` (a
 /// CObservation3DRangeScan) is stored in a gzip file that is missing, truncated or corrupt.
 void CheckExternalDepth(const mrpt::obs::CObservation& obs);

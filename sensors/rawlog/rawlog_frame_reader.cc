@@ -41,6 +41,7 @@ bool RawlogFrameReader::Next(core::Frame& frame) {
     if (!scan) continue;
     const int index = ++frames_;
     const std::string where = path_ + ": RGB-D frame " + std::to_string(index);
+    CheckImageFolder(*scan, where);  // fatal: every frame would be skipped for it
     try {
       CheckExternalDepth(*scan);
       scan->load();

@@ -55,6 +55,20 @@ TEST(RawlogFrameReader, MissingImagesAreSkippedAndCountedNotFatal) {
       << reader.skip_reasons()[0];
 }
 
+TEST(RawlogFrameReader, AMissingImageFolderStopsTheReadNamingIt) {
+  const fs::path dir = SimulateTinyRun("missing_folder");
+  fs::remove_all(dir / "tiny_Images");
+  RawlogFrameReader reader((dir / "tiny.rawlog").string());
+  core::Frame f;
+  try {
+    reader.Next(f);
+    ADD_FAILURE() << "read a frame without its images";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("tiny_Images is missing"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(reader.skipped(), 0);
+}
+
 TEST(RawlogFrameReader, BadFilesAreNamed) {
   EXPECT_THROW(RawlogFrameReader("/nonexistent/x.rawlog"), std::runtime_error);
 }
