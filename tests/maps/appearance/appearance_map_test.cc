@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "eval/attentional_selectivity.h"
@@ -370,6 +371,43 @@ TEST(AppearanceMap, BadFramesAreRejectedAndLeaveTheMapUnchanged) {
   unknown.at<float>(8, 9) = 0.0f;
   EXPECT_EQ(map.store().size(), 1);
   EXPECT_NO_THROW(map.Insert(f.rgb, unknown, cam, f.T_world_cam));
+}
+
+// A camera whose image size changes in the middle of a run (a driver reconfigured, a rawlog
+// spliced from two) is neither an error nor garbage: reference views keep their own camera, and
+// a frame of another size is predicted by warping them into it, as for any viewpoint. The half-
+// size frames cover what the full-size frame before them covered (the same scene from nearly
+// the same pose), and their surprise is finite and not negative.
+TEST(AppearanceMap, AnImageSizeThatChangesMidRunIsPredictedFromViewsOfTheOtherSize) {
+  const core::PinholeCamera full = core::PinholeCamera::FromFov(160, 120, 1.0),
+                            half = core::PinholeCamera::FromFov(80, 60, 1.0);
+  AppearanceMap map;
+  double full_coverage = 0.0;
+  for (int k = 0; k < 10; ++k) {
+    const Frame& f = Clip()[std::size_t(k)];
+    full_coverage = cv::countNonZero(map.Insert(f.rgb, f.depth, full, f.T_world_cam).valid) /
+                    double(full.width * full.height);
+  }
+  for (int k = 10; k < 14; ++k) {
+    const Frame& f = Clip()[std::size_t(k)];
+    cv::Mat rgb, depth;
+    cv::resize(f.rgb, rgb, cv::Size(half.width, half.height), 0, 0, cv::INTER_AREA);
+    cv::resize(f.depth, depth, cv::Size(half.width, half.height), 0, 0, cv::INTER_NEAREST);
+    const AppearanceProducts p = map.Insert(rgb, depth, half, f.T_world_cam);
+    ASSERT_EQ(p.surprise.size(), cv::Size(half.width, half.height));
+    const double coverage = cv::countNonZero(p.valid) / double(half.width * half.height);
+    EXPECT_GE(coverage, 0.9 * full_coverage) << "frame " << k;
+    for (int i = 0; i < int(p.surprise.total()); ++i) {
+      const float s = p.surprise.at<float>(i);
+      if (p.valid.at<uint8_t>(i)) {
+        ASSERT_TRUE(std::isfinite(s) && s >= 0.0f) << k << " " << i;
+      }
+    }
+  }
+  const Frame& back = Clip()[14];  // and back to the full size, from views of both sizes
+  const AppearanceProducts p = map.Insert(back.rgb, back.depth, full, back.T_world_cam);
+  EXPECT_GE(cv::countNonZero(p.valid) / double(full.width * full.height), 0.9 * full_coverage);
+  std::printf("[ SIZES    ] coverage %.3f at 160x120 before the change\n", full_coverage);
 }
 
 }  // namespace
