@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "apps/command_line.h"
 #include "core/frame_stem.h"
 #include "core/same_file.h"
 #include "eval/depth_accuracy.h"
@@ -30,8 +31,8 @@ using namespace novelty;
 
 int main(int argc, char** argv) {
   try {
-    TCLAP::CmdLine cmd("Depth maps from stereo or trinocular rawlog images (plane sweep + BP).",
-                       ' ', "0.1");
+    novelty::apps::CommandLine cmd(
+        "Depth maps from stereo or trinocular rawlog images (plane sweep + BP).", "0.1");
     TCLAP::UnlabeledValueArg<std::string> in("input", "Input rawlog", true, "", "IN.rawlog", cmd);
     TCLAP::ValueArg<std::string> out("o", "out", "Output rawlog", true, "", "OUT.rawlog", cmd);
     const sensors::StereoDepthOptions defaults;
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
                                        false, "", "DIR", cmd);
     TCLAP::ValueArg<int> max_frames("", "frames", "Convert only the first N rig frames", false, 0,
                                     "N", cmd);
-    cmd.parse(argc, argv);
+    cmd.Parse(argc, argv);
 
     sensors::StereoDepthOptions options;
     options.sweep.near = near.getValue();

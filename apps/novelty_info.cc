@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/command_line.h"
 #include "maps/stats/normal_gamma_kl.h"
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/differencing_map_options.h"
@@ -99,10 +100,10 @@ int main(int argc, char** argv) {
       "Print a CMultiMetricMap .ini with one map of the class and its options' defaults", false, "",
       &allowed);
   try {
-    TCLAP::CmdLine cmd("Prints what this NoveltyMaps build contains and the libraries it uses.",
-                       ' ', NOVELTY_VERSION);
+    novelty::apps::CommandLine cmd(
+        "Prints what this NoveltyMaps build contains and the libraries it uses.", NOVELTY_VERSION);
     cmd.add(dump_options);
-    cmd.parse(argc, argv);
+    cmd.Parse(argc, argv);
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-info: %s (argument %s)\n", e.error().c_str(), e.argId().c_str());
     return 2;

@@ -33,6 +33,8 @@
 #include <optional>
 #include <sstream>
 
+#include "apps/command_line.h"
+#include "core/range_check.h"
 #include "core/same_file.h"
 #include "sensors/localization/direct_odometry.h"
 #include "sensors/localization/visual_odometry.h"
@@ -134,7 +136,7 @@ std::map<double, Eigen::Isometry3d> VisualPoses(const std::string& rawlog,
 
 int main(int argc, char** argv) {
   try {
-    TCLAP::CmdLine cmd("Adds camera poses (LED tracker or vision) to a rawlog.", ' ', "0.1");
+    novelty::apps::CommandLine cmd("Adds camera poses (LED tracker or vision) to a rawlog.", "0.1");
     TCLAP::UnlabeledValueArg<std::string> in("input", "Input rawlog", true, "", "IN.rawlog", cmd);
     TCLAP::ValueArg<std::string> out("o", "out", "Output rawlog", true, "", "OUT.rawlog", cmd);
     std::vector<std::string> sources = {"tracker", "visual"};
@@ -152,7 +154,8 @@ int main(int argc, char** argv) {
         sensors::PoseInterpolationOptions().smoothing_half_window, "S", cmd);
     TCLAP::ValueArg<std::string> truth("", "groundtruth", "Report errors against this folder",
                                        false, "", "DIR", cmd);
-    cmd.parse(argc, argv);
+    cmd.Parse(argc, argv);
+    core::CheckInRange(smoothing.getValue(), 0, 60, "--smoothing");
     if (core::SameFile(in.getValue(), out.getValue()))
       throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
                                   in.getValue() + ": it would be overwritten");

@@ -42,6 +42,7 @@
 #include <set>
 #include <sstream>
 
+#include "apps/command_line.h"
 #include "core/frame_stem.h"
 #include "core/same_file.h"
 #include "core/write_rgb_image.h"
@@ -247,10 +248,10 @@ struct RunArgs {
 
 // Parses and checks the command line; throws TCLAP::ArgException or std::invalid_argument.
 RunArgs ParseArgs(int argc, char** argv) {
-  TCLAP::CmdLine cmd(
+  novelty::apps::CommandLine cmd(
       "Bayesian surprise with the probabilistic appearance map over an RGB-D "
       "rawlog, against image differencing, through MRPT's CMultiMetricMap.",
-      ' ', "0.1");
+      "0.1");
   TCLAP::ValueArg<std::string> rawlog("", "rawlog", "RGB-D rawlog", true, "", "R.rawlog", cmd);
   TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground-truth folder (poses, masks)", true,
                                      "", "DIR", cmd);
@@ -287,7 +288,7 @@ RunArgs ParseArgs(int argc, char** argv) {
       "Also run maps with reference views N times sparser, side by side, e.g. 2,4 (fig. 4.13's "
       "R2 and R4); the report compares each finding's peak selectivity",
       false, "", "N,M", cmd);
-  cmd.parse(argc, argv);
+  cmd.Parse(argc, argv);
   RunArgs a;
   a.rawlog = rawlog.getValue();
   a.truth = truth.getValue();

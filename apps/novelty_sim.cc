@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "apps/command_line.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/scenario_runner.h"
 
@@ -13,10 +14,10 @@ int main(int argc, char** argv) {
   novelty::sim::RunOptions options;
   std::string scenario_path;
   try {
-    TCLAP::CmdLine cmd(
+    novelty::apps::CommandLine cmd(
         "Simulates a NoveltyMaps scenario and writes an MRPT rawlog with ground "
         "truth.",
-        ' ', "0.1");
+        "0.1");
     TCLAP::UnlabeledValueArg<std::string> scenario("scenario", "Scenario file (.scn)", true, "",
                                                    "SCENARIO", cmd);
     TCLAP::ValueArg<std::string> out("o", "out", "Output directory", true, "", "DIR", cmd);
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
     TCLAP::ValueArg<long long> seed("s", "seed", "Random seed (sensor and tracker noise)", false, 0,
                                     "S", cmd);
     TCLAP::SwitchArg quiet("q", "quiet", "No progress on stderr", cmd);
-    cmd.parse(argc, argv);
+    cmd.Parse(argc, argv);
     scenario_path = scenario.getValue();
     options.out_dir = out.getValue();
     if (frames.isSet()) options.frames = frames.getValue();

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <memory>
 
+#include "apps/command_line.h"
 #include "core/resident_memory.h"
 #include "eval/html_report.h"
 #include "eval/memory_plateau.h"
@@ -69,7 +70,8 @@ void WriteReport(const std::string& out, const std::vector<eval::SoakSample>& sa
 
 int main(int argc, char** argv) {
   try {
-    TCLAP::CmdLine cmd("Memory of a long run: a rawlog played into the maps in a loop.", ' ', "0.1");
+    novelty::apps::CommandLine cmd("Memory of a long run: a rawlog played into the maps in a loop.",
+                                   "0.1");
     TCLAP::ValueArg<std::string> rawlog("", "rawlog", "RGB-D rawlog", true, "", "R.rawlog", cmd);
     TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground-truth folder (poses)", true, "",
                                        "DIR", cmd);
@@ -78,7 +80,7 @@ int main(int argc, char** argv) {
     TCLAP::ValueArg<int> every("", "sample-every", "Frames between samples", false, 100, "K", cmd);
     TCLAP::ValueArg<std::string> config("", "config", "Multimap .ini (default: one map of each)",
                                         false, "", "maps.ini", cmd);
-    cmd.parse(argc, argv);
+    cmd.Parse(argc, argv);
     if (frames.getValue() < 1 || frames.getValue() > 10000000)
       throw std::invalid_argument("--frames must be in 1…10000000");
     if (every.getValue() < 1) throw std::invalid_argument("--sample-every must be >= 1");
@@ -94,9 +96,8 @@ int main(int argc, char** argv) {
     std::vector<double> map_mb;
     int played = 0, loops = 0;
     while (played < frames.getValue()) {
-      mrpt_plugins::RawlogMapPlayer player(rawlog.getValue(),
-                                           mrpt_plugins::PoseSource::kGroundTruth,
-                                           ground_truth.CameraPoses());
+      mrpt_plugins::RawlogMapPlayer player(
+          rawlog.getValue(), mrpt_plugins::PoseSource::kGroundTruth, ground_truth.CameraPoses());
       int index = 0, in_loop = 0;
       while (played < frames.getValue() && player.Next(maps, index)) {
         ++played;
@@ -105,7 +106,8 @@ int main(int argc, char** argv) {
           const auto& store = appearance->map().store();
           samples.push_back({played, core::ResidentMegabytes(), store.size()});
           map_mb.push_back(double(store.BytesUsed()) / (1 << 20));
-          std::fprintf(stderr, "\r[novelty-soak] frame %d (loop %d): %.1f MiB resident, %d views   ",
+          std::fprintf(stderr,
+                       "\r[novelty-soak] frame %d (loop %d): %.1f MiB resident, %d views   ",
                        played, loops + 1, samples.back().resident_mb, samples.back().views);
         }
       }
@@ -123,10 +125,11 @@ int main(int argc, char** argv) {
                   samples.back().views);
       return 1;
     }
-    std::printf("map stopped growing at frame %d (%d views); resident memory from there %.1f → "
-                "%.1f MiB (%+.2f %%, bound %.0f %%)\n  %s/soak.csv, %s/soak.html\n",
-                p.frame, samples.back().views, p.start_mb, p.end_mb, 100 * p.growth,
-                100 * kMaxGrowth, out.getValue().c_str(), out.getValue().c_str());
+    std::printf(
+        "map stopped growing at frame %d (%d views); resident memory from there %.1f → "
+        "%.1f MiB (%+.2f %%, bound %.0f %%)\n  %s/soak.csv, %s/soak.html\n",
+        p.frame, samples.back().views, p.start_mb, p.end_mb, 100 * p.growth, 100 * kMaxGrowth,
+        out.getValue().c_str(), out.getValue().c_str());
     return p.growth < kMaxGrowth ? 0 : 1;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-soak: %s (%s)\n", e.error().c_str(), e.argId().c_str());

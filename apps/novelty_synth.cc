@@ -26,7 +26,9 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
+#include "apps/command_line.h"
 #include "core/frame_stem.h"
+#include "core/range_check.h"
 #include "core/write_rgb_image.h"
 #include "eval/psnr.h"
 #include "maps/views/depth_mesh_warper.h"
@@ -53,12 +55,15 @@ std::vector<int> ParseList(const std::string& text) {
     }
   }
   if (out.empty()) throw std::invalid_argument("--sources: no frame given");
+  if (out.size() > 64)  // each is a whole frame in memory
+    throw std::invalid_argument("--sources: " + std::to_string(out.size()) + " frames, at most 64");
   return out;
 }
 
 int FolderMode(const std::string& dir, const core::PinholeCamera& intrinsics, double depth_scale,
                int target, const std::string& sources, const std::string& out,
                views::DepthMeshWarper& warper, const views::SynthesisOptions& options) {
+  const std::vector<int> source_frames = ParseList(sources);  // checked before any reading
   core::PinholeCamera cam = intrinsics;
   const std::string probe_path = dir + "/color/" + std::to_string(target) + ".png";
   const cv::Mat probe = cv::imread(probe_path);
@@ -68,7 +73,7 @@ int FolderMode(const std::string& dir, const core::PinholeCamera& intrinsics, do
   const sensors::RgbdFolderReader reader(dir, cam, depth_scale);
   const core::Frame truth = reader.Read(target);
   std::vector<views::ReferenceView> refs;
-  for (int s : ParseList(sources)) refs.push_back(views::ReferenceViewOf(reader.Read(s)));
+  for (int s : source_frames) refs.push_back(views::ReferenceViewOf(reader.Read(s)));
   std::vector<const views::ReferenceView*> ptrs;
   for (const auto& r : refs) ptrs.push_back(&r);
   const views::SynthesisResult r =
@@ -81,7 +86,6 @@ int FolderMode(const std::string& dir, const core::PinholeCamera& intrinsics, do
 int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int every,
                const std::string& out_dir, views::DepthMeshWarper& warper,
                const views::SynthesisOptions& options) {
-  if (every < 2) throw std::invalid_argument("--every must be >= 2");
   const auto poses = sim::GroundTruthReader(truth_dir).CameraPoses();
   sensors::RawlogFrameReader reader(rawlog);
   views::ReferenceViewStore store;
@@ -160,8 +164,8 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
 }  // namespace
 
 int main(int argc, char** argv) {
-  TCLAP::CmdLine cmd("Synthesises camera views from reference views with depth and poses.", ' ',
-                     "0.1");
+  novelty::apps::CommandLine cmd(
+      "Synthesises camera views from reference views with depth and poses.", "0.1");
   TCLAP::ValueArg<std::string> frames("", "frames", "RGB-D folder (color/, depth/, pose.txt)",
                                       false, "", "DIR", cmd);
   TCLAP::ValueArg<double> fx("", "fx", "Focal length x (pixels)", false, 0, "FX", cmd);
@@ -198,7 +202,13 @@ int main(int argc, char** argv) {
                                 "pixel's best view)^A (0 = off, the thesis's average)",
                                 false, defaults.blend.angle_power, "A", cmd);
   try {
-    cmd.parse(argc, argv);
+    cmd.Parse(argc, argv);
+    core::CheckInRange(jump.getValue(), 1e-6, 100, "--max-depth-jump");
+    core::CheckInRange(tolerance.getValue(), 0, 100, "--depth-tolerance");
+    core::CheckInRange(power.getValue(), 0, 100, "--resolution-power");
+    core::CheckInRange(angle.getValue(), 0, 100, "--angle-power");
+    core::CheckInRange(scale.getValue(), 1e-3, 1e9, "--depth-scale");
+    core::CheckInRange(every.getValue(), 2, 1e6, "--every");
     views::SynthesisOptions options;
     views::WarpOptions& wo = options.warp;
     wo.max_relative_depth_jump = jump.getValue();

@@ -122,14 +122,6 @@ std::string ReadShortString(mrpt::serialization::CArchive& in, std::size_t max_l
   return s;
 }
 
-void CheckInRange(double value, double lo, double hi, const char* key) {
-  if (!(value >= lo && value <= hi)) {
-    std::ostringstream o;
-    o << key << " must be in [" << lo << ", " << hi << "], got " << value;
-    throw std::invalid_argument(o.str());
-  }
-}
-
 std::string OptionText(const OptionEntry& entry, double field_value) {
   const double value = field_value / entry.scale;
   switch (entry.kind) {

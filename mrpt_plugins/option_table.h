@@ -26,6 +26,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/range_check.h"
+
 namespace novelty::mrpt_plugins {
 
 /// How errors in a map file's content begin (LoadInto in map_files.h puts the path instead).
@@ -319,7 +321,7 @@ class TabledOptions : public mrpt::config::CLoadableOptions {
 void CheckPositive(double value, const char* key);
 void CheckNotNegative(double value, const char* key);
 /// Throws std::invalid_argument "KEY must be in [lo, hi], got VALUE" (NaN fails too).
-void CheckInRange(double value, double lo, double hi, const char* key);
+using core::CheckInRange;
 
 /// Throws std::runtime_error "PATH:LINE: …" for `.ini` text with lines MRPT's parser would skip
 /// in silence (an unclosed "[section", a line without '=', a key before any section), or
