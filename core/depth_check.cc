@@ -6,7 +6,8 @@
 namespace novelty::core {
 
 int CountBrokenDepths(const cv::Mat& depth) {
-  if (depth.type() != CV_32FC1) throw std::invalid_argument("CountBrokenDepths: depth must be CV_32FC1");
+  if (depth.type() != CV_32FC1)
+    throw std::invalid_argument("CountBrokenDepths: depth must be CV_32FC1");
   int broken = 0;
   for (int r = 0; r < depth.rows; ++r) {
     const float* d = depth.ptr<float>(r);

@@ -204,7 +204,8 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
                  uint8_t version) {
   int32_t n;
   in >> n;
-  if (n < 0 || n > 1000000) throw std::runtime_error(std::string(kMapFileError) + "corrupt view count");
+  if (n < 0 || n > 1000000)
+    throw std::runtime_error(std::string(kMapFileError) + "corrupt view count");
   std::vector<views::ReferenceView> views;
   std::vector<views::EncodedView> encoded;  // version 4: kept as they are by a compact map
   const bool compact = map.store().options().decoded_views > 0;
@@ -217,8 +218,10 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
     anchors.push_back(ReadPose(in));
     views::EncodedView e;
     e.encoding = version >= 4 ? views::PlaneEncoding::kPredicted : views::PlaneEncoding::kShuffled;
-    if (version >= 3) e.planes[""] = ReadEncoded(in, v.camera, what + " depth");
-    else v.depth = ReadRaw(in, v.camera, what + " depth");
+    if (version >= 3)
+      e.planes[""] = ReadEncoded(in, v.camera, what + " depth");
+    else
+      v.depth = ReadRaw(in, v.camera, what + " depth");
     int32_t planes;
     in >> planes;
     if (planes < 0 || planes > 16)
@@ -228,8 +231,10 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
       if (name.empty())
         throw std::runtime_error(std::string(kMapFileError) + what + ": a plane without a name");
       const std::string plane = what + " plane '" + name + "'";
-      if (version >= 3) e.planes[name] = ReadEncoded(in, v.camera, plane);
-      else v.planes[name] = ReadRaw(in, v.camera, plane);
+      if (version >= 3)
+        e.planes[name] = ReadEncoded(in, v.camera, plane);
+      else
+        v.planes[name] = ReadRaw(in, v.camera, plane);
     }
     if (version >= 3) {
       try {
@@ -257,8 +262,9 @@ std::string StoreSummary(const views::ReferenceViewStore& store) {
                 double(store.BytesUsed()) / (1 << 20));
   std::string s = text;
   if (store.options().decoded_views > 0) {
-    std::snprintf(text, sizeof text, " (%d decoded, the rest compact; %ld encodings, %ld decodings)",
-                  decoded, store.counts().encoded, store.counts().decoded);
+    std::snprintf(text, sizeof text,
+                  " (%d decoded, the rest compact; %ld encodings, %ld decodings)", decoded,
+                  store.counts().encoded, store.counts().decoded);
     s += text;
   }
   return s;

@@ -41,7 +41,9 @@ void Prediction::BlendRows(const cv::Range& rows) const {
 }
 
 ViewBasedMap::ViewBasedMap(const ViewBasedMapOptions& options)
-    : options_(options), store_(options.storage), warper_(options.warp, views::WarpOutputsFor(options.blend)) {}
+    : options_(options),
+      store_(options.storage),
+      warper_(options.warp, views::WarpOutputsFor(options.blend)) {}
 
 ViewBasedMap::~ViewBasedMap() = default;
 
@@ -136,11 +138,13 @@ void ViewBasedMap::Restore(std::vector<views::ReferenceView> views,
                            std::vector<views::EncodedView> encoded) {
   if (views.size() != anchors.size() || (!encoded.empty() && encoded.size() != views.size())) {
     throw std::invalid_argument("ViewBasedMap::Restore: " + std::to_string(views.size()) +
-                                " views but " + std::to_string(anchors.size()) + " anchors");
+                                " views, " + std::to_string(anchors.size()) + " anchors, " +
+                                std::to_string(encoded.size()) + " encodings");
   }
   for (std::size_t j = 0; j < anchors.size(); ++j) {
     if (!core::IsRigid(anchors[j]))
-      throw std::invalid_argument("view " + std::to_string(j) + ": anchor is not a rigid transform");
+      throw std::invalid_argument("view " + std::to_string(j) +
+                                  ": anchor is not a rigid transform");
   }
   views::ReferenceViewStore store(options_.storage);
   for (std::size_t j = 0; j < views.size(); ++j) {

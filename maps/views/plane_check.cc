@@ -14,7 +14,7 @@ std::string FirstBadValue(const cv::Mat& plane, PlaneValues rule) {
   const cv::Mat flat = f.reshape(1, 1);
   const float* v = flat.ptr<float>();
   for (int i = 0; i < flat.cols; ++i) {
-    const bool ok = rule == PlaneValues::kPositive  ? std::isfinite(v[i]) && v[i] > 0
+    const bool ok = rule == PlaneValues::kPositive ? std::isfinite(v[i]) && v[i] > 0
                     : rule == PlaneValues::kFinite ? std::isfinite(v[i])
                                                    : !std::isinf(v[i]);
     if (!ok) return std::to_string(v[i]) + " at value " + std::to_string(i);

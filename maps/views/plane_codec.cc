@@ -26,7 +26,8 @@ U RoundBits(U bits, U exponent, int drop) {
 int DroppedBits(int depth, const PlaneCodecOptions& o) {
   if (o.float_mantissa_bits < 1 || o.float_mantissa_bits > 23 || o.half_mantissa_bits < 1 ||
       o.half_mantissa_bits > 10) {
-    throw std::invalid_argument("PlaneCodecOptions: mantissa bits must be 1…23 (float), 1…10 (half)");
+    throw std::invalid_argument(
+        "PlaneCodecOptions: mantissa bits must be 1…23 (float), 1…10 (half)");
   }
   if (depth == CV_32F) return 23 - o.float_mantissa_bits;
   if (depth == CV_16F) return 10 - o.half_mantissa_bits;
@@ -45,7 +46,8 @@ void Quantize(const cv::Mat& m, int drop, std::vector<uint32_t>& q) {
     for (std::size_t i = 0; i < n; ++i) {
       uint32_t u = v[i];
       if (depth == CV_32F) {
-        u = (u & 0x7FFFFFFFu) > 0x7F800000u ? 0x7FC00000u : RoundBits<uint32_t>(u, 0x7F800000u, drop);
+        u = (u & 0x7FFFFFFFu) > 0x7F800000u ? 0x7FC00000u
+                                            : RoundBits<uint32_t>(u, 0x7F800000u, drop);
       }
       q[i] = u >> drop;
     }
@@ -76,7 +78,9 @@ inline uint32_t MedianPredictor(uint32_t a, uint32_t b, uint32_t c) {
 inline uint32_t ZigZag(uint32_t r, int width, uint32_t mask) {
   return ((r << 1) ^ (0u - (r >> (width - 1)))) & mask;
 }
-inline uint32_t UnZigZag(uint32_t z, uint32_t mask) { return ((z >> 1) ^ (0u - (z & 1u))) & mask; }
+inline uint32_t UnZigZag(uint32_t z, uint32_t mask) {
+  return ((z >> 1) ^ (0u - (z & 1u))) & mask;
+}
 
 // The residuals of q (rows × row_values, `channels` interleaved) against their predictions,
 // zigzag-coded; `width`-bit values.
@@ -89,9 +93,10 @@ void Residuals(const uint32_t* q, int rows, int row_values, int channels, int wi
     const uint32_t* up = r - row_values;
     uint32_t* out = codes + std::size_t(y) * row_values;
     for (int x = 0; x < row_values; ++x) {
-      const uint32_t prediction = x < channels ? (y > 0 ? up[x] : 0u)
-                                  : y == 0     ? r[x - channels]
-                                      : MedianPredictor<S>(r[x - channels], up[x], up[x - channels]);
+      const uint32_t prediction =
+          x < channels ? (y > 0 ? up[x] : 0u)
+          : y == 0     ? r[x - channels]
+                       : MedianPredictor<S>(r[x - channels], up[x], up[x - channels]);
       out[x] = ZigZag((r[x] - prediction) & mask, width, mask);
     }
   }
@@ -109,7 +114,8 @@ void ReconstructPixels(const uint32_t* codes, int rows, int cols, uint32_t mask,
     const uint32_t* up = r - row_values;
     const uint32_t* in = codes + std::size_t(y) * row_values;
     uint32_t left[CH];
-    for (int c = 0; c < CH; ++c) left[c] = r[c] = ((y > 0 ? up[c] : 0u) + UnZigZag(in[c], mask)) & mask;
+    for (int c = 0; c < CH; ++c)
+      left[c] = r[c] = ((y > 0 ? up[c] : 0u) + UnZigZag(in[c], mask)) & mask;
     for (int x = 1; x < cols; ++x) {
       const std::size_t i = std::size_t(x) * CH;
       for (int c = 0; c < CH; ++c) {
@@ -125,12 +131,18 @@ template <class S>
 void Reconstruct(const uint32_t* codes, int rows, int cols, int channels, int width, uint32_t* q) {
   const uint32_t mask = width == 32 ? ~0u : (1u << width) - 1;
   switch (channels) {
-    case 1: return ReconstructPixels<S, 1>(codes, rows, cols, mask, q);
-    case 2: return ReconstructPixels<S, 2>(codes, rows, cols, mask, q);
-    case 3: return ReconstructPixels<S, 3>(codes, rows, cols, mask, q);
-    case 4: return ReconstructPixels<S, 4>(codes, rows, cols, mask, q);
-    case 7: return ReconstructPixels<S, 7>(codes, rows, cols, mask, q);
-    default: break;
+    case 1:
+      return ReconstructPixels<S, 1>(codes, rows, cols, mask, q);
+    case 2:
+      return ReconstructPixels<S, 2>(codes, rows, cols, mask, q);
+    case 3:
+      return ReconstructPixels<S, 3>(codes, rows, cols, mask, q);
+    case 4:
+      return ReconstructPixels<S, 4>(codes, rows, cols, mask, q);
+    case 7:
+      return ReconstructPixels<S, 7>(codes, rows, cols, mask, q);
+    default:
+      break;
   }
   const int row_values = cols * channels;
   for (int y = 0; y < rows; ++y) {
@@ -138,9 +150,10 @@ void Reconstruct(const uint32_t* codes, int rows, int cols, int channels, int wi
     const uint32_t* up = r - row_values;
     const uint32_t* in = codes + std::size_t(y) * row_values;
     for (int x = 0; x < row_values; ++x) {
-      const uint32_t prediction = x < channels ? (y > 0 ? up[x] : 0u)
-                                  : y == 0     ? r[x - channels]
-                                      : MedianPredictor<S>(r[x - channels], up[x], up[x - channels]);
+      const uint32_t prediction =
+          x < channels ? (y > 0 ? up[x] : 0u)
+          : y == 0     ? r[x - channels]
+                       : MedianPredictor<S>(r[x - channels], up[x], up[x - channels]);
       r[x] = (prediction + UnZigZag(in[x], mask)) & mask;
     }
   }
@@ -150,9 +163,10 @@ void Reconstruct(const uint32_t* codes, int rows, int cols, int channels, int wi
 // every plane cost as much as the compression itself (page faults on megabytes of new memory),
 // and a view's planes are coded on several threads at once.
 struct Workspace {
-  std::unique_ptr<ZSTD_CCtx, std::size_t (*)(ZSTD_CCtx*)> compress{ZSTD_createCCtx(), ZSTD_freeCCtx};
+  std::unique_ptr<ZSTD_CCtx, std::size_t (*)(ZSTD_CCtx*)> compress{ZSTD_createCCtx(),
+                                                                   ZSTD_freeCCtx};
   std::unique_ptr<ZSTD_DCtx, std::size_t (*)(ZSTD_DCtx*)> decompress{ZSTD_createDCtx(),
-                                                                      ZSTD_freeDCtx};
+                                                                     ZSTD_freeDCtx};
   std::vector<uint32_t> values, codes;
   std::vector<uint8_t> bytes, compressed;
 };
@@ -170,8 +184,8 @@ std::vector<uint8_t> Compress(const std::vector<uint8_t>& raw, int level, std::s
   ZSTD_CCtx_setParameter(w.compress.get(), ZSTD_c_compressionLevel, level);
   ZSTD_CCtx_setParameter(w.compress.get(), ZSTD_c_checksumFlag, 1);
   w.compressed.resize(ZSTD_compressBound(raw.size()));
-  const std::size_t size = ZSTD_compress2(w.compress.get(), w.compressed.data(), w.compressed.size(), raw.data(),
-                                          raw.size());
+  const std::size_t size = ZSTD_compress2(w.compress.get(), w.compressed.data(),
+                                          w.compressed.size(), raw.data(), raw.size());
   if (ZSTD_isError(size)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(size));
   std::vector<uint8_t> out(header + size);
   if (header > 0) out[0] = drop;
@@ -180,7 +194,8 @@ std::vector<uint8_t> Compress(const std::vector<uint8_t>& raw, int level, std::s
 }
 
 // The `expected` bytes that `bytes` compress, in the thread's workspace.
-const std::vector<uint8_t>& Decompress(const uint8_t* bytes, std::size_t size, std::size_t expected) {
+const std::vector<uint8_t>& Decompress(const uint8_t* bytes, std::size_t size,
+                                       std::size_t expected) {
   if (bytes == nullptr || ZSTD_getFrameContentSize(bytes, size) != expected)
     throw std::runtime_error("compressed plane is corrupt or of another size");
   Workspace& w = ThreadWorkspace();
@@ -209,7 +224,7 @@ std::vector<uint8_t> EncodePredicted(const cv::Mat& m, int drop, int level) {
   codes.resize(n);
   // a + b − c of width-bit values fits 32 signed bits below 31 bits (floats keep ≤ 23 + 9).
   (width <= 30 ? Residuals<int32_t> : Residuals<int64_t>)(q.data(), m.rows, m.cols * m.channels(),
-                                                         m.channels(), width, codes.data());
+                                                          m.channels(), width, codes.data());
   std::vector<uint8_t> grouped(n * bytes);  // not w.bytes: Compress may use the workspace
   for (std::size_t b = 0; b < bytes; ++b) {
     uint8_t* out = grouped.data() + b * n;
@@ -238,7 +253,7 @@ cv::Mat DecodePredicted(const uint8_t* bytes, std::size_t size, int rows, int co
     for (std::size_t i = 0; i < n; ++i) codes[i] |= uint32_t(in[i]) << (8 * b);
   }
   (width <= 30 ? Reconstruct<int32_t> : Reconstruct<int64_t>)(codes.data(), rows, cols,
-                                                             m.channels(), width, q.data());
+                                                              m.channels(), width, q.data());
   if (element_bits == 32) {
     auto* out = reinterpret_cast<uint32_t*>(m.data);
     for (std::size_t i = 0; i < n; ++i) out[i] = q[i] << drop;
@@ -292,8 +307,9 @@ std::vector<uint8_t> EncodePlane(const cv::Mat& plane, const PlaneCodecOptions& 
     throw std::invalid_argument("EncodePlane: 64-bit elements are not supported");
   const int drop = DroppedBits(plane.depth(), options);
   const cv::Mat m = plane.isContinuous() ? plane : plane.clone();
-  return options.encoding == PlaneEncoding::kShuffled ? EncodeShuffled(m, drop, options.zstd_level)
-                                                      : EncodePredicted(m, drop, options.zstd_level);
+  return options.encoding == PlaneEncoding::kShuffled
+             ? EncodeShuffled(m, drop, options.zstd_level)
+             : EncodePredicted(m, drop, options.zstd_level);
 }
 
 cv::Mat DecodePlane(const uint8_t* bytes, std::size_t size, int rows, int cols, int type,

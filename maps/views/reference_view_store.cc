@@ -98,13 +98,16 @@ void DecodeInto(const EncodedView& encoded, ReferenceView& view) {
     }
   });
   for (std::size_t k = 0; k < planes.size(); ++k) {
-    const std::string what = planes[k].first->empty() ? "depth" : "plane '" + *planes[k].first + "'";
+    const std::string what =
+        planes[k].first->empty() ? "depth" : "plane '" + *planes[k].first + "'";
     if (!errors[k].empty()) throw std::runtime_error(what + ": " + errors[k]);
   }
   view.planes.clear();
   for (std::size_t k = 0; k < planes.size(); ++k) {
-    if (planes[k].first->empty()) view.depth = images[k];
-    else view.planes[*planes[k].first] = images[k];
+    if (planes[k].first->empty())
+      view.depth = images[k];
+    else
+      view.planes[*planes[k].first] = images[k];
   }
 }
 

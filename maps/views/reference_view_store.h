@@ -11,6 +11,7 @@
 // when view() asks for it; it is encoded when Trim() evicts it (a view used for a prediction is
 // replaced by the next frame's posterior before it has to be). Its planes are then the rounded
 // values a saved map holds. BytesUsed() reports the total, compact and decoded.
+// view() decodes into the cache although it is const: one thread at a time uses a store.
 #pragma once
 
 #include <Eigen/Geometry>

@@ -60,7 +60,8 @@ TEST(CAppearanceMap, SurpriseAfterACompactSaveAndLoadIsWithinOnePercentOfWithout
   }
   ASSERT_GT(d.total, 0.0);
   EXPECT_LT(d.Relative(), 0.01);
-  std::printf("[ COMPACT  ] surprise after reload: relative L1 error %.4f %%\n", 100 * d.Relative());
+  std::printf("[ COMPACT  ] surprise after reload: relative L1 error %.4f %%\n",
+              100 * d.Relative());
 }
 
 // A map that holds its views compact in memory (all but the last `decoded_views`, rounded and
@@ -89,17 +90,20 @@ TEST(CAppearanceMap, ACompactMapInMemoryGivesTheSurpriseOfADecodedOneWithinOnePe
   int decoded_views = 0;
   std::size_t compact_bytes = 0;
   for (int j = 0; j < store.size(); ++j) {
-    if (store.decoded(j)) ++decoded_views;
-    else compact_bytes += store.Encoded(j).BytesUsed();
+    if (store.decoded(j))
+      ++decoded_views;
+    else
+      compact_bytes += store.Encoded(j).BytesUsed();
   }
   EXPECT_EQ(decoded_views, 2);
   const double pixels = double(store.camera(0).width) * store.camera(0).height;
   const double per_pixel = compact_bytes / pixels / (store.size() - decoded_views);
   EXPECT_LE(per_pixel, 8.47);
-  std::printf("[ COMPACT  ] in memory: %d views, %.2f B/pixel compact (%.1f decoded), "
-              "surprise relative L1 error %.2g %%\n",
-              store.size(), per_pixel, double(decoded.map().store().BytesUsed()) / pixels / store.size(),
-              100 * d.Relative());
+  std::printf(
+      "[ COMPACT  ] in memory: %d views, %.2f B/pixel compact (%.1f decoded), "
+      "surprise relative L1 error %.2g %%\n",
+      store.size(), per_pixel, double(decoded.map().store().BytesUsed()) / pixels / store.size(),
+      100 * d.Relative());
 }
 
 // Reads map-file bodies of any version, as MRPT's archive does after the class name.

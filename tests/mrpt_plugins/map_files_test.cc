@@ -12,12 +12,12 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <random>
-#include <thread>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <limits>
+#include <random>
+#include <thread>
 
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/option_table.h"
@@ -209,8 +209,8 @@ TEST(SaveAtomically, AProcessKilledWhileSavingLeavesTheOldMapOrTheNew) {
       for (int i = 0;; ++i) (i % 2 ? a : b).SaveToFile(file.string());
     }
     // Saves take a few milliseconds: moments spread over several of them.
-    std::this_thread::sleep_for(std::chrono::microseconds(
-        std::uniform_int_distribution<int>(0, 300000)(random)));
+    std::this_thread::sleep_for(
+        std::chrono::microseconds(std::uniform_int_distribution<int>(0, 300000)(random)));
     ::kill(child, SIGKILL);
     int status = 0;
     waitpid(child, &status, 0);
@@ -224,7 +224,8 @@ TEST(SaveAtomically, AProcessKilledWhileSavingLeavesTheOldMapOrTheNew) {
     EXPECT_NO_THROW(loaded.LoadFromFile(file.string())) << "kill " << kill;
   }
   EXPECT_GT(saw_b, 0) << "no kill came after a save finished: the test proves nothing";
-  std::printf("[ SIGKILL  ] %d kills: %d left the first map, %d the second\n", kKills, saw_a, saw_b);
+  std::printf("[ SIGKILL  ] %d kills: %d left the first map, %d the second\n", kKills, saw_a,
+              saw_b);
   fs::remove_all(dir);
 }
 

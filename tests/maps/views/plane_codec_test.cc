@@ -58,47 +58,47 @@ TEST(PlaneCodec, HalfFloatsKeepTheirBitsWithinHalfAStep) {
 TEST(PlaneCodec, DecodeGivesTheRoundedValuesOfEveryTypeAndChannelCount) {
   std::mt19937 random(5);
   for (const PlaneEncoding encoding : {PlaneEncoding::kPredicted, PlaneEncoding::kShuffled})
-  for (int type : {CV_32FC1, CV_32FC3, CV_16FC(7), CV_8UC3, CV_8UC1, CV_16UC1}) {
-    SCOPED_TRACE(int(encoding));
-    SCOPED_TRACE(type);
-    cv::Mat m(24, 32, type);
-    if (CV_MAT_DEPTH(type) == CV_16F) {
-      cv::Mat f(24, 32, CV_MAKETYPE(CV_32F, CV_MAT_CN(type)));
-      cv::randu(f, 0.1, 100.0);
-      f.convertTo(m, CV_16F);
-    } else {
-      cv::randu(m, 0, 255);
-    }
-    if (type == CV_32FC1) {
-      m.at<float>(3, 4) = std::numeric_limits<float>::quiet_NaN();
-      // A NaN whose payload lies in the bits rounding drops: still NaN, not ±Inf.
-      const uint32_t low_payload = 0x7F800001u;
-      std::memcpy(&m.at<float>(5, 6), &low_payload, 4);
-    }
-    PlaneCodecOptions o;
-    o.encoding = encoding;
-    const std::vector<uint8_t> bytes = EncodePlane(m, o);
-    const cv::Mat d = DecodePlane(bytes.data(), bytes.size(), m.rows, m.cols, m.type(), encoding);
-    ASSERT_EQ(d.type(), m.type());
-    const std::size_t n = m.total() * m.channels();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (m.depth() == CV_32F) {
-        const float a = reinterpret_cast<const float*>(m.data)[i],
-                    b = reinterpret_cast<const float*>(d.data)[i];
-        if (std::isnan(a)) {
-          ASSERT_TRUE(std::isnan(b));
-        } else {
-          ASSERT_EQ(b, RoundMantissa(a, o.float_mantissa_bits)) << i;
-        }
-      } else if (m.depth() == CV_16F) {
-        ASSERT_EQ(reinterpret_cast<const uint16_t*>(d.data)[i],
-                  RoundHalfMantissa(reinterpret_cast<const uint16_t*>(m.data)[i],
-                                    o.half_mantissa_bits));
+    for (int type : {CV_32FC1, CV_32FC3, CV_16FC(7), CV_8UC3, CV_8UC1, CV_16UC1}) {
+      SCOPED_TRACE(int(encoding));
+      SCOPED_TRACE(type);
+      cv::Mat m(24, 32, type);
+      if (CV_MAT_DEPTH(type) == CV_16F) {
+        cv::Mat f(24, 32, CV_MAKETYPE(CV_32F, CV_MAT_CN(type)));
+        cv::randu(f, 0.1, 100.0);
+        f.convertTo(m, CV_16F);
       } else {
-        ASSERT_EQ(d.data[i], m.data[i]);  // integers are stored exactly
+        cv::randu(m, 0, 255);
+      }
+      if (type == CV_32FC1) {
+        m.at<float>(3, 4) = std::numeric_limits<float>::quiet_NaN();
+        // A NaN whose payload lies in the bits rounding drops: still NaN, not ±Inf.
+        const uint32_t low_payload = 0x7F800001u;
+        std::memcpy(&m.at<float>(5, 6), &low_payload, 4);
+      }
+      PlaneCodecOptions o;
+      o.encoding = encoding;
+      const std::vector<uint8_t> bytes = EncodePlane(m, o);
+      const cv::Mat d = DecodePlane(bytes.data(), bytes.size(), m.rows, m.cols, m.type(), encoding);
+      ASSERT_EQ(d.type(), m.type());
+      const std::size_t n = m.total() * m.channels();
+      for (std::size_t i = 0; i < n; ++i) {
+        if (m.depth() == CV_32F) {
+          const float a = reinterpret_cast<const float*>(m.data)[i],
+                      b = reinterpret_cast<const float*>(d.data)[i];
+          if (std::isnan(a)) {
+            ASSERT_TRUE(std::isnan(b));
+          } else {
+            ASSERT_EQ(b, RoundMantissa(a, o.float_mantissa_bits)) << i;
+          }
+        } else if (m.depth() == CV_16F) {
+          ASSERT_EQ(reinterpret_cast<const uint16_t*>(d.data)[i],
+                    RoundHalfMantissa(reinterpret_cast<const uint16_t*>(m.data)[i],
+                                      o.half_mantissa_bits));
+        } else {
+          ASSERT_EQ(d.data[i], m.data[i]);  // integers are stored exactly
+        }
       }
     }
-  }
 }
 
 // The predicted encoding is for smooth planes (depth, parameter images): there it beats grouping

@@ -81,14 +81,15 @@ TEST(ReferenceViewStore, ACompactStoreHoldsTheViewsUsedLastDecoded) {
   for (int j = 0; j < 5; ++j) EXPECT_EQ(compact.decoded(j), j == 0 || j == 4) << j;
   EXPECT_LT(compact.BytesUsed(), plain.BytesUsed());
   EXPECT_NEAR(compact.pose(2).translation().x(), 0.2, 1e-15);  // geometry stays decoded
-  const ReferenceView copy = compact.Decoded(2);  // decoded, but not into the cache
+  const ReferenceView copy = compact.Decoded(2);               // decoded, but not into the cache
   EXPECT_FALSE(compact.decoded(2));
   const cv::Mat& tau = compact.view(2).planes.at("tau");  // now in the cache
   EXPECT_TRUE(compact.decoded(2));
   EXPECT_EQ(cv::norm(copy.planes.at("tau"), tau, cv::NORM_INF), 0.0);
   EXPECT_LE(cv::norm(tau, plain.view(2).planes.at("tau"), cv::NORM_INF), 255.0 / 32768);
-  EXPECT_EQ(cv::norm(compact.view(2).planes.at("rgb"), plain.view(2).planes.at("rgb"),
-                     cv::NORM_INF), 0.0);  // integers exactly
+  EXPECT_EQ(
+      cv::norm(compact.view(2).planes.at("rgb"), plain.view(2).planes.at("rgb"), cv::NORM_INF),
+      0.0);  // integers exactly
   // Encoded twice, the same bytes: an evicted view that did not change is not encoded again.
   EXPECT_EQ(compact.Encoded(2).planes.at("tau").bytes, compact.Encoded(2).planes.at("tau").bytes);
   EXPECT_EQ(compact.Trim({2}).size(), 1u);  // three decoded (0, 2, 4): the oldest but 2 goes
