@@ -82,21 +82,32 @@ inline uint32_t UnZigZag(uint32_t z, uint32_t mask) {
   return ((z >> 1) ^ (0u - (z & 1u))) & mask;
 }
 
+// The mask of a `width`-bit value.
+inline uint32_t MaskOf(int width) {
+  return width == 32 ? ~0u : (1u << width) - 1;
+}
+
+// The prediction of value x of row y (r: its row, up: the row above; `channels` interleaved):
+// the median predictor inside, the left neighbour in the first row, the upper one in the first
+// column, 0 at the first value.
+template <class S>
+inline uint32_t PredictionAt(const uint32_t* r, const uint32_t* up, int x, int y, int channels) {
+  return x < channels ? (y > 0 ? up[x] : 0u)
+         : y == 0     ? r[x - channels]
+                      : MedianPredictor<S>(r[x - channels], up[x], up[x - channels]);
+}
+
 // The residuals of q (rows × row_values, `channels` interleaved) against their predictions,
 // zigzag-coded; `width`-bit values.
 template <class S>
 void Residuals(const uint32_t* q, int rows, int row_values, int channels, int width,
                uint32_t* codes) {
-  const uint32_t mask = width == 32 ? ~0u : (1u << width) - 1;
+  const uint32_t mask = MaskOf(width);
   for (int y = 0; y < rows; ++y) {
     const uint32_t* r = q + std::size_t(y) * row_values;
-    const uint32_t* up = r - row_values;
     uint32_t* out = codes + std::size_t(y) * row_values;
     for (int x = 0; x < row_values; ++x) {
-      const uint32_t prediction =
-          x < channels ? (y > 0 ? up[x] : 0u)
-          : y == 0     ? r[x - channels]
-                       : MedianPredictor<S>(r[x - channels], up[x], up[x - channels]);
+      const uint32_t prediction = PredictionAt<S>(r, r - row_values, x, y, channels);
       out[x] = ZigZag((r[x] - prediction) & mask, width, mask);
     }
   }
@@ -129,7 +140,7 @@ void ReconstructPixels(const uint32_t* codes, int rows, int cols, uint32_t mask,
 
 template <class S>
 void Reconstruct(const uint32_t* codes, int rows, int cols, int channels, int width, uint32_t* q) {
-  const uint32_t mask = width == 32 ? ~0u : (1u << width) - 1;
+  const uint32_t mask = MaskOf(width);
   switch (channels) {
     case 1:
       return ReconstructPixels<S, 1>(codes, rows, cols, mask, q);
@@ -144,18 +155,12 @@ void Reconstruct(const uint32_t* codes, int rows, int cols, int channels, int wi
     default:
       break;
   }
-  const int row_values = cols * channels;
+  const int row_values = cols * channels;  // other channel counts, through memory
   for (int y = 0; y < rows; ++y) {
     uint32_t* r = q + std::size_t(y) * row_values;
-    const uint32_t* up = r - row_values;
     const uint32_t* in = codes + std::size_t(y) * row_values;
-    for (int x = 0; x < row_values; ++x) {
-      const uint32_t prediction =
-          x < channels ? (y > 0 ? up[x] : 0u)
-          : y == 0     ? r[x - channels]
-                       : MedianPredictor<S>(r[x - channels], up[x], up[x - channels]);
-      r[x] = (prediction + UnZigZag(in[x], mask)) & mask;
-    }
+    for (int x = 0; x < row_values; ++x)
+      r[x] = (PredictionAt<S>(r, r - row_values, x, y, channels) + UnZigZag(in[x], mask)) & mask;
   }
 }
 

@@ -58,7 +58,7 @@ TEST(PlaneCodec, HalfFloatsKeepTheirBitsWithinHalfAStep) {
 TEST(PlaneCodec, DecodeGivesTheRoundedValuesOfEveryTypeAndChannelCount) {
   std::mt19937 random(5);
   for (const PlaneEncoding encoding : {PlaneEncoding::kPredicted, PlaneEncoding::kShuffled})
-    for (int type : {CV_32FC1, CV_32FC3, CV_16FC(7), CV_8UC3, CV_8UC1, CV_16UC1}) {
+    for (int type : {CV_32FC1, CV_32FC3, CV_16FC(7), CV_8UC3, CV_8UC1, CV_16UC1, CV_32FC(5)}) {
       SCOPED_TRACE(int(encoding));
       SCOPED_TRACE(type);
       cv::Mat m(24, 32, type);
