@@ -11,8 +11,10 @@
 namespace novelty::eval {
 namespace {
 
+// One file per test: ctest runs this file's tests in parallel processes.
 std::string Saved(const HtmlReport& report) {
-  const std::string path = testing::TempDir() + "/findings_report_test.html";
+  const std::string path = testing::TempDir() + "/findings_report_test_" +
+                           testing::UnitTest::GetInstance()->current_test_info()->name() + ".html";
   report.Save(path);
   std::ifstream in(path);
   return std::string(std::istreambuf_iterator<char>(in), {});
