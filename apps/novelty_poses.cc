@@ -39,13 +39,12 @@
 #include "sensors/localization/direct_odometry.h"
 #include "sensors/localization/visual_odometry.h"
 #include "sensors/rawlog/camera_pose_observation.h"
-#include "sensors/rawlog/led_observation.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rawlog_output.h"
 #include "sensors/rawlog/rgbd_observation.h"
 #include "sensors/rawlog/rig_frame_reader.h"
-#include "sensors/tracker/led_pose_estimator.h"
+#include "sensors/rawlog/tracker_trajectory.h"
 #include "sensors/tracker/pose_trajectory.h"
 #include "sim/output/ground_truth_reader.h"
 
@@ -64,32 +63,17 @@ std::optional<Eigen::Isometry3d> CameraMount(const mrpt::serialization::CSeriali
   return std::nullopt;
 }
 
-sensors::PoseTrajectory TrackerTrajectory(const std::string& rawlog, int* rejected) {
-  std::vector<std::string> skipped;
-  const std::vector<sensors::LedSample> samples = sensors::ReadLedSamples(rawlog, &skipped);
-  if (samples.empty()) throw std::runtime_error(rawlog + ": no LED_TRACKER observations");
-  std::string why;
-  const auto interval = sensors::FindStaticInterval(samples, {}, &why);
-  if (!interval) throw std::runtime_error(rawlog + ": cannot calibrate the LED plate: " + why);
-  const std::vector<sensors::LedSample> still(samples.begin() + interval->first,
-                                              samples.begin() + interval->second);
-  const sensors::LedPlate plate =
-      sensors::CalibratePlateGeometry(still, sensors::LedPlate::Nominal().camera_from_plate);
+// The tracker's trajectory, with the plate's calibration on stderr.
+sensors::PoseTrajectory TrackerPoses(const std::string& rawlog, int* rejected) {
+  const sensors::TrackerTrajectory t = sensors::ReadTrackerTrajectory(rawlog);
+  const auto& leds = t.plate.leds;
   std::fprintf(stderr,
-               "[novelty-poses] plate calibrated from %zu samples (%.1f s still): LED1 (%.4f, "
+               "[novelty-poses] plate calibrated from %d samples (%.1f s still): LED1 (%.4f, "
                "%.4f, %.4f) LED2 (%.4f, %.4f, %.4f) LED3 (%.4f, %.4f, %.4f) m\n",
-               still.size(), still.back().time - still.front().time, plate.leds[0].x(),
-               plate.leds[0].y(), plate.leds[0].z(), plate.leds[1].x(), plate.leds[1].y(),
-               plate.leds[1].z(), plate.leds[2].x(), plate.leds[2].y(), plate.leds[2].z());
-  std::vector<sensors::TimedPose> poses;
-  *rejected = int(skipped.size());
-  for (const sensors::LedSample& s : samples) {
-    if (auto p = sensors::EstimateCameraPose(plate, s, {}, nullptr))
-      poses.push_back({p->time, p->world_from_camera});
-    else
-      ++*rejected;
-  }
-  return sensors::PoseTrajectory(std::move(poses));
+               t.still_samples, t.still_seconds, leds[0].x(), leds[0].y(), leds[0].z(),
+               leds[1].x(), leds[1].y(), leds[1].z(), leds[2].x(), leds[2].y(), leds[2].z());
+  *rejected = t.rejected;
+  return t.poses;
 }
 
 // One visual odometry behind one call: the pose of a stereo pair, or nullopt with the reason.
@@ -172,7 +156,7 @@ int main(int argc, char** argv) {
       }
       visual_poses = VisualPoses(in.getValue(), method.getValue(), first, &rejected);
     } else {
-      trajectory = TrackerTrajectory(in.getValue(), &rejected);
+      trajectory = TrackerPoses(in.getValue(), &rejected);
     }
     sensors::PoseInterpolationOptions interpolation;
     interpolation.smoothing_half_window = smoothing.getValue();

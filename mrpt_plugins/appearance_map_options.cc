@@ -40,6 +40,10 @@ const OptionTable<AppearanceMapConfig>& AppearanceMapConfig::Table() {
         .Add(
             "half_precision", [](C & c) -> auto& { return c.map.half_precision; },
             "alpha, beta, sigma stored as half floats (tau always float)")
+        .Add(
+            "warp_sigma_px", [](C & c) -> auto& { return c.map.warp_sigma_px; },
+            "px; prior variance >= (warp_sigma_px * |grad tau|)^2: the warp's error (0 = thesis)",
+            1.0, 0.0)
         .Include(
             ViewMapOptionTable(), [](C & c) -> auto& { return c.map.views; })
         .Include(
@@ -57,6 +61,7 @@ const OptionTable<AppearanceMapConfig>& AppearanceMapConfig::Table() {
           CheckInRange(c.map.initial_prior.sigma, 1e-3, 1e6, "initial_sigma");
           CheckInRange(c.map.surprise.update.xi, 0, 1e6, "xi");
           CheckInRange(c.map.surprise.update.sigma_max, 0, 1e6, "sigma_max");
+          CheckInRange(c.map.warp_sigma_px, 0, 10, "warp_sigma_px");
         });
     return t;
   }();

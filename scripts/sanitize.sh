@@ -18,7 +18,8 @@ cmake --build build-sanitize --parallel "$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-# The odometry and registration tests over whole simulated sequences run 2–8 minutes each under
+# The odometry and registration tests over whole simulated sequences, and the stereo + tracker
+# clip (plane sweep + BP on every frame), run 2–8 minutes each under
 # the sanitizers (10–30 s without): they run in the plain build only; their short cases run here.
-long='DriftOnAQuarterCircle|RegistersASecondSequence|RegistersASequenceWhoseLighting|KeepsTrackingThroughAChangeOfLighting|RelocalizesAgainstKeyframes'
+long='FromStereoAndTrackerTheGlass|DriftOnAQuarterCircle|RegistersASecondSequence|RegistersASequenceWhoseLighting|KeepsTrackingThroughAChangeOfLighting|RelocalizesAgainstKeyframes'
 ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)" --timeout 1800 -E "$long"

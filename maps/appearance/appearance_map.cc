@@ -1,8 +1,10 @@
 #include "maps/appearance/appearance_map.h"
+#include "maps/appearance/warp_error_floor.h"
 #include "maps/views/plane_check.h"
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -61,6 +63,7 @@ struct FrameRows {
   const cv::Mat& depth;
   const Prediction& prior;               // its rows hold nothing until blended (BlendRows)
   std::array<float, kChannels> initial;  // the initial prior, in Channel order
+  double warp_sigma_px;                  // 0 unless the prior was warped (warp_error_floor.h)
   cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau, stored_depth;
 };
 
@@ -106,6 +109,8 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
     for (int c = 0; c < kChannels; ++c)
       core::FillWhere(*p0[c], uncovered, f.initial[std::size_t(c)]);
   }
+  FloorVarianceByWarpError(f.prior.value[1], rows, f.warp_sigma_px, *p0[kAlpha],
+                           {p0[kBeta], p0[kBeta + 1], p0[kBeta + 2]});
   t.post_ab_sigma.resize(t.ab_sigma.size());
   t.post_tau.resize(t.tau.size());
   for (auto* planes : {&t.post_ab_sigma, &t.post_tau})
@@ -171,6 +176,10 @@ AppearanceMap::~AppearanceMap() = default;
 AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
     : options_(options), map_(options.views), tile_work_(std::make_unique<TileWorkPool>()) {
   options_.surprise.update.Check();
+  if (!(std::isfinite(options_.warp_sigma_px) && options_.warp_sigma_px >= 0.0)) {
+    throw std::invalid_argument("AppearanceMapOptions: warp_sigma_px must be finite and >= 0, got " +
+                                std::to_string(options_.warp_sigma_px));
+  }
   stats::CheckNormalGamma(options_.initial_prior, "AppearanceMapOptions::initial_prior");
 }
 
@@ -186,7 +195,12 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   const int rows = camera.height, cols = camera.width;
   // Prior: blended reference parameters, each tile's rows by the tile; the initial prior where no
   // view covers.
-  const Prediction prior = map_.PredictDeferred(camera, T_world_cam, {{"ab_sigma", 7}, {"tau", 3}});
+  // The warp-error floor differentiates τ across tile borders: it needs the whole prior blended
+  // first (a pass more over the frame); without it each tile blends its own rows.
+  const std::vector<std::pair<std::string, int>> planes = {{"ab_sigma", 7}, {"tau", 3}};
+  const Prediction prior = options_.warp_sigma_px > 0.0
+                               ? map_.Predict(camera, T_world_cam, planes)
+                               : map_.PredictDeferred(camera, T_world_cam, planes);
   const stats::NormalGamma& init = options_.initial_prior;
   const float alpha0 = float(init.alpha), beta0 = float(init.beta), tau0 = float(init.tau),
               sigma0 = float(init.sigma);
@@ -194,6 +208,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     depth,
                     prior,
                     {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0},
+                    prior.warped ? options_.warp_sigma_px : 0.0,
                     cv::Mat(rows, cols, CV_32FC1),
                     cv::Mat(rows, cols, CV_8UC3),
                     cv::Mat(rows, cols, CV_32FC1),

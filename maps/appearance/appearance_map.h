@@ -30,6 +30,10 @@ struct AppearanceMapOptions {
   stats::SurpriseBatchOptions surprise;                      ///< f, ξ, σ_min, σ_max; KL options
   stats::NormalGamma initial_prior = stats::InitialPrior();  ///< 4.3: α=1, β=1, τ=0, σ=5
   bool half_precision = true;  ///< α, β, σ as CV_16F (τ always CV_32F); false: all CV_32F
+  /// Standard deviation (px) of where the warp puts a scene point: pose, depth and resampling
+  /// error. A warped prior's variance is at least (warp_sigma_px·|∇τ|)² per channel
+  /// (warp_error_floor.h); 0 = the thesis's prior as interpolated.
+  double warp_sigma_px = 0.0;
   ViewBasedMapOptions views;
 };
 

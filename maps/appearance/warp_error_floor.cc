@@ -1,0 +1,56 @@
+#include "maps/appearance/warp_error_floor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace novelty::appearance {
+
+namespace {
+
+// (a − b)/2, or 0 when either is NaN (no neighbour the map covers).
+inline float HalfDifference(float a, float b) {
+  const float d = 0.5f * (a - b);
+  return std::isfinite(d) ? d : 0.0f;
+}
+
+// The most a floor asks for: the variance of a channel value known only to lie in 0…255 (a
+// uniform distribution). Steeper gradients than that would add no information, and β of this
+// size still fits a half float (α ≤ 2.5 at steady state: β ≤ 1.4·10⁴ < 65504).
+constexpr float kMaxVariance = 255.0f * 255.0f / 12.0f;
+
+}  // namespace
+
+void FloorVarianceByWarpError(const cv::Mat& tau, const cv::Range& rows, double sigma_px,
+                              const cv::Mat& alpha, const std::array<cv::Mat*, 3>& beta) {
+  if (!(sigma_px >= 0.0 && std::isfinite(sigma_px))) {
+    throw std::invalid_argument("FloorVarianceByWarpError: sigma_px must be finite and >= 0");
+  }
+  if (sigma_px == 0.0) return;
+  if (tau.type() != CV_32FC3 || rows.start < 0 || rows.end > tau.rows ||
+      alpha.type() != CV_32FC1 || alpha.rows != rows.size() || alpha.cols != tau.cols) {
+    throw std::invalid_argument("FloorVarianceByWarpError: planes do not match");
+  }
+  const float s2 = float(sigma_px * sigma_px);
+  const int cols = tau.cols, last_row = tau.rows - 1, last_col = cols - 1;
+  for (int y = rows.start; y < rows.end; ++y) {
+    const cv::Vec3f* up = tau.ptr<cv::Vec3f>(std::max(y - 1, 0));
+    const cv::Vec3f* row = tau.ptr<cv::Vec3f>(y);
+    const cv::Vec3f* down = tau.ptr<cv::Vec3f>(std::min(y + 1, last_row));
+    const float* a = alpha.ptr<float>(y - rows.start);
+    std::array<float*, 3> b;
+    for (int k = 0; k < 3; ++k) b[std::size_t(k)] = beta[std::size_t(k)]->ptr<float>(y - rows.start);
+    for (int x = 0; x < cols; ++x) {
+      const cv::Vec3f& left = row[std::max(x - 1, 0)];
+      const cv::Vec3f& right = row[std::min(x + 1, last_col)];
+      for (int k = 0; k < 3; ++k) {
+        const float gx = HalfDifference(right[k], left[k]);
+        const float gy = HalfDifference(down[x][k], up[x][k]);
+        float& bk = b[std::size_t(k)][x];
+        bk = std::max(bk, a[x] * std::min(s2 * (gx * gx + gy * gy), kMaxVariance));
+      }
+    }
+  }
+}
+
+}  // namespace novelty::appearance
