@@ -44,6 +44,9 @@ const OptionTable<AppearanceMapConfig>& AppearanceMapConfig::Table() {
             "warp_sigma_px", [](C & c) -> auto& { return c.map.warp_sigma_px; },
             "px; prior variance >= (warp_sigma_px * |grad tau|)^2: the warp's error (0 = thesis)",
             1.0, 0.0)
+        .Add(
+            "learn_warp_sigma", [](C & c) -> auto& { return c.map.learn_warp_sigma; },
+            "learn that error from the shift of edges against the prior (false = thesis)", 1.0, 0.0)
         .Include(
             ViewMapOptionTable(), [](C & c) -> auto& { return c.map.views; })
         .Include(

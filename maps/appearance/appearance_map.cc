@@ -188,6 +188,15 @@ void AppearanceMap::CheckStoredPlanes() const {
                                     {"tau", 3, views::PlaneValues::kFinite}});
 }
 
+void AppearanceMap::LearnWarpSigma(const cv::Mat& rgb, const cv::Mat& tau) {
+  std::vector<cv::Mat> observed;
+  color::RgbToYCbCrPlanes(rgb, observed);
+  const double s = MeasureWarpSigma(observed[0], tau);
+  if (std::isnan(s)) return;  // too few edges to tell
+  const double f = options_.surprise.update.forgetting_factor;
+  learnt_warp_variance_ = f * learnt_warp_variance_ + (1.0 - f) * s * s;
+}
+
 AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& depth,
                                          const core::PinholeCamera& camera,
                                          const Eigen::Isometry3d& T_world_cam) {
@@ -198,9 +207,11 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   // The warp-error floor differentiates τ across tile borders: it needs the whole prior blended
   // first (a pass more over the frame); without it each tile blends its own rows.
   const std::vector<std::pair<std::string, int>> planes = {{"ab_sigma", 7}, {"tau", 3}};
-  const Prediction prior = options_.warp_sigma_px > 0.0
-                               ? map_.Predict(camera, T_world_cam, planes)
-                               : map_.PredictDeferred(camera, T_world_cam, planes);
+  const bool floor = options_.warp_sigma_px > 0.0 || options_.learn_warp_sigma;
+  const Prediction prior = floor ? map_.Predict(camera, T_world_cam, planes)
+                                 : map_.PredictDeferred(camera, T_world_cam, planes);
+  const double warp_sigma =
+      prior.warped ? std::max(options_.warp_sigma_px, std::sqrt(learnt_warp_variance_)) : 0.0;
   const stats::NormalGamma& init = options_.initial_prior;
   const float alpha0 = float(init.alpha), beta0 = float(init.beta), tau0 = float(init.tau),
               sigma0 = float(init.sigma);
@@ -208,7 +219,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     depth,
                     prior,
                     {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0},
-                    prior.warped ? options_.warp_sigma_px : 0.0,
+                    warp_sigma,
                     cv::Mat(rows, cols, CV_32FC1),
                     cv::Mat(rows, cols, CV_8UC3),
                     cv::Mat(rows, cols, CV_32FC1),
@@ -239,6 +250,8 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
 
   AppearanceProducts out;
   out.valid = prior.valid;
+  out.warp_sigma_px = warp_sigma;
+  if (options_.learn_warp_sigma && prior.warped) LearnWarpSigma(rgb, prior.value[1]);
   out.selected = prior.selected;
   out.surprise = f.surprise;
   out.expected_rgb = f.expected_rgb;

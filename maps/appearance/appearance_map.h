@@ -30,10 +30,15 @@ struct AppearanceMapOptions {
   stats::SurpriseBatchOptions surprise;                      ///< f, ξ, σ_min, σ_max; KL options
   stats::NormalGamma initial_prior = stats::InitialPrior();  ///< 4.3: α=1, β=1, τ=0, σ=5
   bool half_precision = true;  ///< α, β, σ as CV_16F (τ always CV_32F); false: all CV_32F
-  /// Standard deviation (px) of where the warp puts a scene point: pose, depth and resampling
-  /// error. A warped prior's variance is at least (warp_sigma_px·|∇τ|)² per channel
-  /// (warp_error_floor.h); 0 = the thesis's prior as interpolated.
+  /// Standard deviation s (px) of where the warp puts a scene point: pose, depth and resampling
+  /// error. A warped prior's variance is at least (s·|∇τ|)² per channel (warp_error_floor.h).
+  /// With learn_warp_sigma, s is the larger of this and the learnt value; 0 and no learning =
+  /// the thesis's prior as interpolated.
   double warp_sigma_px = 0.0;
+  /// Learn s from the frames: each warped frame measures the shift its edges show against the
+  /// prior (MeasureWarpSigma), and s² follows it with the forgetting factor f (eq. 4.10's f, a
+  /// memory of about five frames); a frame's floor uses what the frames before it taught.
+  bool learn_warp_sigma = false;
   ViewBasedMapOptions views;
 };
 
@@ -42,6 +47,7 @@ struct AppearanceProducts {
   cv::Mat expected_rgb;  ///< CV_8UC3, the prior's τ in RGB (what the map expects to see)
   cv::Mat uncertainty;   ///< CV_32FC1, Σβ0 of the prior (fig. 4.4d); NaN where not covered
   cv::Mat valid;         ///< CV_8UC1, covered by the map
+  double warp_sigma_px = 0.0;  ///< s of the prior's floor in this frame (0: none)
   std::vector<int> selected;
   ViewBasedMap::UpdateResult update;
 };
@@ -75,8 +81,11 @@ class AppearanceMap {
   // A frame runs in row tiles on all cores (appearance_map.cc): each tile converts its rows of
   // the frame and of the prior into small planes that stay in cache through the kernel, and
   // writes its rows of the products and of the posterior to be stored, always new images.
+  // learn_warp_sigma: the frame's measured shift against the prior τ, into the learnt s².
+  void LearnWarpSigma(const cv::Mat& rgb, const cv::Mat& tau);
   AppearanceMapOptions options_;
   ViewBasedMap map_;
+  double learnt_warp_variance_ = 0.0;  // s² learnt so far (learn_warp_sigma); not saved
   struct TileWorkPool;  // the tiles' working planes, kept between frames
   std::unique_ptr<TileWorkPool> tile_work_;
 };

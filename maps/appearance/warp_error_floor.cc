@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace novelty::appearance {
 
@@ -51,6 +53,33 @@ void FloorVarianceByWarpError(const cv::Mat& tau, const cv::Range& rows, double 
       }
     }
   }
+}
+
+double MeasureWarpSigma(const cv::Mat& observed_y, const cv::Mat& tau, double min_gradient,
+                        int min_pixels) {
+  if (observed_y.type() != CV_32FC1 || tau.type() != CV_32FC3 || observed_y.size() != tau.size()) {
+    throw std::invalid_argument("MeasureWarpSigma: planes do not match");
+  }
+  const float g_min2 = float(min_gradient * min_gradient);
+  std::vector<float> shifts;
+  for (int y = 1; y + 1 < tau.rows; ++y) {
+    const cv::Vec3f* up = tau.ptr<cv::Vec3f>(y - 1);
+    const cv::Vec3f* row = tau.ptr<cv::Vec3f>(y);
+    const cv::Vec3f* down = tau.ptr<cv::Vec3f>(y + 1);
+    const float* x = observed_y.ptr<float>(y);
+    for (int u = 1; u + 1 < tau.cols; ++u) {
+      const float gx = 0.5f * (row[u + 1][0] - row[u - 1][0]);
+      const float gy = 0.5f * (down[u][0] - up[u][0]);
+      const float g2 = gx * gx + gy * gy;  // NaN next to an uncovered pixel: not taken
+      if (!(g2 >= g_min2)) continue;
+      const float e = std::abs(x[u] - row[u][0]) / std::sqrt(g2);
+      if (std::isfinite(e)) shifts.push_back(e);
+    }
+  }
+  if (int(shifts.size()) < min_pixels) return std::numeric_limits<double>::quiet_NaN();
+  auto mid = shifts.begin() + std::ptrdiff_t(shifts.size() / 2);
+  std::nth_element(shifts.begin(), mid, shifts.end());
+  return 1.4826 * double(*mid);
 }
 
 }  // namespace novelty::appearance

@@ -26,4 +26,14 @@ namespace novelty::appearance {
 void FloorVarianceByWarpError(const cv::Mat& tau, const cv::Range& rows, double sigma_px,
                               const cv::Mat& alpha, const std::array<cv::Mat*, 3>& beta);
 
+/// The position error (px) the prior shows against the frame, for learning s: along the prior's
+/// gradient a shift δ changes the colour by |∇τ|·(n·δ), so e = (x − τ)/|∇τ| is the shift's
+/// component along the gradient, of standard deviation s for isotropic shifts. Returns
+/// 1.4826·median |e| (robust: a new object's pixels are outliers) over the pixels where the
+/// luminance τ_Y (channel 0 of `tau`, CV_32FC3, NaN where not covered) changes by at least
+/// `min_gradient` levels per pixel, so that sensor noise (a level or two) adds at most a tenth of
+/// a pixel; NaN when fewer than `min_pixels` qualify. `observed_y`: the frame's Y, CV_32FC1.
+double MeasureWarpSigma(const cv::Mat& observed_y, const cv::Mat& tau, double min_gradient = 16.0,
+                        int min_pixels = 200);
+
 }  // namespace novelty::appearance
