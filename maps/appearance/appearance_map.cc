@@ -251,11 +251,12 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   AppearanceProducts out;
   out.valid = prior.valid;
   out.warp_sigma_px = warp_sigma;
-  if (options_.learn_warp_sigma && prior.warped) LearnWarpSigma(rgb, prior.value[1]);
   out.selected = prior.selected;
   out.surprise = f.surprise;
   out.expected_rgb = f.expected_rgb;
   out.uncertainty = f.uncertainty;
+  // What this frame teaches of s serves the next frame's floor, never its own.
+  if (options_.learn_warp_sigma && prior.warped) LearnWarpSigma(rgb, prior.value[1]);
   // The posterior at this viewpoint goes into the map (4.3's update policy).
   out.update = map_.Update(camera, T_world_cam, f.stored_depth,
                            {{"ab_sigma", f.stored_ab_sigma}, {"tau", f.stored_tau}}, prior.selected,

@@ -78,14 +78,17 @@ class AppearanceMap {
   enum Channel { kAlpha = 0, kBeta = 1, kTau = 4, kSigma = 7, kChannels = 10 };
 
  private:
+  // learn_warp_sigma: the frame's measured shift against the prior τ, into the learnt s².
+  void LearnWarpSigma(const cv::Mat& rgb, const cv::Mat& tau);
+
+  AppearanceMapOptions options_;
+  ViewBasedMap map_;
+  // s² learnt so far (learn_warp_sigma). Not saved with the map: a loaded map learns it again
+  // within a few frames, and a different pose source may follow.
+  double learnt_warp_variance_ = 0.0;
   // A frame runs in row tiles on all cores (appearance_map.cc): each tile converts its rows of
   // the frame and of the prior into small planes that stay in cache through the kernel, and
   // writes its rows of the products and of the posterior to be stored, always new images.
-  // learn_warp_sigma: the frame's measured shift against the prior τ, into the learnt s².
-  void LearnWarpSigma(const cv::Mat& rgb, const cv::Mat& tau);
-  AppearanceMapOptions options_;
-  ViewBasedMap map_;
-  double learnt_warp_variance_ = 0.0;  // s² learnt so far (learn_warp_sigma); not saved
   struct TileWorkPool;  // the tiles' working planes, kept between frames
   std::unique_ptr<TileWorkPool> tile_work_;
 };

@@ -1,16 +1,18 @@
-// The variance a prior cannot go below because the warp that made it is not exact (issue 25).
+// The variance a prior cannot go below because the warp that made it is not exact.
 //
 // A prior interpolated at a viewpoint (ch. 3) places each scene point where the views' poses and
 // depths say; pose error (the LED tracker's 0.16° is about 0.8 px at 320×240), depth error
 // (stereo) and resampling put it off by some δ pixels. To first order the colour the frame shows
 // there is then τ(x + δ) ≈ τ(x) + ∇τ·δ: for isotropic δ of standard deviation s the prediction
 // has the extra variance s²·|∇τ|² (one coordinate each: s²·(τx² + τy²)). Thesis 4.3.2 lets the
-// map learn this uncertainty from the deviations it sees at edges (fig. 4.4d, 4.10); that learnt
-// band sits where past frames put the edges and moves off it whenever the view is replaced by a
-// frame with a different pose error. The floor gives every prior, at every frame, at least the
-// variance its own warp error implies: β ≥ α·s²·|∇τ|² per channel (β/α is the variance the
-// normal-gamma prior expects, eq. 4.9). It is a floor, not an addition, so it does not compound
-// through the stored posterior (eq. 4.11 shrinks β by f each frame, the floor holds it).
+// map learn this uncertainty from the deviations it sees at edges (fig. 4.4d, 4.10). It does not
+// with a tracker whose error is smoothed over 0.4 s: the frames of one pass agree with each other
+// and with the views they make, so the map learns little at edges, and a later pass, whose poses
+// are off in another direction, lands every edge about a pixel away (docs/experiments.md, "From
+// sensor data"). The floor gives every warped prior at least the variance its own position error
+// implies: β ≥ α·s²·|∇τ|² per channel (β/α is the variance the normal-gamma prior expects,
+// eq. 4.9). It is a floor, not an addition, so it does not compound through the stored posterior
+// (eq. 4.11 shrinks β by f each frame, the floor holds it). s can be learnt (MeasureWarpSigma).
 #pragma once
 
 #include <array>
