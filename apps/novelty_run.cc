@@ -332,6 +332,7 @@ struct Played {
   std::vector<int> panel_frames;
   int frames = 0;
   double seconds = 0.0;
+  double warp_sigma_sum = 0.0;  // the appearance map's floor s (px), summed over frames
 };
 
 // Plays the rawlog into the maps; per frame the selectivity of every changed region (metrics.csv,
@@ -365,6 +366,7 @@ Played Play(const RunArgs& a, RunMaps& maps, const sim::GroundTruthReader& groun
                           eval::NoveltyPanel(map.lastFrame().rgb, p, d, stem));
       run.panel_frames.push_back(index);
     }
+    run.warp_sigma_sum += p.warp_sigma_px;
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (run.frames % 50 == 0) {
       std::fprintf(stderr, "\r[novelty-run] frame %d, %.1f frames/s, %d views   ", index,
@@ -442,6 +444,9 @@ int main(int argc, char** argv) {
         "  map:     %s (%s)\n  report:  %s/report.html\n",
         run.frames, player.skipped(), run.seconds, a.out.c_str(), a.map_out.c_str(),
         map.asString().c_str(), a.out.c_str());
+    if (run.warp_sigma_sum > 0.0)
+      std::printf("  warp-error floor: s = %.2f px on average over the frames\n",
+                  run.warp_sigma_sum / run.frames);
     return player.stopped_by().empty() ? 0 : kExitPartial;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());
