@@ -64,6 +64,7 @@ struct FrameRows {
   const Prediction& prior;               // its rows hold nothing until blended (BlendRows)
   std::array<float, kChannels> initial;  // the initial prior, in Channel order
   double warp_sigma_px;                  // 0 unless the prior was warped (warp_error_floor.h)
+  cv::Mat observed_y;  // learn_warp_sigma: the tiles leave their rows of the frame's Y here
   cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau, stored_depth;
 };
 
@@ -101,6 +102,10 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
     uncovered = t.uncovered;
   }
   color::RgbToYCbCrPlanes(RowsOf(f.rgb, rows), t.x);
+  if (!f.observed_y.empty()) {
+    cv::Mat observed_y = RowsOf(f.observed_y, rows);  // written in place
+    t.x[0].copyTo(observed_y);
+  }
   // Half floats (a static camera reads its view's stored planes in place) or blended floats.
   core::SplitToFloat(RowsOf(f.prior.value[0], rows), t.ab_sigma);
   core::SplitToFloat(RowsOf(f.prior.value[1], rows), t.tau);
@@ -188,10 +193,8 @@ void AppearanceMap::CheckStoredPlanes() const {
                                     {"tau", 3, views::PlaneValues::kFinite}});
 }
 
-void AppearanceMap::LearnWarpSigma(const cv::Mat& rgb, const cv::Mat& tau) {
-  std::vector<cv::Mat> observed;
-  color::RgbToYCbCrPlanes(rgb, observed);
-  const double s = MeasureWarpSigma(observed[0], tau);
+void AppearanceMap::LearnWarpSigma(const cv::Mat& observed_y, const cv::Mat& tau) {
+  const double s = MeasureWarpSigma(observed_y, tau);
   if (std::isnan(s)) return;  // too few edges to tell
   const double f = options_.surprise.update.forgetting_factor;
   learnt_warp_variance_ = f * learnt_warp_variance_ + (1.0 - f) * s * s;
@@ -210,6 +213,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   const bool floor = options_.warp_sigma_px > 0.0 || options_.learn_warp_sigma;
   const Prediction prior = floor ? map_.Predict(camera, T_world_cam, planes)
                                  : map_.PredictDeferred(camera, T_world_cam, planes);
+  const bool learn = options_.learn_warp_sigma && prior.warped;
   const double warp_sigma =
       prior.warped ? std::max(options_.warp_sigma_px, std::sqrt(learnt_warp_variance_)) : 0.0;
   const stats::NormalGamma& init = options_.initial_prior;
@@ -220,6 +224,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     prior,
                     {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0},
                     warp_sigma,
+                    learn ? cv::Mat(rows, cols, CV_32FC1) : cv::Mat(),
                     cv::Mat(rows, cols, CV_32FC1),
                     cv::Mat(rows, cols, CV_8UC3),
                     cv::Mat(rows, cols, CV_32FC1),
@@ -256,7 +261,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   out.expected_rgb = f.expected_rgb;
   out.uncertainty = f.uncertainty;
   // What this frame teaches of s serves the next frame's floor, never its own.
-  if (options_.learn_warp_sigma && prior.warped) LearnWarpSigma(rgb, prior.value[1]);
+  if (learn) LearnWarpSigma(f.observed_y, prior.value[1]);
   // The posterior at this viewpoint goes into the map (4.3's update policy).
   out.update = map_.Update(camera, T_world_cam, f.stored_depth,
                            {{"ab_sigma", f.stored_ab_sigma}, {"tau", f.stored_tau}}, prior.selected,

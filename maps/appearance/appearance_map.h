@@ -78,8 +78,8 @@ class AppearanceMap {
   enum Channel { kAlpha = 0, kBeta = 1, kTau = 4, kSigma = 7, kChannels = 10 };
 
  private:
-  // learn_warp_sigma: the frame's measured shift against the prior τ, into the learnt s².
-  void LearnWarpSigma(const cv::Mat& rgb, const cv::Mat& tau);
+  // learn_warp_sigma: the frame's measured shift (its Y against the prior τ) into the learnt s².
+  void LearnWarpSigma(const cv::Mat& observed_y, const cv::Mat& tau);
 
   AppearanceMapOptions options_;
   ViewBasedMap map_;

@@ -10,11 +10,16 @@ namespace novelty::appearance {
 
 namespace {
 
-// (a − b)/2, or 0 when either is NaN (no neighbour the map covers).
-inline float HalfDifference(float a, float b) {
-  const float d = 0.5f * (a - b);
-  return std::isfinite(d) ? d : 0.0f;
+// Central differences of channel k of τ at column x: along the row (neighbours clamped to columns
+// 0…last_col) and across the rows `up` and `down`. NaN next to an uncovered pixel.
+inline void CentralDifferences(const cv::Vec3f* up, const cv::Vec3f* row, const cv::Vec3f* down,
+                               int x, int last_col, int k, float& gx, float& gy) {
+  gx = 0.5f * (row[std::min(x + 1, last_col)][k] - row[std::max(x - 1, 0)][k]);
+  gy = 0.5f * (down[x][k] - up[x][k]);
 }
+
+// 0 for a difference across an uncovered neighbour: there is no edge the map knows of there.
+inline float CoveredOrZero(float d) { return std::isfinite(d) ? d : 0.0f; }
 
 // The most a floor asks for: the variance of a channel value known only to lie in 0…255 (a
 // uniform distribution). Steeper gradients than that would add no information, and β of this
@@ -43,11 +48,10 @@ void FloorVarianceByWarpError(const cv::Mat& tau, const cv::Range& rows, double 
     std::array<float*, 3> b;
     for (int k = 0; k < 3; ++k) b[std::size_t(k)] = beta[std::size_t(k)]->ptr<float>(y - rows.start);
     for (int x = 0; x < cols; ++x) {
-      const cv::Vec3f& left = row[std::max(x - 1, 0)];
-      const cv::Vec3f& right = row[std::min(x + 1, last_col)];
       for (int k = 0; k < 3; ++k) {
-        const float gx = HalfDifference(right[k], left[k]);
-        const float gy = HalfDifference(down[x][k], up[x][k]);
+        float gx, gy;
+        CentralDifferences(up, row, down, x, last_col, k, gx, gy);
+        gx = CoveredOrZero(gx), gy = CoveredOrZero(gy);
         float& bk = b[std::size_t(k)][x];
         bk = std::max(bk, a[x] * std::min(s2 * (gx * gx + gy * gy), kMaxVariance));
       }
@@ -61,15 +65,16 @@ double MeasureWarpSigma(const cv::Mat& observed_y, const cv::Mat& tau, double mi
     throw std::invalid_argument("MeasureWarpSigma: planes do not match");
   }
   const float g_min2 = float(min_gradient * min_gradient);
+  const int last_col = tau.cols - 1;
   std::vector<float> shifts;
   for (int y = 1; y + 1 < tau.rows; ++y) {
     const cv::Vec3f* up = tau.ptr<cv::Vec3f>(y - 1);
     const cv::Vec3f* row = tau.ptr<cv::Vec3f>(y);
     const cv::Vec3f* down = tau.ptr<cv::Vec3f>(y + 1);
     const float* x = observed_y.ptr<float>(y);
-    for (int u = 1; u + 1 < tau.cols; ++u) {
-      const float gx = 0.5f * (row[u + 1][0] - row[u - 1][0]);
-      const float gy = 0.5f * (down[u][0] - up[u][0]);
+    for (int u = 1; u < last_col; ++u) {
+      float gx, gy;
+      CentralDifferences(up, row, down, u, last_col, 0, gx, gy);
       const float g2 = gx * gx + gy * gy;  // NaN next to an uncovered pixel: not taken
       if (!(g2 >= g_min2)) continue;
       const float e = std::abs(x[u] - row[u][0]) / std::sqrt(g2);
