@@ -1,7 +1,7 @@
 // novelty-depth: dense depth from stereo or trinocular images (thesis 3.2).
 //
 //   novelty-depth IN.rawlog --out OUT.rawlog [--near 0.5] [--far 5] [--hypotheses 64]
-//                 [--window 5] [--groundtruth DIR/groundtruth] [--frames N]
+//                 [--window 5] [--min-confidence 0] [--groundtruth DIR/groundtruth] [--frames N]
 //
 // Every CObservationStereoImages or trinocular CObservationImage triple (CAM_CENTER, CAM_LEFT,
 // CAM_RIGHT) becomes a CObservation3DRangeScan "STEREO_DEPTH" with the reference camera's colour
@@ -19,6 +19,7 @@
 
 #include "apps/command_line.h"
 #include "core/frame_stem.h"
+#include "core/range_check.h"
 #include "core/same_file.h"
 #include "eval/depth_accuracy.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
@@ -44,6 +45,10 @@ int main(int argc, char** argv) {
                                     defaults.sweep.hypotheses, "N", cmd);
     TCLAP::ValueArg<int> window("", "window", "Cost averaging window (pixels)", false,
                                 defaults.sweep.window, "N", cmd);
+    TCLAP::ValueArg<double> min_confidence(
+        "", "min-confidence",
+        "Pixels whose BP confidence (0..1) is below this get depth 0 (unknown)", false,
+        defaults.min_confidence, "C", cmd);
     TCLAP::ValueArg<std::string> truth("", "groundtruth", "Report accuracy against this folder",
                                        false, "", "DIR", cmd);
     TCLAP::ValueArg<int> max_frames("", "frames", "Convert only the first N rig frames", false, 0,
@@ -55,6 +60,8 @@ int main(int argc, char** argv) {
     options.sweep.far = far.getValue();
     options.sweep.hypotheses = hypotheses.getValue();
     options.sweep.window = window.getValue();
+    core::CheckInRange(min_confidence.getValue(), 0, 1, "--min-confidence");
+    options.min_confidence = static_cast<float>(min_confidence.getValue());
     if (core::SameFile(in.getValue(), out.getValue()))
       throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
                                   in.getValue() + ": it would be overwritten");

@@ -51,6 +51,18 @@ void ExpectAccurateDepth(const std::string& scenario, size_t cameras) {
         scenario.c_str(), f.index, a.textured_pixels, 100 * a.within_fraction,
         100 * a.median_relative_error, a.discontinuity_pixels,
         100 * a.discontinuity_within_fraction);
+    // min_confidence (novelty-depth --min-confidence) drops exactly the pixels below it.
+    o.min_confidence = 0.35f;
+    const StereoDepth kept = ComputeStereoDepth(f.images[0], f.cameras[0], others, o);
+    int dropped = 0, wrong = 0;
+    for (int i = 0; i < int(kept.depth.total()); ++i) {
+      const bool keep = depth.confidence.at<float>(i) >= o.min_confidence;
+      dropped += keep ? 0 : 1;
+      wrong += (keep ? kept.depth.at<float>(i) != depth.depth.at<float>(i)
+                     : kept.depth.at<float>(i) != 0.0f) ? 1 : 0;
+    }
+    EXPECT_EQ(wrong, 0);
+    EXPECT_GT(dropped, 0);
     EXPECT_GT(a.textured_pixels, 5000);
     EXPECT_GE(a.within_fraction, 0.90) << scenario << " frame " << f.index;
     ++frames;
