@@ -1,0 +1,70 @@
+#include "maps/objects/feature_database.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace novelty::objects {
+
+void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object) {
+  if (object < 0 || object >= objects_)
+    throw std::invalid_argument("FeatureDatabase::AddFeatures: object " + std::to_string(object) +
+                                " of " + std::to_string(objects_));
+  if (descriptors.empty()) return;
+  if (descriptors.type() != CV_32FC1 ||
+      (!descriptors_.empty() && descriptors.cols != descriptors_.cols))
+    throw std::invalid_argument("FeatureDatabase::AddFeatures: descriptors must be CV_32F rows of "
+                                "the database's width");
+  descriptors_.push_back(descriptors);
+  for (int i = 0; i < descriptors.rows; ++i) n_.push_back({{object, 1}});  // eq. 5.6, 5.7
+}
+
+void FeatureDatabase::CheckFeature(int h) const {
+  if (h < 0 || h >= features())
+    throw std::out_of_range("FeatureDatabase: feature " + std::to_string(h) + " of " +
+                            std::to_string(features()));
+}
+
+int FeatureDatabase::Count(int h, int k) const {
+  CheckFeature(h);
+  for (const auto& [object, n] : n_[std::size_t(h)])
+    if (object == k) return n;
+  return 0;
+}
+
+double FeatureDatabase::RelativeFrequency(int h, int k) const {
+  CheckFeature(h);
+  int total = 0;
+  for (const auto& entry : n_[std::size_t(h)]) total += entry.second;
+  return total > 0 ? double(Count(h, k)) / total : 0.0;  // eq. 5.3
+}
+
+int FeatureDatabase::MostProbableObject(int h) const {
+  CheckFeature(h);
+  int best = -1, best_n = 0;
+  for (const auto& [object, n] : n_[std::size_t(h)]) {
+    if (n > best_n || (n == best_n && object < best)) best = object, best_n = n;
+  }
+  return best;
+}
+
+FeatureDatabase::Recognition FeatureDatabase::Recognize(const cv::Mat& selected, double ratio) {
+  Recognition r;
+  r.matches_per_object.assign(std::size_t(objects_), 0);
+  r.matches = RatioMatches(descriptors_, selected, ratio);
+  // N_k with each feature's object as it stood before this frame's increments.
+  std::vector<int> owner;
+  for (const RatioMatch& m : r.matches) owner.push_back(MostProbableObject(m.reference));
+  for (std::size_t i = 0; i < r.matches.size(); ++i) {
+    const int k = owner[i];
+    ++r.matches_per_object[std::size_t(k)];
+    for (auto& entry : n_[std::size_t(r.matches[i].reference)])
+      if (entry.first == k) ++entry.second;  // n_{h,M} += 1
+  }
+  int best = 0;
+  for (int k = 0; k < objects_; ++k) {  // eq. 5.4
+    if (r.matches_per_object[std::size_t(k)] > best) best = r.matches_per_object[std::size_t(k)], r.object = k;
+  }
+  return r;
+}
+
+}  // namespace novelty::objects

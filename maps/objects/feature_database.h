@@ -1,0 +1,61 @@
+// The feature database of the surprise-driven object learner (thesis 5.1, "Recognition /
+// learning of new object features"): one set of features DF for all known objects, and per
+// feature h and object k the count n_{h,k} of its detections on k. A feature belongs to the
+// object of highest relative frequency
+//   p_{h,k} = n_{h,k} / Σ_k n_{h,k}                                           (eq. 5.3)
+// Recognition counts, per object, the database features that a selected feature matches
+// (ratio_matches.h, 0.65) — N_k for the most probable object of each matched feature — and
+// names the object of most matches
+//   c = argmax_k N_k                                                           (eq. 5.4)
+// and each match adds 1 to n_{h,M} of its feature's most probable object M. New features enter
+// with n = 1 for the object they were learnt on and 0 for the others (eq. 5.6, 5.7). As written,
+// a feature's counts grow on its most probable object only, so p_{h,k} stays 1 for the object it
+// was learnt on; it would differ if one descriptor were learnt on two objects.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <utility>
+#include <vector>
+
+#include "maps/objects/ratio_matches.h"
+
+namespace novelty::objects {
+
+class FeatureDatabase {
+ public:
+  struct Recognition {
+    std::vector<int> matches_per_object;  ///< N_k, one per known object
+    int object = -1;                      ///< c of eq. 5.4; −1 if every N_k is 0
+    std::vector<RatioMatch> matches;      ///< reference = database feature h, candidate = selected
+  };
+
+  int objects() const { return objects_; }
+  int features() const { return descriptors_.rows; }
+  const cv::Mat& descriptors() const { return descriptors_; }
+
+  /// A new object class v (eq. 5.5 decided that one is needed); returns its index.
+  int AddObject() { return objects_++; }
+  /// Adds the rows of `descriptors` (CV_32F, the database's width) as features learnt on
+  /// `object` (eq. 5.6, 5.7). Throws std::invalid_argument for an unknown object or bad rows.
+  void AddFeatures(const cv::Mat& descriptors, int object);
+
+  /// Matches the selected features' descriptors against the database and updates the counts
+  /// (eq. 5.4 and the n_{h,M} increments). `ratio`: the thesis's 0.65.
+  Recognition Recognize(const cv::Mat& selected, double ratio = 0.65);
+
+  /// n_{h,k}.
+  int Count(int h, int k) const;
+  /// p_{h,k} of eq. 5.3.
+  double RelativeFrequency(int h, int k) const;
+  /// The object of highest p_{h,k} (the lowest index among equals).
+  int MostProbableObject(int h) const;
+
+ private:
+  void CheckFeature(int h) const;
+
+  cv::Mat descriptors_;                               // DF, one row per feature
+  std::vector<std::vector<std::pair<int, int>>> n_;   // per feature: (object, n_{h,k} > 0)
+  int objects_ = 0;
+};
+
+}  // namespace novelty::objects

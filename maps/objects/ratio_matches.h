@@ -1,0 +1,25 @@
+// The thesis's descriptor match (5.1): a reference feature matches the candidate whose descriptor
+// is nearest (Euclidean), if the second-nearest candidate is farther by a factor: d1 ≤ ratio·d2
+// (ratio 0.65 in the thesis). Used against the database, the active features and the other
+// camera's features alike.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace novelty::objects {
+
+struct RatioMatch {
+  int reference = -1;  ///< row of `reference`
+  int candidate = -1;  ///< row of `candidates`
+  float distance = 0.0f;
+};
+
+/// For each row of `reference` (CV_32F, one descriptor per row), its match among the rows of
+/// `candidates` (same type and width), if any. A single candidate cannot pass a ratio test and
+/// matches nothing. Throws std::invalid_argument for mismatched descriptors or a ratio outside
+/// (0, 1].
+std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& candidates,
+                                     double ratio = 0.65);
+
+}  // namespace novelty::objects

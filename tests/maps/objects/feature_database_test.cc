@@ -1,0 +1,87 @@
+#include "maps/objects/feature_database.h"
+
+#include <gtest/gtest.h>
+
+#include "maps/objects/ratio_matches.h"
+
+namespace novelty::objects {
+namespace {
+
+// n random unit descriptors of width 64, far apart from each other (random directions in 64-D).
+cv::Mat Descriptors(int n, unsigned seed) {
+  cv::Mat d(n, 64, CV_32F);
+  cv::RNG(seed).fill(d, cv::RNG::NORMAL, 0.0, 1.0);
+  for (int i = 0; i < n; ++i) cv::normalize(d.row(i), d.row(i));
+  return d;
+}
+
+// `d` with each row moved by noise of standard deviation `sigma` per component.
+cv::Mat Perturbed(const cv::Mat& d, double sigma, unsigned seed) {
+  cv::Mat noise(d.size(), CV_32F);
+  cv::RNG(seed).fill(noise, cv::RNG::NORMAL, 0.0, sigma);
+  return d + noise;
+}
+
+TEST(RatioMatches, NearestWithinTheRatioOnly) {
+  cv::Mat candidates = Descriptors(3, 1);
+  cv::Mat reference(3, 64, CV_32F);
+  candidates.row(0).copyTo(reference.row(0));  // exact: d1 = 0
+  reference.row(1) = 0.5f * (candidates.row(1) + candidates.row(2));  // halfway: d1 ≈ d2
+  Descriptors(1, 2).copyTo(reference.row(2));  // unrelated: d1 ≈ d2
+  const std::vector<RatioMatch> m = RatioMatches(reference, candidates, 0.65);
+  ASSERT_EQ(m.size(), 1u);
+  EXPECT_EQ(m[0].reference, 0);
+  EXPECT_EQ(m[0].candidate, 0);
+  EXPECT_TRUE(RatioMatches(reference, candidates.row(0), 0.65).empty()) << "one candidate";
+  EXPECT_THROW(RatioMatches(reference, candidates, 0.0), std::invalid_argument);
+  EXPECT_THROW(RatioMatches(reference, candidates.colRange(0, 32).clone(), 0.65),
+               std::invalid_argument);
+}
+
+TEST(FeatureDatabase, CountsFollowEquations53To57) {
+  FeatureDatabase db;
+  const cv::Mat cup = Descriptors(10, 3), box = Descriptors(6, 4);
+  const int c0 = db.AddObject(), c1 = db.AddObject();
+  db.AddFeatures(cup, c0);  // eq. 5.6
+  db.AddFeatures(box, c1);
+  EXPECT_EQ(db.features(), 16);
+  EXPECT_EQ(db.Count(0, c0), 1);
+  EXPECT_EQ(db.Count(0, c1), 0);
+  EXPECT_DOUBLE_EQ(db.RelativeFrequency(12, c1), 1.0);  // eq. 5.3
+  EXPECT_EQ(db.MostProbableObject(12), c1);
+
+  // A view of the cup: 7 of its features (slightly changed) and 5 clutter features.
+  cv::Mat selected;
+  selected.push_back(Perturbed(cup.rowRange(0, 7), 0.02, 5));
+  selected.push_back(Descriptors(5, 6));
+  const FeatureDatabase::Recognition r = db.Recognize(selected);
+  EXPECT_EQ(r.matches_per_object, (std::vector<int>{7, 0}));  // N_k
+  EXPECT_EQ(r.object, c0);                                     // eq. 5.4
+  for (const RatioMatch& m : r.matches) EXPECT_EQ(m.candidate, m.reference);
+  for (int h = 0; h < 7; ++h) EXPECT_EQ(db.Count(h, c0), 2) << "n_{h,M} += 1 per match";
+  for (int h = 7; h < 10; ++h) EXPECT_EQ(db.Count(h, c0), 1);
+
+  // Learnt on a recognised object (eq. 5.7): n = 1 for c.
+  db.AddFeatures(Descriptors(2, 7), r.object);
+  EXPECT_EQ(db.Count(16, c0), 1);
+  EXPECT_EQ(db.Count(17, c1), 0);
+
+  // Nothing known in view: every N_k = 0, no object.
+  const FeatureDatabase::Recognition none = db.Recognize(Descriptors(8, 8));
+  EXPECT_EQ(none.object, -1);
+  EXPECT_EQ(none.matches_per_object, (std::vector<int>{0, 0}));
+}
+
+TEST(FeatureDatabase, BadUseIsRejected) {
+  FeatureDatabase db;
+  EXPECT_THROW(db.AddFeatures(Descriptors(2, 1), 0), std::invalid_argument) << "no object 0";
+  db.AddObject();
+  db.AddFeatures(Descriptors(2, 1), 0);
+  EXPECT_THROW(db.AddFeatures(Descriptors(2, 1).colRange(0, 32).clone(), 0),
+               std::invalid_argument);
+  EXPECT_THROW(db.Count(2, 0), std::out_of_range);
+  EXPECT_EQ(db.Recognize(cv::Mat()).object, -1);
+}
+
+}  // namespace
+}  // namespace novelty::objects

@@ -1,0 +1,74 @@
+#include "maps/objects/focus_of_attention.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+
+namespace novelty::objects {
+namespace {
+
+// Low noise everywhere, a surprising rectangle (an object), a single surprising speck elsewhere.
+cv::Mat Scene(cv::Rect object, float level) {
+  cv::Mat s(120, 160, CV_32F);
+  cv::RNG(4).fill(s, cv::RNG::UNIFORM, 0.0f, 0.5f);
+  s(object).setTo(level);
+  s.at<float>(10, 150) = 100.0f;  // sensor noise, one pixel: the opening removes it
+  return s;
+}
+
+TEST(FocusOfAttention, TheBoxIsTheSurprisingObjectsAndNotTheSpeck) {
+  const cv::Rect object(40, 30, 25, 18);
+  const FocusOfAttention f = FindFocusOfAttention(Scene(object, 20.0f));
+  EXPECT_EQ(f.box, object);
+  EXPECT_TRUE(object.contains(f.seed));
+  EXPECT_EQ(cv::countNonZero(f.region), object.area());
+  // θ_S = μ_S + 2σ_S of the opened map, computed here directly: the object's share a = 450/19200
+  // at 20 and the rest at about 0.25 (uniform 0…0.5, closed then opened: close to its mean).
+  cv::Scalar mean, stddev;
+  cv::meanStdDev(f.surprise, mean, stddev);
+  EXPECT_NEAR(f.threshold, mean[0] + 2 * stddev[0], 1e-9);
+  const double a = double(object.area()) / (120 * 160);
+  EXPECT_NEAR(f.threshold, 20 * a + 0.25 * (1 - a) + 2 * (20 - 0.25) * std::sqrt(a * (1 - a)), 0.2);
+}
+
+TEST(FocusOfAttention, UncoveredPixelsAreLeftOutAndNeverFilled) {
+  const cv::Rect object(40, 30, 25, 18);
+  cv::Mat s = Scene(object, 20.0f);
+  s(cv::Rect(0, 0, 160, 60)).setTo(std::numeric_limits<float>::quiet_NaN());  // top half
+  const FocusOfAttention f = FindFocusOfAttention(s);  // the object lies in the NaN half
+  EXPECT_GE(f.seed.y, 60);
+  EXPECT_GE(f.box.y, 60);
+  const cv::Rect lower(40, 70, 25, 18);
+  s(lower).setTo(30.0f);
+  const FocusOfAttention g = FindFocusOfAttention(s);
+  EXPECT_EQ(g.box, lower);
+  EXPECT_EQ(cv::countNonZero(g.region(cv::Rect(0, 0, 160, 60))), 0);
+}
+
+TEST(FocusOfAttention, TheShareOfASurprisingWindow) {
+  const cv::Rect object(40, 30, 40, 40);
+  const FocusOfAttention f = FindFocusOfAttention(Scene(object, 20.0f));
+  // Windows inside, astride the left border (half), outside; turned by 45° inside.
+  EXPECT_DOUBLE_EQ(SurprisingShare(f, {60, 50}, 20, 0), 1.0);
+  EXPECT_DOUBLE_EQ(SurprisingShare(f, {39.5f, 50}, 20, 0), 0.5);  // [29.5, 49.5) across x = 39.5
+  EXPECT_DOUBLE_EQ(SurprisingShare(f, {120, 100}, 20, 0), 0.0);
+  EXPECT_DOUBLE_EQ(SurprisingShare(f, {60, 50}, 20, float(M_PI / 4)), 1.0);
+  EXPECT_DOUBLE_EQ(SurprisingShare(f, {158, 118}, 20, 0), 0.0) << "outside the image: not surprising";
+}
+
+TEST(FocusOfAttention, BadInputIsRejected) {
+  EXPECT_THROW(FindFocusOfAttention(cv::Mat(10, 10, CV_64F)), std::invalid_argument);
+  FocusOfAttentionOptions o;
+  o.xi = -1;
+  EXPECT_THROW(FindFocusOfAttention(cv::Mat(10, 10, CV_32F, cv::Scalar(1)), o),
+               std::invalid_argument);
+  const FocusOfAttention empty = FindFocusOfAttention(
+      cv::Mat(10, 10, CV_32F, cv::Scalar(std::numeric_limits<float>::quiet_NaN())));
+  EXPECT_TRUE(empty.box.empty());
+  EXPECT_EQ(empty.seed, cv::Point(-1, -1));
+}
+
+}  // namespace
+}  // namespace novelty::objects
