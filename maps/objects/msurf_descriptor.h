@@ -6,8 +6,9 @@
 // 0.15 rad, and the longest sum of the responses within it gives the angle.
 //
 // Descriptor, in the keypoint's frame (rotated by its orientation, units of s): a 24s × 24s
-// square of 4 × 4 sub-regions, each of 9 × 9 samples of Haar responses (side 2s) spaced s, that
-// overlap their neighbours by 2s — the overlap is M-SURF's answer to SURF's boundary effects. The
+// square of 4 × 4 sub-regions, each of 9 × 9 samples of Haar responses (side 2s) spaced s, their
+// centres 5s apart, so that neighbours share samples — the overlap is M-SURF's answer to SURF's
+// boundary effects. The
 // responses d_u, d_v (along and across the orientation) are weighted by a Gaussian of σ = 2.5s
 // centred on their sub-region; each sub-region contributes (Σd_u, Σd_v, Σ|d_u|, Σ|d_v|) weighted
 // by a Gaussian of σ = 1.5 (in sub-regions) centred on the square. 64 values, unit length.
