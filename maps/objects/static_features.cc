@@ -14,7 +14,7 @@ std::vector<int> StaticFeatures(const std::vector<cv::KeyPoint>& keypoints,
                                 " keypoints but " + std::to_string(descriptors.rows) +
                                 " descriptors");
   for (const ActiveFeature& g : active) {
-    if (g.descriptor.cols != descriptors.cols || g.stereo_match.cols != descriptors.cols)
+    if (g.descriptor.cols != descriptors.cols)
       throw std::invalid_argument("StaticFeatures: an active feature's descriptors are " +
                                   std::to_string(g.descriptor.cols) + " wide, not " +
                                   std::to_string(descriptors.cols));
@@ -29,7 +29,7 @@ std::vector<int> StaticFeatures(const std::vector<cv::KeyPoint>& keypoints,
     if (p.z() <= 0.0) continue;
     const Eigen::Vector2d uv = camera.Project(p);
     projected.emplace_back(uv.x(), uv.y());
-    bound.push_back(cv::norm(g.descriptor, g.stereo_match, cv::NORM_L2));
+    bound.push_back(g.max_descriptor_change);
     visible.push_back(&g);
   }
   std::vector<int> out;

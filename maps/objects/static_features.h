@@ -21,8 +21,10 @@ namespace novelty::objects {
 /// A feature whose 3-D position is known (thesis: an active feature).
 struct ActiveFeature {
   Eigen::Vector3d p_world = Eigen::Vector3d::Zero();
-  cv::Mat descriptor;    ///< d_g, 1 × n CV_32F
-  cv::Mat stereo_match;  ///< d_m, 1 × n CV_32F: its match in the other camera
+  cv::Mat descriptor;  ///< d_g, 1 × n CV_32F
+  /// ‖d_g − d_m‖ of eq. 5.2, d_m its match in the other camera when it was reconstructed: how
+  /// far its descriptor may move and the feature still count as static.
+  double max_descriptor_change = 0.0;
 };
 
 /// Indices of the selected features (keypoints and descriptors, one row each) that are static

@@ -25,10 +25,8 @@ TEST(StaticFeatures, Equations51And52) {
   for (int g = 0; g < 2; ++g) {
     active[std::size_t(g)].p_world = T_world_cam * in_cam[g];
     active[std::size_t(g)].descriptor = Unit(10 + g);
-    // Its stereo match: 0.3 away from it in descriptor space.
-    cv::Mat d_m = active[std::size_t(g)].descriptor.clone();
-    d_m.at<float>(0) += 0.3f;
-    active[std::size_t(g)].stereo_match = d_m;
+    // Its stereo match was 0.3 away from it in descriptor space.
+    active[std::size_t(g)].max_descriptor_change = 0.3;
     const Eigen::Vector2d uv = camera.Project(in_cam[g]);
     at[g] = cv::Point2f(float(uv.x()), float(uv.y()));
   }
@@ -46,7 +44,7 @@ TEST(StaticFeatures, Equations51And52) {
   add(at[0] + cv::Point2f(1.2f, -1.0f), near_descriptor(0, 0.1f));  // 0: static (1.56 px, 0.1 ≤ 0.3)
   add(at[0] + cv::Point2f(2.5f, 0.0f), near_descriptor(0, 0.1f));   // 1: too far (eq. 5.1)
   add(at[1] + cv::Point2f(0.5f, 0.5f), near_descriptor(1, 0.4f));   // 2: descriptor moved (eq. 5.2)
-  add(at[1] + cv::Point2f(-0.5f, 0.0f), near_descriptor(1, 0.3f));  // 3: static, at the bound
+  add(at[1] + cv::Point2f(-0.5f, 0.0f), near_descriptor(1, 0.29f));  // 3: static, just within
   add(at[1], Unit(99));                                              // 4: another feature there
   EXPECT_EQ(StaticFeatures(keypoints, descriptors, active, camera, T_world_cam, 2.0),
             (std::vector<int>{0, 3}));

@@ -1,0 +1,104 @@
+#include "maps/objects/object_learner.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "maps/objects/ratio_matches.h"
+
+namespace novelty::objects {
+
+ObjectLearner::ObjectLearner(const ObjectLearnerOptions& options) : options_(options) {
+  if (!(options.static_distance_px > 0.0) || !(options.match_ratio > 0.0 && options.match_ratio <= 1.0) ||
+      !(options.min_surprising_share >= 0.0 && options.min_surprising_share <= 1.0) ||
+      !(options.window_per_scale > 0.0) || !(options.size_per_scale > 0.0) ||
+      options.forget_after_frames < 1)
+    throw std::invalid_argument("ObjectLearnerOptions: static_distance_px > 0, match_ratio in "
+                                "(0, 1], min_surprising_share in [0, 1], window_per_scale > 0, "
+                                "size_per_scale > 0, forget_after_frames >= 1");
+}
+
+LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
+                                   const SelectedFeatures& f,
+                                   const core::PinholeCamera& camera,
+                                   const Eigen::Isometry3d& T_world_cam) {
+  const std::size_t n = f.keypoints.size();
+  if (int(n) != f.descriptors.rows || f.p_cam.size() != n || f.max_descriptor_change.size() != n)
+    throw std::invalid_argument("ObjectLearner::Process: " + std::to_string(n) + " keypoints, " +
+                                std::to_string(f.descriptors.rows) + " descriptors, " +
+                                std::to_string(f.p_cam.size()) + " positions, " +
+                                std::to_string(f.max_descriptor_change.size()) + " bounds");
+  LearnerStep step;
+  step.selected = int(n);
+  if (n == 0) {  // nothing in the focus: the object may have gone
+    if (++frames_without_features_ >= options_.forget_after_frames) {
+      active_.clear();
+      learning_object_ = -1;
+    }
+    step.matches_per_object.assign(std::size_t(database_.objects()), 0);
+    step.active = int(active_.size());
+    return step;
+  }
+  frames_without_features_ = 0;
+
+  // 1. Static features (eq. 5.1, 5.2), and which of them lie mostly on surprise (eq. 5.5).
+  const std::vector<int> statics = StaticFeatures(f.keypoints, f.descriptors, active_, camera,
+                                                  T_world_cam, options_.static_distance_px);
+  step.static_features = int(statics.size());
+  std::vector<int> on_surprise;
+  for (int i : statics) {
+    const cv::KeyPoint& k = f.keypoints[std::size_t(i)];
+    const float window = float(options_.window_per_scale * k.size / options_.size_per_scale);
+    if (SurprisingShare(focus, k.pt, window, float(k.angle * M_PI / 180.0)) >
+        options_.min_surprising_share)
+      on_surprise.push_back(i);
+  }
+
+  // 2. Recognition: the database first (eq. 5.4), then the active features.
+  const FeatureDatabase::Recognition r = database_.Recognize(f.descriptors, options_.match_ratio);
+  step.matches_per_object = r.matches_per_object;
+  std::vector<bool> in_database(n, false);
+  for (const RatioMatch& m : r.matches) in_database[std::size_t(m.candidate)] = true;
+  if (r.object >= 0) {
+    step.recognised = LearnerStep::Recognised::kByDatabase;
+    step.object = r.object;
+  } else {
+    cv::Mat active_descriptors;
+    for (const ActiveFeature& g : active_) active_descriptors.push_back(g.descriptor);
+    const bool by_active =
+        !RatioMatches(active_descriptors, f.descriptors, options_.match_ratio).empty();
+    if (by_active && learning_object_ >= 0) {
+      step.recognised = LearnerStep::Recognised::kByActiveFeatures;
+      step.object = learning_object_;
+    } else if (!on_surprise.empty()) {  // an unknown object (eq. 5.5): a new class
+      step.recognised = LearnerStep::Recognised::kNewObject;
+      step.object = database_.AddObject();
+    } else if (by_active) {
+      step.recognised = LearnerStep::Recognised::kByActiveFeatures;  // not yet a class to learn
+    }
+  }
+
+  // 3. Learning (eq. 5.6, 5.7): static features on surprise that the database does not hold.
+  if (step.object >= 0) {
+    cv::Mat learnt;
+    for (int i : on_surprise)
+      if (!in_database[std::size_t(i)]) learnt.push_back(f.descriptors.row(i));
+    if (!learnt.empty()) database_.AddFeatures(learnt, step.object);
+    step.learnt = learnt.rows;
+    learning_object_ = step.object;
+  }
+
+  // 4. New active features: reconstructed, neither static nor in the database.
+  std::vector<bool> is_static(n, false);
+  for (int i : statics) is_static[std::size_t(i)] = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (is_static[i] || in_database[i] || !f.p_cam[i]) continue;
+    active_.push_back({T_world_cam * *f.p_cam[i], f.descriptors.row(int(i)).clone(),
+                       f.max_descriptor_change[i]});
+    ++step.new_active;
+  }
+  step.active = int(active_.size());
+  return step;
+}
+
+}  // namespace novelty::objects

@@ -1,0 +1,140 @@
+#include "maps/objects/object_learner.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+namespace novelty::objects {
+namespace {
+
+const core::PinholeCamera kCamera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
+
+// Camera t of a slow pass: 1 cm to the right per frame, looking along +Z of the world.
+Eigen::Isometry3d Pose(int t) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = Eigen::Vector3d(0.01 * t, 0.0, 0.0);
+  return T;
+}
+
+// A thing made of feature points (world), each with its own descriptor.
+struct Thing {
+  std::vector<Eigen::Vector3d> points;
+  cv::Mat descriptors;
+};
+
+Thing MakeThing(Eigen::Vector3d centre, double half, int n, unsigned seed) {
+  Thing t;
+  cv::RNG rng(seed);
+  for (int i = 0; i < n; ++i) {
+    t.points.push_back(centre + Eigen::Vector3d(rng.uniform(-half, half), rng.uniform(-half, half), 0));
+    cv::Mat d(1, 64, CV_32F);
+    rng.fill(d, cv::RNG::NORMAL, 0.0, 1.0);
+    cv::normalize(d, d);
+    t.descriptors.push_back(d);
+  }
+  return t;
+}
+
+// What frame t selects of `things`: their projections (size 20 = scale 2, so a 48 px window),
+// descriptors with a little noise, 3-D positions from the camera, and a bound of 0.3.
+SelectedFeatures See(const std::vector<const Thing*>& things, int t, unsigned noise_seed) {
+  SelectedFeatures f;
+  cv::RNG rng(noise_seed + unsigned(t));
+  const Eigen::Isometry3d cam_from_world = Pose(t).inverse();
+  for (const Thing* thing : things) {
+    for (std::size_t i = 0; i < thing->points.size(); ++i) {
+      const Eigen::Vector3d p = cam_from_world * thing->points[i];
+      const Eigen::Vector2d uv = kCamera.Project(p);
+      f.keypoints.emplace_back(cv::Point2f(float(uv.x()), float(uv.y())), 20.0f, 0.0f);
+      cv::Mat noise(1, 64, CV_32F);
+      rng.fill(noise, cv::RNG::NORMAL, 0.0, 0.005);
+      f.descriptors.push_back(cv::Mat(thing->descriptors.row(int(i)) + noise));
+      f.p_cam.push_back(p);
+      f.max_descriptor_change.push_back(0.3);
+    }
+  }
+  return f;
+}
+
+// A surprise map high over the box around `thing`'s projection in frame t (and 48 px beyond it,
+// so that windows of its features lie on surprise), low noise elsewhere.
+FocusOfAttention Focus(const Thing& thing, int t) {
+  cv::Mat s(240, 320, CV_32F);
+  cv::RNG(t).fill(s, cv::RNG::UNIFORM, 0.0f, 0.5f);
+  cv::Rect box;
+  const Eigen::Isometry3d cam_from_world = Pose(t).inverse();
+  for (const Eigen::Vector3d& p : thing.points) {
+    const Eigen::Vector2d uv = kCamera.Project(cam_from_world * p);
+    box |= cv::Rect(int(uv.x()) - 30, int(uv.y()) - 30, 60, 60);
+  }
+  s(box & cv::Rect(0, 0, 320, 240)).setTo(20.0f);
+  return FindFocusOfAttention(s);
+}
+
+TEST(ObjectLearner, LearnsAStaticObjectOnceAndThenRecognisesIt) {
+  const Thing cup = MakeThing({0.05, 0.0, 1.0}, 0.05, 25, 1);
+  ObjectLearner learner;
+  // Frame 0: nothing known, nothing active: the features become active.
+  LearnerStep s = learner.Process(Focus(cup, 0), See({&cup}, 0, 100), kCamera, Pose(0));
+  EXPECT_EQ(s.recognised, LearnerStep::Recognised::kNothing);
+  EXPECT_EQ(s.static_features, 0);
+  EXPECT_EQ(s.new_active, 25);
+  // Frame 1: they reproject where they are seen (eq. 5.1, 5.2): static, on surprise, a new object.
+  s = learner.Process(Focus(cup, 1), See({&cup}, 1, 100), kCamera, Pose(1));
+  EXPECT_EQ(s.static_features, 25);
+  EXPECT_EQ(s.recognised, LearnerStep::Recognised::kNewObject);
+  EXPECT_EQ(s.object, 0);
+  EXPECT_EQ(s.learnt, 25);
+  EXPECT_EQ(learner.database().features(), 25);
+  // Frame 2: recognised from the database, nothing learnt twice.
+  s = learner.Process(Focus(cup, 2), See({&cup}, 2, 100), kCamera, Pose(2));
+  EXPECT_EQ(s.recognised, LearnerStep::Recognised::kByDatabase);
+  EXPECT_EQ(s.object, 0);
+  EXPECT_EQ(s.matches_per_object, std::vector<int>{25});
+  EXPECT_EQ(s.learnt, 0);
+  EXPECT_EQ(learner.database().features(), 25);
+  EXPECT_EQ(learner.database().Count(0, 0), 2);  // n_{h,M} += 1 (frame 2's match)
+}
+
+TEST(ObjectLearner, FeaturesOffTheirSurpriseAreNotLearnt) {
+  const Thing cup = MakeThing({0.05, 0.0, 1.0}, 0.05, 25, 1);
+  ObjectLearner learner;
+  // The surprise covers another place: the cup's windows lie on background (ρ_S ≤ T).
+  const Thing elsewhere = MakeThing({-0.3, 0.15, 1.0}, 0.02, 5, 2);
+  for (int t = 0; t < 3; ++t)
+    learner.Process(Focus(elsewhere, t), See({&cup}, t, 100), kCamera, Pose(t));
+  EXPECT_EQ(learner.database().objects(), 0);
+}
+
+TEST(ObjectLearner, AMovingHandIsNeverLearntAndActiveFeaturesAreForgotten) {
+  ObjectLearner learner;
+  for (int t = 0; t < 6; ++t) {
+    // The hand moves 3 cm per frame (about 8 px at 1 m): its features are never static.
+    const Thing hand = MakeThing({-0.1 + 0.03 * t, 0.05, 1.0}, 0.04, 20, 3);
+    const LearnerStep s = learner.Process(Focus(hand, t), See({&hand}, t, 200), kCamera, Pose(t));
+    EXPECT_EQ(s.static_features, 0) << "frame " << t;
+  }
+  EXPECT_EQ(learner.database().objects(), 0);
+  EXPECT_EQ(learner.active().size(), 6u * 20u);
+  // Ten frames with nothing selected: the hand has gone, its features with it.
+  const Thing nothing;
+  for (int t = 6; t < 15; ++t) learner.Process(Focus(MakeThing({0, 0, 1}, 0.01, 1, 4), t),
+                                               See({&nothing}, t, 0), kCamera, Pose(t));
+  EXPECT_EQ(learner.active().size(), 120u) << "nine frames: still kept";
+  learner.Process(Focus(MakeThing({0, 0, 1}, 0.01, 1, 4), 15), See({&nothing}, 15, 0), kCamera,
+                  Pose(15));
+  EXPECT_TRUE(learner.active().empty()) << "the tenth frame drops them";
+}
+
+TEST(ObjectLearner, BadInputIsRejected) {
+  ObjectLearnerOptions o;
+  o.min_surprising_share = 2.0;
+  EXPECT_THROW(ObjectLearner{o}, std::invalid_argument);
+  ObjectLearner learner;
+  SelectedFeatures f;
+  f.keypoints.resize(2);
+  EXPECT_THROW(learner.Process(FocusOfAttention(), f, kCamera, Pose(0)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace novelty::objects
