@@ -1,0 +1,35 @@
+// Added or removed (thesis 5.3 and its outlook): surprise says that a region changed, not how.
+// An object put down is nearer to the camera than what the map predicts there; an object taken
+// away leaves the farther background it hid. The region's observed mean depth against the mean
+// depth the map predicts for the same pixels tells them apart — so that the learner learns the
+// added object and never the background a removed one uncovers.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+namespace novelty::objects {
+
+enum class ChangeKind { kUnknown, kAdded, kRemoved };
+
+struct ChangeKindOptions {
+  /// The means must differ by at least this fraction of the predicted depth: 5 % is about three
+  /// times the RGB-D sensor's depth noise at 1–2 m and above the stereo depth's typical 3 %.
+  double min_relative_difference = 0.05;
+  /// At least this share of the region's pixels must have both depths, else kUnknown.
+  double min_known_share = 0.5;
+};
+
+struct ChangeClassification {
+  ChangeKind kind = ChangeKind::kUnknown;
+  double observed_depth = 0.0;   ///< mean over the pixels with both depths (m)
+  double predicted_depth = 0.0;  ///< mean of the map's prediction there (m)
+  double known_share = 0.0;      ///< share of the region's pixels with both depths
+};
+
+/// `region`: CV_8U, non-zero where the change is (FocusOfAttention::region); depths CV_32F in
+/// metres, 0 or NaN unknown. Throws std::invalid_argument for other types or sizes.
+ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observed_depth,
+                                    const cv::Mat& predicted_depth,
+                                    const ChangeKindOptions& options = {});
+
+}  // namespace novelty::objects

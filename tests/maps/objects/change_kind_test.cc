@@ -1,0 +1,51 @@
+#include "maps/objects/change_kind.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace novelty::objects {
+namespace {
+
+// A table at 1.5 m; the region a 40 × 30 patch of it.
+struct Scene {
+  cv::Mat region = cv::Mat::zeros(120, 160, CV_8U);
+  cv::Mat predicted = cv::Mat(120, 160, CV_32F, cv::Scalar(1.5f));
+  Scene() { region(cv::Rect(50, 40, 40, 30)).setTo(255); }
+};
+
+TEST(ChangeKind, NearerIsAddedFartherIsRemoved) {
+  Scene s;
+  cv::Mat observed = s.predicted.clone();
+  observed(cv::Rect(50, 40, 40, 30)).setTo(1.38f);  // a cup 12 cm tall on the table: 8 % nearer
+  ChangeClassification c = ClassifyChange(s.region, observed, s.predicted);
+  EXPECT_EQ(c.kind, ChangeKind::kAdded);
+  EXPECT_NEAR(c.observed_depth, 1.38, 1e-6);
+  EXPECT_NEAR(c.predicted_depth, 1.5, 1e-6);
+  // Taken away: the map predicts the cup (1.38 m) and the frame sees the table behind it.
+  c = ClassifyChange(s.region, s.predicted, observed);
+  EXPECT_EQ(c.kind, ChangeKind::kRemoved);
+  // A change of colour only (a lamp, a sheet of paper): same depth.
+  cv::Mat same = s.predicted.clone();
+  same(cv::Rect(50, 40, 40, 30)).setTo(1.49f);
+  EXPECT_EQ(ClassifyChange(s.region, same, s.predicted).kind, ChangeKind::kUnknown);
+}
+
+TEST(ChangeKind, UnknownDepthsCountOnlyWhereBothAreKnown) {
+  Scene s;
+  cv::Mat observed = s.predicted.clone();
+  observed(cv::Rect(50, 40, 40, 30)).setTo(1.3f);
+  observed(cv::Rect(50, 40, 40, 20)).setTo(std::numeric_limits<float>::quiet_NaN());  // 2/3 unknown
+  ChangeClassification c = ClassifyChange(s.region, observed, s.predicted);
+  EXPECT_NEAR(c.known_share, 1.0 / 3.0, 1e-9);
+  EXPECT_EQ(c.kind, ChangeKind::kUnknown) << "too little depth to tell";
+  ChangeKindOptions o;
+  o.min_known_share = 0.3;
+  EXPECT_EQ(ClassifyChange(s.region, observed, s.predicted, o).kind, ChangeKind::kAdded);
+  EXPECT_EQ(ClassifyChange(cv::Mat::zeros(120, 160, CV_8U), observed, s.predicted).kind,
+            ChangeKind::kUnknown);
+  EXPECT_THROW(ClassifyChange(s.region, observed, cv::Mat(10, 10, CV_32F)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace novelty::objects
