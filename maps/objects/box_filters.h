@@ -9,6 +9,11 @@
 
 namespace novelty::objects {
 
+/// The integral image (CV_64F, a row and column more) of an image on the 0…1 scale the
+/// detector's threshold assumes: grey or BGR, CV_8U (0…255, scaled) or CV_32F / CV_64F (0…1).
+/// Throws cv::Exception for other images.
+cv::Mat UnitIntegral(cv::InputArray image);
+
 /// Sum of the image over rows [row, row + rows) and columns [col, col + cols).
 inline double BoxSum(const cv::Mat& integral, int row, int col, int rows, int cols) {
   const int h = integral.rows - 1, w = integral.cols - 1;

@@ -4,6 +4,7 @@
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "maps/objects/box_filters.h"
 #include "maps/objects/msurf_descriptor.h"
 
 namespace novelty::objects {
@@ -12,22 +13,6 @@ namespace {
 
 // The keypoint size for scale s, and back.
 constexpr float kSizePerScale = 10.0f;
-
-cv::Mat IntegralOf(cv::InputArray image) {
-  cv::Mat m = image.getMat(), grey;
-  CV_Assert(!m.empty() && (m.depth() == CV_8U || m.depth() == CV_32F) &&
-            (m.channels() == 1 || m.channels() == 3));
-  if (m.channels() == 3) {
-    cv::cvtColor(m, grey, cv::COLOR_BGR2GRAY);
-  } else {
-    grey = m;
-  }
-  cv::Mat unit;
-  grey.convertTo(unit, CV_64F, grey.depth() == CV_8U ? 1.0 / 255.0 : 1.0);
-  cv::Mat integral;
-  cv::integral(unit, integral, CV_64F);
-  return integral;
-}
 
 }  // namespace
 
@@ -38,7 +23,7 @@ cv::Ptr<MSurf> MSurf::create(const MSurfOptions& options) { return cv::makePtr<M
 void MSurf::detectAndCompute(cv::InputArray image, cv::InputArray mask,
                              std::vector<cv::KeyPoint>& keypoints, cv::OutputArray descriptors,
                              bool use_provided_keypoints) {
-  const cv::Mat integral = IntegralOf(image);
+  const cv::Mat integral = UnitIntegral(image);
   if (!use_provided_keypoints) {
     const cv::Mat m = mask.getMat();
     CV_Assert(m.empty() || (m.type() == CV_8UC1 && m.rows == integral.rows - 1 &&

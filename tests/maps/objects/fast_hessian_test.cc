@@ -6,14 +6,10 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "maps/objects/box_filters.h"
+
 namespace novelty::objects {
 namespace {
-
-cv::Mat Integral(const cv::Mat& unit_image) {
-  cv::Mat integral;
-  cv::integral(unit_image, integral, CV_64F);
-  return integral;
-}
 
 // Bay et al.'s box filters written out pixel by pixel (fig. 1 of the paper, scaled to side L):
 // an independent check of the integral-image arithmetic.
@@ -37,7 +33,7 @@ TEST(FastHessian, BoxFiltersEqualTheFiltersWrittenOut) {
   cv::Mat img(120, 120, CV_64F);
   cv::RNG rng(7);
   rng.fill(img, cv::RNG::UNIFORM, 0.0, 1.0);
-  const cv::Mat integral = Integral(img);
+  const cv::Mat integral = UnitIntegral(img);
   for (int size : {9, 15, 21, 27, 39, 51}) {
     for (int k = 0; k < 20; ++k) {
       const int row = rng.uniform(30, 90), col = rng.uniform(30, 90);
@@ -71,7 +67,7 @@ TEST(FastHessian, FindsABlobAtItsCentreAtAScaleInProportionToItsSize) {
     for (double sigma : sigmas) {
       const double cx = 80.3, cy = 76.6;
       const std::vector<HessianPoint> points =
-          DetectFastHessian(Integral(Blob(cx, cy, sigma, contrast)));
+          DetectFastHessian(UnitIntegral(Blob(cx, cy, sigma, contrast)));
       ASSERT_FALSE(points.empty()) << "σ " << sigma;
       const HessianPoint& p = *std::max_element(
           points.begin(), points.end(),
@@ -89,15 +85,15 @@ TEST(FastHessian, FindsABlobAtItsCentreAtAScaleInProportionToItsSize) {
 }
 
 TEST(FastHessian, AFlatImageHasNoKeypointsAndBadInputIsRejected) {
-  EXPECT_TRUE(DetectFastHessian(Integral(cv::Mat(100, 100, CV_64F, cv::Scalar(0.5)))).empty());
+  EXPECT_TRUE(DetectFastHessian(UnitIntegral(cv::Mat(100, 100, CV_64F, cv::Scalar(0.5)))).empty());
   EXPECT_THROW(DetectFastHessian(cv::Mat(10, 10, CV_32F)), std::invalid_argument);
   FastHessianOptions o;
   o.octaves = 0;
-  EXPECT_THROW(DetectFastHessian(Integral(cv::Mat(100, 100, CV_64F, cv::Scalar(0.5))), o),
+  EXPECT_THROW(DetectFastHessian(UnitIntegral(cv::Mat(100, 100, CV_64F, cv::Scalar(0.5))), o),
                std::invalid_argument);
   o = {};
   o.threshold = std::nan("");
-  EXPECT_THROW(DetectFastHessian(Integral(cv::Mat(100, 100, CV_64F, cv::Scalar(0.5))), o),
+  EXPECT_THROW(DetectFastHessian(UnitIntegral(cv::Mat(100, 100, CV_64F, cv::Scalar(0.5))), o),
                std::invalid_argument);
 }
 

@@ -18,12 +18,6 @@
 namespace novelty::objects {
 namespace {
 
-cv::Mat Integral(const cv::Mat& unit_image) {
-  cv::Mat integral;
-  cv::integral(unit_image, integral, CV_64F);
-  return integral;
-}
-
 // A straight soft edge through (cx, cy), brightening along direction φ: its Haar responses all
 // point along φ, so the orientation is φ.
 TEST(MSurfDescriptor, TheOrientationOfAnEdgeIsItsGradientDirection) {
@@ -33,7 +27,7 @@ TEST(MSurfDescriptor, TheOrientationOfAnEdgeIsItsGradientDirection) {
       for (int x = 0; x < img.cols; ++x)
         img.at<double>(y, x) =
             0.5 + 0.4 * std::tanh(((x - 60.2) * std::cos(phi) + (y - 59.7) * std::sin(phi)) / 2);
-    const float angle = SurfOrientation(Integral(img), {60.2f, 59.7f}, 3.0f);
+    const float angle = SurfOrientation(UnitIntegral(img), {60.2f, 59.7f}, 3.0f);
     EXPECT_NEAR(std::remainder(angle - phi, 2 * M_PI), 0.0, 0.05) << "φ " << phi;
   }
 }
@@ -44,7 +38,7 @@ TEST(MSurfDescriptor, SubPixelHaarResponsesBlendTheIntegerOnes) {
   cv::Mat img(60, 80, CV_64F);
   cv::RNG rng(9);
   rng.fill(img, cv::RNG::UNIFORM, 0.0, 1.0);
-  const cv::Mat integral = Integral(img);
+  const cv::Mat integral = UnitIntegral(img);
   for (int k = 0; k < 200; ++k) {
     const float x = rng.uniform(-3.0f, 83.0f), y = rng.uniform(-3.0f, 63.0f);
     const int size = 2 * rng.uniform(1, 8);
@@ -70,11 +64,11 @@ TEST(MSurfDescriptor, HasUnitLengthAndIsZeroOnAFlatImage) {
   cv::Mat img(100, 100, CV_64F);
   cv::RNG(3).fill(img, cv::RNG::UNIFORM, 0.0, 1.0);
   float d[64];
-  MSurfDescriptor(Integral(img), {50, 50}, 2.0f, 0.7f, d);
+  MSurfDescriptor(UnitIntegral(img), {50, 50}, 2.0f, 0.7f, d);
   double length = 0;
   for (float v : d) length += double(v) * v;
   EXPECT_NEAR(length, 1.0, 1e-5);
-  MSurfDescriptor(Integral(cv::Mat(100, 100, CV_64F, cv::Scalar(0.3))), {50, 50}, 2.0f, 0.0f, d);
+  MSurfDescriptor(UnitIntegral(cv::Mat(100, 100, CV_64F, cv::Scalar(0.3))), {50, 50}, 2.0f, 0.0f, d);
   for (float v : d) EXPECT_EQ(v, 0.0f);
 }
 
@@ -163,17 +157,13 @@ TEST(MSurf, OrientationAndDescriptorFollowRotationAndScale) {
   const cv::Mat a = Photograph(n);
   if (a.empty()) GTEST_SKIP() << "graf/graf1.png of the shared test data is absent";
   const Keypoints ka = Detect(a);
-  cv::Mat a_unit;
-  a.convertTo(a_unit, CV_64F, 1.0 / 255);
   for (const auto& [name, t] : std::vector<std::pair<std::string, Similarity>>{
            {"rotation 30°", Rotation(n, 30)},
            {"rotation 90°", Rotation(n, 90)},
            {"rotation 150°", Rotation(n, 150)},
            {"scale 1/2", {cv::Matx23d(0.5, 0, -0.25, 0, 0.5, -0.25), 0.0, 0.5}}}) {
     const cv::Mat b = Transformed(a, t);
-    cv::Mat b_unit, integral_b;
-    b.convertTo(b_unit, CV_64F, 1.0 / 255);
-    cv::integral(b_unit, integral_b, CV_64F);
+    const cv::Mat integral_b = UnitIntegral(b);
     const std::vector<cv::KeyPoint> from = Transferable(ka, t, b.size());
     std::vector<cv::KeyPoint> to;
     std::vector<double> errors;
