@@ -1,6 +1,7 @@
 #include "maps/objects/msurf.h"
 
 #include <cmath>
+#include <string>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -48,6 +49,13 @@ void MSurf::detectAndCompute(cv::InputArray image, cv::InputArray mask,
     }
   }
   if (!descriptors.needed()) return;
+  for (std::size_t i = 0; i < keypoints.size(); ++i) {  // given keypoints may be anything
+    const cv::KeyPoint& k = keypoints[i];
+    if (!(std::isfinite(k.pt.x) && std::isfinite(k.pt.y) && std::isfinite(k.angle) &&
+          k.size > 0.0f && std::isfinite(k.size)))
+      CV_Error(cv::Error::StsBadArg, "MSurf: keypoint " + std::to_string(i) +
+                                         " has a non-finite position or angle, or no size");
+  }
   descriptors.create(int(keypoints.size()), 64, CV_32F);
   cv::Mat d = descriptors.getMat();
   cv::parallel_for_(cv::Range(0, int(keypoints.size())), [&](const cv::Range& range) {

@@ -28,7 +28,8 @@ class MSurf : public cv::Feature2D {
   /// Grey (CV_8U 0…255 or CV_32F 0…1) or colour (CV_8UC3, BGR as OpenCV reads it) images;
   /// keypoints where `mask` (CV_8U, if given) is non-zero. With use_provided_keypoints, their
   /// descriptors only (scale from size, orientation from angle). Throws cv::Exception for other
-  /// image types, as OpenCV's detectors do.
+  /// image types, as OpenCV's detectors do, and for a given keypoint that is not finite or has
+  /// no size.
   void detectAndCompute(cv::InputArray image, cv::InputArray mask,
                         std::vector<cv::KeyPoint>& keypoints, cv::OutputArray descriptors,
                         bool use_provided_keypoints = false) override;

@@ -284,6 +284,10 @@ TEST(MSurf, MasksAndGivenKeypointsWork) {
   std::vector<cv::KeyPoint> given = all;
   surf->compute(a, given, d_given);
   EXPECT_EQ(cv::norm(d_all, d_given, cv::NORM_INF), 0.0);
+  std::vector<cv::KeyPoint> bad = {cv::KeyPoint({50, 50}, 20), cv::KeyPoint({NAN, 50}, 20)};
+  EXPECT_THROW(surf->compute(a, bad, d_given), cv::Exception);
+  bad = {cv::KeyPoint({50, 50}, 0)};
+  EXPECT_THROW(surf->compute(a, bad, d_given), cv::Exception);
   EXPECT_EQ(surf->descriptorSize(), 64);
   EXPECT_EQ(surf->defaultNorm(), cv::NORM_L2);
 }
