@@ -41,6 +41,22 @@ Layer ComputeLayer(const cv::Mat& integral, int size, int step, int rows, int co
   return l;
 }
 
+// Every second sample of a layer of the octave before: octave o + 1's first two filter sizes are
+// octave o's second and fourth (15 and 27 at o = 0, …), evaluated at every second pixel of it.
+Layer EverySecond(const Layer& finer, int rows, int cols) {
+  Layer l;
+  l.size = finer.size;
+  l.det.create(rows, cols, CV_32F);
+  l.laplacian.create(rows, cols, CV_8S);
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) {
+      l.det.at<float>(r, c) = finer.det.at<float>(2 * r, 2 * c);
+      l.laplacian.at<schar>(r, c) = finer.laplacian.at<schar>(2 * r, 2 * c);
+    }
+  }
+  return l;
+}
+
 bool IsMaximum(const Layer& b, const Layer& m, const Layer& t, int r, int c) {
   const float v = m.det.at<float>(r, c);
   for (const Layer* l : {&b, &m, &t}) {
@@ -107,6 +123,7 @@ std::vector<HessianPoint> DetectFastHessian(const cv::Mat& integral,
                                 "init_step in 1..8");
   const int height = integral.rows - 1, width = integral.cols - 1;
   std::vector<HessianPoint> points;
+  std::vector<Layer> layers;  // this octave's four, after the octave before's
   for (int o = 0; o < options.octaves; ++o) {
     const int step = options.init_step << o;
     const int rows = height / step, cols = width / step;
@@ -114,9 +131,15 @@ std::vector<HessianPoint> DetectFastHessian(const cv::Mat& integral,
     // beyond that.
     const auto bound_of = [&](int i) { return (FilterSize(o, i + 1) + 1) / (2 * step) + 1; };
     if (rows <= 2 * bound_of(1) || cols <= 2 * bound_of(1)) break;
-    std::vector<Layer> layers;
-    for (int i = 0; i < 4; ++i)
-      layers.push_back(ComputeLayer(integral, FilterSize(o, i), step, rows, cols));
+    std::vector<Layer> finer = std::move(layers);
+    layers.clear();
+    for (int i = 0; i < 4; ++i) {
+      if (o > 0 && i < 2) {
+        layers.push_back(EverySecond(finer[std::size_t(2 * i + 1)], rows, cols));
+      } else {
+        layers.push_back(ComputeLayer(integral, FilterSize(o, i), step, rows, cols));
+      }
+    }
     for (int i = 1; i <= 2; ++i) {
       const Layer &b = layers[i - 1], &m = layers[i], &t = layers[i + 1];
       const int bound = bound_of(i);
