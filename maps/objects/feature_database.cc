@@ -51,13 +51,11 @@ FeatureDatabase::Recognition FeatureDatabase::Recognize(const cv::Mat& selected,
   Recognition r;
   r.matches_per_object.assign(std::size_t(objects_), 0);
   r.matches = RatioMatches(descriptors_, selected, ratio);
-  // N_k with each feature's object as it stood before this frame's increments.
-  std::vector<int> owner;
-  for (const RatioMatch& m : r.matches) owner.push_back(MostProbableObject(m.reference));
-  for (std::size_t i = 0; i < r.matches.size(); ++i) {
-    const int k = owner[i];
+  // Each database feature matches at most once, so its increment cannot change another's M.
+  for (const RatioMatch& m : r.matches) {
+    const int k = MostProbableObject(m.reference);
     ++r.matches_per_object[std::size_t(k)];
-    for (auto& entry : n_[std::size_t(r.matches[i].reference)])
+    for (auto& entry : n_[std::size_t(m.reference)])
       if (entry.first == k) ++entry.second;  // n_{h,M} += 1
   }
   int best = 0;
