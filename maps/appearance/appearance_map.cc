@@ -211,8 +211,8 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   // first (a pass more over the frame); without it each tile blends its own rows.
   const std::vector<std::pair<std::string, int>> planes = {{"ab_sigma", 7}, {"tau", 3}};
   const bool floor = options_.warp_sigma_px > 0.0 || options_.learn_warp_sigma;
-  const Prediction prior = floor ? map_.Predict(camera, T_world_cam, planes)
-                                 : map_.PredictDeferred(camera, T_world_cam, planes);
+  const Prediction prior = floor ? map_.Predict(camera, T_world_cam, planes, predict_depth_)
+                                 : map_.PredictDeferred(camera, T_world_cam, planes, predict_depth_);
   const bool learn = options_.learn_warp_sigma && prior.warped;
   const double warp_sigma =
       prior.warped ? std::max(options_.warp_sigma_px, std::sqrt(learnt_warp_variance_)) : 0.0;
@@ -255,6 +255,8 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
 
   AppearanceProducts out;
   out.valid = prior.valid;
+  // A static camera's prediction shares the view's depth, which the update below replaces.
+  out.expected_depth = prior.warped ? prior.depth : prior.depth.clone();
   out.warp_sigma_px = warp_sigma;
   out.selected = prior.selected;
   out.surprise = f.surprise;

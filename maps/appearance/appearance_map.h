@@ -47,6 +47,9 @@ struct AppearanceProducts {
   cv::Mat expected_rgb;  ///< CV_8UC3, the prior's τ in RGB (what the map expects to see)
   cv::Mat uncertainty;   ///< CV_32FC1, Σβ0 of the prior (fig. 4.4d); NaN where not covered
   cv::Mat valid;         ///< CV_8UC1, covered by the map
+  /// CV_32FC1, the depth (m) of the surface the map expects at each pixel, 0 where it expects
+  /// none (Prediction::depth); only with set_predict_depth(true), else empty.
+  cv::Mat expected_depth;
   double warp_sigma_px = 0.0;  ///< s of the prior's floor in this frame (0: none)
   std::vector<int> selected;
   ViewBasedMap::UpdateResult update;
@@ -66,6 +69,11 @@ class AppearanceMap {
 
   const views::ReferenceViewStore& store() const { return map_.store(); }
   const AppearanceMapOptions& options() const { return options_; }
+  /// Whether Insert also gives the expected depth (AppearanceProducts::expected_depth), for a
+  /// consumer that tells added from removed objects (objects/change_kind.h). Not an option of
+  /// the map and not saved: whoever reads the product asks for it.
+  void set_predict_depth(bool on) { predict_depth_ = on; }
+  bool predict_depth() const { return predict_depth_; }
   /// Throws std::invalid_argument naming the view and plane unless every view holds valid
   /// parameters: α, β, σ finite and > 0, τ finite (for maps read from files).
   void CheckStoredPlanes() const;
@@ -86,6 +94,7 @@ class AppearanceMap {
   // s² learnt so far (learn_warp_sigma). Not saved with the map: a loaded map learns it again
   // within a few frames, and a different pose source may follow.
   double learnt_warp_variance_ = 0.0;
+  bool predict_depth_ = false;
   // A frame runs in row tiles on all cores (appearance_map.cc): each tile converts its rows of
   // the frame and of the prior into small planes that stay in cache through the kernel, and
   // writes its rows of the products and of the posterior to be stored, always new images.

@@ -33,6 +33,28 @@ struct Prediction::Blend {
   std::vector<views::BlendResult> results;
 };
 
+namespace {
+
+// Prediction::depth: per pixel the first warp (in selection order) that covers it.
+cv::Mat FirstCoveringDepth(const std::vector<views::WarpField>& warps,
+                           const core::PinholeCamera& camera) {
+  cv::Mat depth = cv::Mat::zeros(camera.height, camera.width, CV_32FC1);
+  for (int y = 0; y < depth.rows; ++y) {
+    float* out = depth.ptr<float>(y);
+    for (const views::WarpField& w : warps) {
+      if (w.depth.empty())
+        throw std::invalid_argument(
+            "ViewBasedMap: a prediction with depth needs warps with depth (WarpOutputs::depth)");
+      const float* d = w.depth.ptr<float>(y);
+      for (int x = 0; x < depth.cols; ++x)
+        if (out[x] == 0.0f && d[x] > 0.0f) out[x] = d[x];
+    }
+  }
+  return depth;
+}
+
+}  // namespace
+
 void Prediction::BlendRows(const cv::Range& rows) const {
   if (!blend_) return;
   for (std::size_t k = 0; k < blend_->planes.size(); ++k) {
@@ -53,8 +75,9 @@ views::MeshPlan ViewBasedMap::PlanMesh(const cv::Mat& depth) const {
 
 Prediction ViewBasedMap::Predict(const core::PinholeCamera& camera,
                                  const Eigen::Isometry3d& T_world_cam,
-                                 const std::vector<std::pair<std::string, int>>& names) {
-  Prediction p = PredictDeferred(camera, T_world_cam, names);
+                                 const std::vector<std::pair<std::string, int>>& names,
+                                 bool with_depth) {
+  Prediction p = PredictDeferred(camera, T_world_cam, names, with_depth);
   if (!p.complete()) {
     cv::parallel_for_(cv::Range(0, camera.height),
                       [&](const cv::Range& rows) { p.BlendRows(rows); });
@@ -65,7 +88,8 @@ Prediction ViewBasedMap::Predict(const core::PinholeCamera& camera,
 
 Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
                                          const Eigen::Isometry3d& T_world_cam,
-                                         const std::vector<std::pair<std::string, int>>& names) {
+                                         const std::vector<std::pair<std::string, int>>& names,
+                                         bool with_depth) {
   Prediction p;
   const views::ViewSelection selection =
       views::SelectViewsForRays(store_.Poses(), camera, T_world_cam, options_.selection);
@@ -78,6 +102,7 @@ Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
       m.reshape(1).setTo(std::numeric_limits<float>::quiet_NaN());  // Scalar: ≤ 4 channels
     }
     p.valid = cv::Mat::zeros(camera.height, camera.width, CV_8UC1);
+    if (with_depth) p.depth = cv::Mat::zeros(camera.height, camera.width, CV_32FC1);
     return p;
   }
   // A camera exactly at a reference view (a static camera) needs no warp: the view's own
@@ -89,6 +114,7 @@ Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
     p.selected = {j};
     for (std::size_t k = 0; k < names.size(); ++k) p.value[k] = v.planes.at(names[k].first);
     p.valid = cv::Mat(camera.height, camera.width, CV_8UC1, cv::Scalar(255));
+    if (with_depth) p.depth = v.depth;  // shared, as the planes: read only
     return p;
   }
   std::vector<views::SourceView> sources;
@@ -111,8 +137,14 @@ Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
     std::atomic_thread_fence(std::memory_order_acquire);
   }
   Prediction::Blend& b = *last_blend_;
+  if (with_depth && !warper_.outputs().depth) {  // from now on: a caller reads it every frame
+    views::WarpOutputs outputs = warper_.outputs();
+    outputs.depth = true;
+    warper_.set_outputs(outputs);
+  }
   warper_.WarpMany(sources, camera, T_world_cam, b.warps);
   p.warped = true;
+  if (with_depth) p.depth = FirstCoveringDepth(b.warps, camera);
   b.options = options_.blend;
   if (b.options.weights.empty()) b.options.weights = selection.Weights(options_.selection);
   b.results.resize(std::max(b.results.size(), names.size()));

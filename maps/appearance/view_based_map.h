@@ -61,6 +61,10 @@ class Prediction {
   std::vector<cv::Mat> value;
   cv::Mat valid;        ///< CV_8UC1, 255 where a view covers; as `value`, filled by BlendRows
   bool warped = false;  ///< views were warped (not an empty map, not a static camera)
+  /// If asked for (`with_depth`): CV_32FC1, per pixel the depth (+Z, m) of the surface the map
+  /// predicts there — that of the first selected view (best for the central ray first) whose
+  /// warp covers the pixel; 0 where none does. Complete at once, blended or not.
+  cv::Mat depth;
 
   /// True when nothing is left to blend (an empty map, a static camera, or a Predict).
   bool complete() const { return blend_ == nullptr; }
@@ -83,13 +87,15 @@ class ViewBasedMap {
   /// The planes `names` (with their channel counts) predicted at `T_world_cam`, complete: one
   /// warp per selected view serves every plane. An empty map predicts nothing: all invalid.
   Prediction Predict(const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
-                     const std::vector<std::pair<std::string, int>>& names);
+                     const std::vector<std::pair<std::string, int>>& names,
+                     bool with_depth = false);
   /// As Predict, but the prediction is returned with its blend still to do (Prediction::
   /// BlendRows), unless it needs none. The map reuses the previous prediction's buffers when
   /// its caller has let it go.
   Prediction PredictDeferred(const core::PinholeCamera& camera,
                              const Eigen::Isometry3d& T_world_cam,
-                             const std::vector<std::pair<std::string, int>>& names);
+                             const std::vector<std::pair<std::string, int>>& names,
+                             bool with_depth = false);
 
   /// The mesh plan (mesh_plan.h) this map's warps use for `depth`: a caller may make it for the
   /// frame it is about to Update with, beside other work, instead of the next warp making it.

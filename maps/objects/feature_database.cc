@@ -1,11 +1,13 @@
 #include "maps/objects/feature_database.h"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace novelty::objects {
 
-void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object) {
+void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
+                                  const std::vector<Eigen::Vector3d>& positions) {
   if (object < 0 || object >= objects_)
     throw std::invalid_argument("FeatureDatabase::AddFeatures: object " + std::to_string(object) +
                                 " of " + std::to_string(objects_));
@@ -14,8 +16,50 @@ void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object) {
       (!descriptors_.empty() && descriptors.cols != descriptors_.cols))
     throw std::invalid_argument("FeatureDatabase::AddFeatures: descriptors must be CV_32F rows of "
                                 "the database's width");
+  if (!positions.empty() && int(positions.size()) != descriptors.rows)
+    throw std::invalid_argument("FeatureDatabase::AddFeatures: " +
+                                std::to_string(positions.size()) + " positions for " +
+                                std::to_string(descriptors.rows) + " descriptors");
   descriptors_.push_back(descriptors);
-  for (int i = 0; i < descriptors.rows; ++i) n_.push_back({{object, 1}});  // eq. 5.6, 5.7
+  for (int i = 0; i < descriptors.rows; ++i) {
+    n_.push_back({{object, 1}});  // eq. 5.6, 5.7
+    positions_.push_back(positions.empty() ? Eigen::Vector3d::Constant(
+                                                 std::numeric_limits<double>::quiet_NaN())
+                                           : positions[std::size_t(i)]);
+  }
+}
+
+FeatureDatabase FeatureDatabase::FromParts(int objects, const cv::Mat& descriptors,
+                                           const Counts& counts,
+                                           const std::vector<Eigen::Vector3d>& positions) {
+  const auto fail = [](const std::string& what) {
+    throw std::invalid_argument("feature database: " + what);
+  };
+  if (objects < 0) fail("a negative object count");
+  if (!descriptors.empty() && descriptors.type() != CV_32FC1) fail("descriptors are not CV_32F");
+  const std::size_t n = std::size_t(descriptors.rows);
+  if (counts.size() != n || positions.size() != n)
+    fail(std::to_string(n) + " descriptors, " + std::to_string(counts.size()) + " count lists, " +
+         std::to_string(positions.size()) + " positions");
+  for (std::size_t h = 0; h < n; ++h) {
+    if (counts[h].empty()) fail("feature " + std::to_string(h) + " belongs to no object");
+    for (const auto& [object, count] : counts[h])
+      if (object < 0 || object >= objects || count < 1)
+        fail("feature " + std::to_string(h) + ": count " + std::to_string(count) + " on object " +
+             std::to_string(object) + " of " + std::to_string(objects));
+  }
+  if (!descriptors.empty() && !cv::checkRange(descriptors)) fail("a descriptor is not finite");
+  FeatureDatabase db;
+  db.objects_ = objects;
+  db.descriptors_ = descriptors.clone();
+  db.n_ = counts;
+  db.positions_ = positions;
+  return db;
+}
+
+const Eigen::Vector3d& FeatureDatabase::Position(int h) const {
+  CheckFeature(h);
+  return positions_[std::size_t(h)];
 }
 
 void FeatureDatabase::CheckFeature(int h) const {

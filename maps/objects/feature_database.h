@@ -13,10 +13,12 @@
 // was learnt on; it would differ if one descriptor were learnt on two objects.
 #pragma once
 
+#include <Eigen/Core>
 #include <opencv2/core.hpp>
 #include <utility>
 #include <vector>
 
+#include "core/eigen_abi.h"
 #include "maps/objects/ratio_matches.h"
 
 namespace novelty::objects {
@@ -36,8 +38,11 @@ class FeatureDatabase {
   /// A new object class v (eq. 5.5 decided that one is needed); returns its index.
   int AddObject() { return objects_++; }
   /// Adds the rows of `descriptors` (CV_32F, the database's width) as features learnt on
-  /// `object` (eq. 5.6, 5.7). Throws std::invalid_argument for an unknown object or bad rows.
-  void AddFeatures(const cv::Mat& descriptors, int object);
+  /// `object` (eq. 5.6, 5.7), with their 3-D positions (world frame, where the object stood when
+  /// they were learnt; NaN or none given: unknown). Throws std::invalid_argument for an unknown
+  /// object, bad rows or a position count that is not the row count.
+  void AddFeatures(const cv::Mat& descriptors, int object,
+                   const std::vector<Eigen::Vector3d>& positions = {});
 
   /// Matches the selected features' descriptors against the database and updates the counts
   /// (eq. 5.4 and the n_{h,M} increments). `ratio`: the thesis's 0.65.
@@ -49,12 +54,23 @@ class FeatureDatabase {
   double RelativeFrequency(int h, int k) const;
   /// The object of highest p_{h,k} (the lowest index among equals).
   int MostProbableObject(int h) const;
+  /// Feature h's position (world frame where it was learnt); NaN if unknown.
+  const Eigen::Vector3d& Position(int h) const;
+
+  /// Per feature its non-zero counts (object, n_{h,k}), for saving.
+  using Counts = std::vector<std::vector<std::pair<int, int>>>;
+  const Counts& counts() const { return n_; }
+  /// A database from what a saved one held. Throws std::invalid_argument naming what is
+  /// inconsistent (widths, counts per feature, objects out of range, counts < 1).
+  static FeatureDatabase FromParts(int objects, const cv::Mat& descriptors, const Counts& counts,
+                                   const std::vector<Eigen::Vector3d>& positions);
 
  private:
   void CheckFeature(int h) const;
 
   cv::Mat descriptors_;                               // DF, one row per feature
-  std::vector<std::vector<std::pair<int, int>>> n_;   // per feature: (object, n_{h,k} > 0)
+  Counts n_;                                          // per feature: (object, n_{h,k} > 0)
+  std::vector<Eigen::Vector3d> positions_;            // per feature, NaN unknown
   int objects_ = 0;
 };
 

@@ -36,7 +36,7 @@ FocusOfAttention FindFocusOfAttention(const cv::Mat& surprise,
 /// ρ_S of eq. 5.5: the share of the pixels of the square window of side `window` (px) centred at
 /// `center` and turned by `angle_rad` — the region a descriptor is computed from — whose
 /// (closed and opened) surprise is at least θ_S. Pixels outside the image count as not
-/// surprising. 0 for an empty window.
+/// surprising. 0 for an empty window. Windows over 24 px are sampled on a 24 × 24 grid.
 double SurprisingShare(const FocusOfAttention& focus, cv::Point2f center, float window,
                        float angle_rad);
 

@@ -1,6 +1,7 @@
 #include "maps/objects/object_learner.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -81,9 +82,15 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
   // 3. Learning (eq. 5.6, 5.7): static features on surprise that the database does not hold.
   if (step.object >= 0) {
     cv::Mat learnt;
-    for (int i : on_surprise)
-      if (!in_database[std::size_t(i)]) learnt.push_back(f.descriptors.row(i));
-    if (!learnt.empty()) database_.AddFeatures(learnt, step.object);
+    std::vector<Eigen::Vector3d> positions;
+    for (int i : on_surprise) {
+      if (in_database[std::size_t(i)]) continue;
+      learnt.push_back(f.descriptors.row(i));
+      const std::optional<Eigen::Vector3d>& p = f.p_cam[std::size_t(i)];
+      positions.push_back(p ? Eigen::Vector3d(T_world_cam * *p)
+                            : Eigen::Vector3d::Constant(std::nan("")));
+    }
+    if (!learnt.empty()) database_.AddFeatures(learnt, step.object, positions);
     step.learnt = learnt.rows;
     learning_object_ = step.object;
   }

@@ -72,6 +72,11 @@ DepthMeshWarper::DepthMeshWarper(const WarpOptions& options, const WarpOutputs& 
 }
 DepthMeshWarper::~DepthMeshWarper() = default;
 
+void DepthMeshWarper::set_outputs(const WarpOutputs& outputs) {
+  outputs_ = outputs;
+  outputs_.depth |= outputs_.view_angles;
+}
+
 void DepthMeshWarper::Warp(const core::PinholeCamera& src, const Eigen::Isometry3d& T_world_src,
                            const cv::Mat& depth, const core::PinholeCamera& dst,
                            const Eigen::Isometry3d& T_world_dst, WarpField& field) {

@@ -93,6 +93,9 @@ class DepthMeshWarper {
   explicit DepthMeshWarper(const WarpOptions& options = {}, const WarpOutputs& outputs = {});
   const WarpOptions& options() const { return options_; }
   const WarpOutputs& outputs() const { return outputs_; }
+  /// What the next warps write (a caller that needs the depth later than the blend options
+  /// said, e.g. a map asked for its predicted depth).
+  void set_outputs(const WarpOutputs& outputs);
   ~DepthMeshWarper();
   DepthMeshWarper(const DepthMeshWarper&) = delete;
   DepthMeshWarper& operator=(const DepthMeshWarper&) = delete;

@@ -278,6 +278,42 @@ TEST(AppearanceMap, ConstantInputThenOneLevelGivesFiniteSurprise) {
               step[0], step[1], truth);
 }
 
+// The expected depth is the depth of what the map has seen: on the clip, where both are known,
+// the simulator's true depth of every frame after the first lies within 1 % of it at the median
+// pixel (depth edges and the cup's arrival are a small share), and is asked for, not given.
+TEST(AppearanceMap, TheExpectedDepthIsTheDepthOfTheKnownScene) {
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180);
+  AppearanceMap map, without;
+  map.set_predict_depth(true);
+  int frames = 0;
+  double worst_median = 0.0, least_known = 1.0;
+  for (const Frame& f : Clip()) {
+    const AppearanceProducts p = map.Insert(f.rgb, f.depth, cam, f.T_world_cam);
+    EXPECT_TRUE(without.Insert(f.rgb, f.depth, cam, f.T_world_cam).expected_depth.empty());
+    ASSERT_EQ(p.expected_depth.type(), CV_32FC1);
+    if (frames++ == 0) {
+      EXPECT_EQ(cv::countNonZero(p.expected_depth), 0) << "an empty map expects nothing";
+      continue;
+    }
+    std::vector<double> relative;
+    int observed = 0;
+    for (int i = 0; i < f.depth.rows * f.depth.cols; ++i) {
+      const float truth = f.depth.at<float>(i), expected = p.expected_depth.at<float>(i);
+      if (!(truth > 0.0f)) continue;
+      ++observed;
+      if (expected > 0.0f) relative.push_back(std::abs(expected - truth) / truth);
+    }
+    ASSERT_FALSE(relative.empty());
+    std::nth_element(relative.begin(), relative.begin() + relative.size() / 2, relative.end());
+    worst_median = std::max(worst_median, relative[relative.size() / 2]);
+    least_known = std::min(least_known, double(relative.size()) / observed);
+  }
+  std::printf("expected depth: worst per-frame median relative error %.4f, least coverage %.2f\n",
+              worst_median, least_known);
+  EXPECT_LT(worst_median, 0.01);
+  EXPECT_GT(least_known, 0.5) << "the map must expect a depth at most observed pixels";
+}
+
 // KL ≥ 0 (Gibbs' inequality): no pixel of any frame may have negative surprise — through view
 // creation, replacement, blended priors of views of different ages and the cup's arrival.
 TEST(AppearanceMap, SurpriseIsNeverNegative) {

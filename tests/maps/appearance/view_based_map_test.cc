@@ -42,6 +42,39 @@ TEST(ViewBasedMap, AStaticCameraReadsItsViewsOwnPlanes) {
   EXPECT_FALSE(p.warped);
 }
 
+// A slanted wall Z = 2 + 0.25·X (camera frame of a view at the origin) seen from 2 cm to the
+// right: there it is Z' = 2.005 + 0.25·X', so the pixel of normalised x' lies at depth
+// 2.005 / (1 − 0.25·x') — the closed form the predicted depth must give where a view covers.
+TEST(ViewBasedMap, APredictedDepthIsTheWarpedSurfacesDepthAndZeroWhereNothingCovers) {
+  ViewBasedMap map;
+  cv::Mat depth(kCamera.height, kCamera.width, CV_32FC1);
+  for (int v = 0; v < depth.rows; ++v)
+    for (int u = 0; u < depth.cols; ++u)
+      depth.at<float>(v, u) = float(2.0 / (1.0 - 0.25 * (u - kCamera.cx) / kCamera.fx));
+  map.Update(kCamera, At(0), depth, {{"p", Plane(1)}}, {});
+  const Prediction p = map.Predict(kCamera, At(0.02), {{"p", 3}}, /*with_depth=*/true);
+  ASSERT_TRUE(p.warped);
+  ASSERT_EQ(p.depth.type(), CV_32FC1);
+  int covered = 0;
+  for (int v = 0; v < p.depth.rows; ++v)
+    for (int u = 0; u < p.depth.cols; ++u) {
+      const float d = p.depth.at<float>(v, u);
+      if (!p.valid.at<uchar>(v, u)) {
+        EXPECT_EQ(d, 0.0f) << u << "," << v;
+        continue;
+      }
+      ++covered;
+      const double expected = 2.005 / (1.0 - 0.25 * (u - kCamera.cx) / kCamera.fx);
+      EXPECT_NEAR(d, expected, 1e-3 * expected) << u << "," << v;
+    }
+  EXPECT_GT(covered, kCamera.width * kCamera.height / 2);
+  EXPECT_TRUE(map.Predict(kCamera, At(0.02), {{"p", 3}}).depth.empty()) << "only when asked";
+  const Prediction at_view = map.Predict(kCamera, At(0), {{"p", 3}}, true);
+  EXPECT_EQ(cv::norm(at_view.depth, depth, cv::NORM_INF), 0.0) << "a static camera: the view's";
+  const Prediction away = map.Predict(kCamera, At(0, 180), {{"p", 3}}, true);
+  EXPECT_EQ(cv::countNonZero(away.depth), 0) << "nothing selected: no depth";
+}
+
 TEST(ViewBasedMap, APredictionNeverWritesIntoAViewsPlanes) {
   ViewBasedMap map;
   Frame f;

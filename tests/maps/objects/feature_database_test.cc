@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "maps/objects/ratio_matches.h"
 
 namespace novelty::objects {
@@ -81,6 +83,42 @@ TEST(FeatureDatabase, BadUseIsRejected) {
                std::invalid_argument);
   EXPECT_THROW(db.Count(2, 0), std::out_of_range);
   EXPECT_EQ(db.Recognize(cv::Mat()).object, -1);
+  EXPECT_THROW(db.AddFeatures(Descriptors(2, 1), 0, {Eigen::Vector3d::Zero()}),
+               std::invalid_argument)
+      << "one position for two features";
+}
+
+// A database rebuilt from its parts (what a map file holds) is the same database, and parts that
+// cannot belong together are refused.
+TEST(FeatureDatabase, RebuiltFromItsPartsItIsTheSame) {
+  FeatureDatabase db;
+  const cv::Mat cup = Descriptors(5, 3);
+  db.AddFeatures(cup, db.AddObject(), {{0, 0, 1}, {0, 0.1, 1}, {0.1, 0, 1}, {0, 0, 1.1}, {1, 1, 1}});
+  db.AddFeatures(Descriptors(3, 4), db.AddObject());
+  db.Recognize(Perturbed(cup.rowRange(0, 3), 0.02, 5));
+  const FeatureDatabase copy = FeatureDatabase::FromParts(
+      db.objects(), db.descriptors(), db.counts(),
+      {db.Position(0), db.Position(1), db.Position(2), db.Position(3), db.Position(4),
+       db.Position(5), db.Position(6), db.Position(7)});
+  EXPECT_EQ(copy.objects(), 2);
+  EXPECT_EQ(cv::norm(copy.descriptors(), db.descriptors(), cv::NORM_INF), 0.0);
+  for (int h = 0; h < 8; ++h)
+    for (int k = 0; k < 2; ++k) EXPECT_EQ(copy.Count(h, k), db.Count(h, k)) << h << "," << k;
+  EXPECT_EQ(copy.Count(0, 0), 2);
+  EXPECT_EQ(copy.Position(1), Eigen::Vector3d(0, 0.1, 1));
+  EXPECT_TRUE(std::isnan(copy.Position(6).x())) << "learnt without a position";
+
+  const std::vector<Eigen::Vector3d> one(1, Eigen::Vector3d::Zero());
+  const cv::Mat d = Descriptors(1, 9);
+  EXPECT_THROW(FeatureDatabase::FromParts(1, d, {{{1, 1}}}, one), std::invalid_argument)
+      << "object 1 of 1";
+  EXPECT_THROW(FeatureDatabase::FromParts(1, d, {{{0, 0}}}, one), std::invalid_argument)
+      << "a zero count";
+  EXPECT_THROW(FeatureDatabase::FromParts(1, d, {{}}, one), std::invalid_argument) << "no owner";
+  EXPECT_THROW(FeatureDatabase::FromParts(1, d, {}, one), std::invalid_argument) << "no counts";
+  cv::Mat nan = d.clone();
+  nan.at<float>(0, 3) = std::nanf("");
+  EXPECT_THROW(FeatureDatabase::FromParts(1, nan, {{{0, 1}}}, one), std::invalid_argument);
 }
 
 }  // namespace

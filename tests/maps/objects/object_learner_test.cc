@@ -86,6 +86,9 @@ TEST(ObjectLearner, LearnsAStaticObjectOnceAndThenRecognisesIt) {
   EXPECT_EQ(s.object, 0);
   EXPECT_EQ(s.learnt, 25);
   EXPECT_EQ(learner.database().features(), 25);
+  // Each learnt feature keeps its 3-D place (world frame): the thing's point it was seen at.
+  for (int h = 0; h < 25; ++h)
+    EXPECT_LT((learner.database().Position(h) - cup.points[std::size_t(h)]).norm(), 1e-9) << h;
   // Frame 2: recognised from the database, nothing learnt twice.
   s = learner.Process(Focus(cup, 2), See({&cup}, 2, 100), kCamera, Pose(2));
   EXPECT_EQ(s.recognised, LearnerStep::Recognised::kByDatabase);

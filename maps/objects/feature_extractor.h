@@ -1,0 +1,35 @@
+// The object database's feature extractor, chosen by name: the thesis's SURF (our M-SURF,
+// msurf.h), OpenCV's SIFT, or OpenCV's AKAZE detector with its float KAZE descriptor. All three
+// give float descriptors compared with NORM_L2, which the ratio matching (ratio_matches.h) and the
+// database (feature_database.h) assume; binary descriptors (ORB, AKAZE's default MLDB) are left
+// out for that reason.
+#pragma once
+
+#include <opencv2/features2d.hpp>
+#include <string>
+#include <vector>
+
+namespace novelty::objects {
+
+enum class FeatureExtractor { kMSurf = 0, kSift = 1, kAkaze = 2 };
+
+/// "msurf", "sift", "akaze": the names of FeatureExtractor's values, in their order.
+const std::vector<std::string>& FeatureExtractorNames();
+const std::string& FeatureExtractorName(FeatureExtractor e);
+/// The extractor called `name`; throws std::invalid_argument listing the names for any other.
+FeatureExtractor ParseFeatureExtractor(const std::string& name);
+
+/// A new extractor with its library's defaults.
+cv::Ptr<cv::Feature2D> CreateFeatureExtractor(FeatureExtractor e);
+
+/// The descriptor width (M-SURF 64, SIFT 128, AKAZE/KAZE 64). A database learnt with one
+/// extractor cannot be matched with another's descriptors, even of the same width: the map file
+/// names the extractor.
+int DescriptorWidth(FeatureExtractor e);
+
+/// Side of the square a descriptor is computed from, per unit of keypoint size, so that ρ_S
+/// (eq. 5.5) is measured over that window (ObjectLearnerOptions): M-SURF 24·s with size 10·s →
+/// 2.4; SIFT 4 bins of 3σ with OpenCV's size 2σ → 6; KAZE 24·scale with scale = size/2 → 12.
+double DescriptorWindowPerSize(FeatureExtractor e);
+
+}  // namespace novelty::objects

@@ -1,0 +1,102 @@
+#include "maps/objects/object_acquisition.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "maps/objects/feature_extractor.h"
+
+namespace novelty::objects {
+namespace {
+
+ObjectLearnerOptions LearnerOptionsFor(const ObjectAcquisitionOptions& o) {
+  ObjectLearnerOptions l = o.learner;
+  l.window_per_scale = DescriptorWindowPerSize(o.extractor);  // window per keypoint size
+  l.size_per_scale = 1.0;
+  return l;
+}
+
+const ObjectAcquisitionOptions& Checked(const ObjectAcquisitionOptions& o) {
+  if (!(o.relative_descriptor_change > 0.0))
+    throw std::invalid_argument("ObjectAcquisitionOptions: relative_descriptor_change must be > 0");
+  DescriptorWidth(o.extractor);  // throws for a value that names no extractor
+  return o;
+}
+
+void CheckPlane(const cv::Mat& m, int type, const core::PinholeCamera& camera, const char* name,
+                bool may_be_empty) {
+  if (may_be_empty && m.empty()) return;
+  if (m.type() != type || m.cols != camera.width || m.rows != camera.height)
+    throw std::invalid_argument(std::string("ObjectAcquisition::Process: ") + name + " must be " +
+                                (type == CV_8UC3 ? "CV_8UC3" : "CV_32FC1") + " of " +
+                                std::to_string(camera.width) + "x" +
+                                std::to_string(camera.height) + ", is " +
+                                std::to_string(m.cols) + "x" + std::to_string(m.rows) +
+                                " of type " + std::to_string(m.type()));
+}
+
+}  // namespace
+
+ObjectAcquisition::ObjectAcquisition(const ObjectAcquisitionOptions& options)
+    : options_(Checked(options)),
+      extractor_(CreateFeatureExtractor(options.extractor)),
+      learner_(LearnerOptionsFor(options)) {}
+
+AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& depth,
+                                           const cv::Mat& surprise, const cv::Mat& expected_depth,
+                                           const core::PinholeCamera& camera,
+                                           const Eigen::Isometry3d& T_world_cam) {
+  CheckPlane(rgb, CV_8UC3, camera, "rgb", false);
+  CheckPlane(depth, CV_32FC1, camera, "depth", false);
+  CheckPlane(surprise, CV_32FC1, camera, "surprise", false);
+  CheckPlane(expected_depth, CV_32FC1, camera, "expected depth", true);
+  if (!T_world_cam.matrix().allFinite())
+    throw std::invalid_argument("ObjectAcquisition::Process: the pose is not finite");
+
+  AcquisitionStep step;
+  step.focus = FindFocusOfAttention(surprise, options_.focus);
+  if (!step.focus.box.empty() && !expected_depth.empty())
+    step.change = ClassifyChange(step.focus.region, depth, expected_depth, options_.change);
+  const ChangeKind kind = step.change.kind;
+  step.learning = !step.focus.box.empty() && kind != ChangeKind::kRemoved &&
+                  (kind == ChangeKind::kAdded || options_.learn_unknown_change);
+  SelectedFeatures features;
+  if (step.learning) features = Extract(rgb, depth, step.focus.box, camera, step);
+  step.learner = learner_.Process(step.focus, features, camera, T_world_cam);
+  return step;
+}
+
+SelectedFeatures ObjectAcquisition::Extract(const cv::Mat& rgb, const cv::Mat& depth,
+                                            const cv::Rect& box,
+                                            const core::PinholeCamera& camera,
+                                            AcquisitionStep& step) {
+  // The whole frame with the box as mask: keypoints near the box's border keep the support
+  // their descriptor windows need outside it.
+  cv::Mat grey, mask = cv::Mat::zeros(rgb.size(), CV_8UC1);
+  cv::cvtColor(rgb, grey, cv::COLOR_RGB2GRAY);
+  mask(box).setTo(255);
+  SelectedFeatures f;
+  extractor_->detectAndCompute(grey, mask, f.keypoints, f.descriptors);
+  if (f.descriptors.type() != CV_32F && !f.keypoints.empty())
+    f.descriptors.convertTo(f.descriptors, CV_32F);
+  step.extracted = int(f.keypoints.size());
+  for (std::size_t i = 0; i < f.keypoints.size(); ++i) {
+    const cv::Point2f& pt = f.keypoints[i].pt;
+    const int u = std::clamp(int(std::lround(pt.x)), 0, depth.cols - 1);
+    const int v = std::clamp(int(std::lround(pt.y)), 0, depth.rows - 1);
+    const float z = depth.at<float>(v, u);
+    if (z > 0.0f && std::isfinite(z)) {
+      f.p_cam.emplace_back(camera.Unproject(pt.x, pt.y, z));
+      ++step.reconstructed;
+    } else {
+      f.p_cam.emplace_back(std::nullopt);
+    }
+    f.max_descriptor_change.push_back(options_.relative_descriptor_change *
+                                      cv::norm(f.descriptors.row(int(i))));
+  }
+  return f;
+}
+
+}  // namespace novelty::objects

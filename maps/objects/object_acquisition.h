@@ -1,0 +1,78 @@
+// Surprise-driven acquisition of object features from an RGB-D frame (thesis 5.1, all steps):
+//   1. the focus of attention on the frame's surprise map (focus_of_attention.h);
+//   2. added or removed (change_kind.h): the focus region's observed depth against the depth the
+//      appearance map expects there; a removed object's region shows the background it hid, and
+//      none of its features are learnt (the frame counts as one without selected features);
+//   3. features inside the focus box, by the chosen extractor (feature_extractor.h);
+//   4. their 3-D positions from the frame's depth (the thesis matched along the other camera's
+//      epipolar lines; sensors/localization/epipolar_feature_matching.h does that for a rig);
+//   5. static features, recognition and learning (object_learner.h, eq. 5.1–5.7).
+// No MRPT types: mrpt_plugins/c_object_database_map.h feeds it from rawlog observations.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <opencv2/features2d.hpp>
+
+#include "core/eigen_abi.h"
+#include "core/pinhole_camera.h"
+#include "maps/objects/change_kind.h"
+#include "maps/objects/feature_extractor.h"
+#include "maps/objects/focus_of_attention.h"
+#include "maps/objects/object_learner.h"
+
+namespace novelty::objects {
+
+struct ObjectAcquisitionOptions {
+  /// M-SURF (the thesis's SURF), SIFT or AKAZE (feature_extractor.h).
+  FeatureExtractor extractor = FeatureExtractor::kMSurf;
+  FocusOfAttentionOptions focus;
+  /// The learner's thresholds (δ, ratio, T, forgetting). Its window_per_scale and size_per_scale
+  /// are set from the extractor (DescriptorWindowPerSize): what is given there is not used.
+  ObjectLearnerOptions learner;
+  ChangeKindOptions change;
+  /// Eq. 5.2's bound ‖d_g − d_m‖ for a feature reconstructed from depth, where there is no second
+  /// camera to match d_m in, as a share of ‖d_g‖ (M-SURF descriptors have norm 1, OpenCV's SIFT
+  /// 512). 0.3: a match between neighbouring frames is nearer than that for M-SURF, unrelated
+  /// features about 1 apart (msurf_test.cc on graf).
+  double relative_descriptor_change = 0.3;
+  /// Learn where the appearance map expects no depth, or too little of the region has both
+  /// depths to tell added from removed (ChangeKind::kUnknown): the thesis always learnt.
+  bool learn_unknown_change = true;
+};
+
+struct AcquisitionStep {
+  FocusOfAttention focus;
+  ChangeClassification change;  ///< kUnknown also when no expected depth was given
+  bool learning = false;  ///< the box's features went to the learner (not removed, box found)
+  int extracted = 0;      ///< features extracted in the box
+  int reconstructed = 0;  ///< of them, with a depth
+  LearnerStep learner;
+};
+
+class ObjectAcquisition {
+ public:
+  /// Throws std::invalid_argument naming a bad option (extractor name, bound).
+  explicit ObjectAcquisition(const ObjectAcquisitionOptions& options = {});
+
+  /// One frame: rgb CV_8UC3 (R, G, B), depth CV_32FC1 (m, 0 or NaN unknown), the appearance
+  /// map's surprise CV_32FC1 (NaN where it does not cover), the depth it expects CV_32FC1 (0
+  /// unknown; empty: none), all of `camera`'s size, and the pose T_world_cam. Throws
+  /// std::invalid_argument naming the input that is wrong; the learner is then unchanged.
+  AcquisitionStep Process(const cv::Mat& rgb, const cv::Mat& depth, const cv::Mat& surprise,
+                          const cv::Mat& expected_depth, const core::PinholeCamera& camera,
+                          const Eigen::Isometry3d& T_world_cam);
+
+  const ObjectLearner& learner() const { return learner_; }
+  ObjectLearner& learner() { return learner_; }
+  const ObjectAcquisitionOptions& options() const { return options_; }
+
+ private:
+  SelectedFeatures Extract(const cv::Mat& rgb, const cv::Mat& depth, const cv::Rect& box,
+                           const core::PinholeCamera& camera, AcquisitionStep& step);
+
+  ObjectAcquisitionOptions options_;
+  cv::Ptr<cv::Feature2D> extractor_;
+  ObjectLearner learner_;
+};
+
+}  // namespace novelty::objects

@@ -1,0 +1,188 @@
+// Acquisition on rendered frames: a camera passes a textured box face put down in front of a
+// plain wall. Where the face was added (nearer than the map expects) its features are learnt as
+// one object and then recognised; where one was removed (the wall behind it shows, farther than
+// the map expects) nothing is learnt.
+#include "maps/objects/object_acquisition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+
+#include "maps/objects/feature_extractor.h"
+
+namespace novelty::objects {
+namespace {
+
+const core::PinholeCamera kCamera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
+constexpr double kWallZ = 2.0, kFaceZ = 1.0, kFaceHalf = 0.2;  // m
+
+Eigen::Isometry3d Pose(int t) {  // 5 mm to the right per frame
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = Eigen::Vector3d(0.005 * t, 0.0, 0.0);
+  return T;
+}
+
+// A random blob texture (the face's print), 400 px for its 0.4 m: blobs of about 2 px at 110 px.
+cv::Mat FaceTexture() {
+  cv::Mat t(400, 400, CV_8UC1);
+  cv::RNG(7).fill(t, cv::RNG::UNIFORM, 0, 256);
+  cv::GaussianBlur(t, t, cv::Size(0, 0), 8.0);
+  cv::normalize(t, t, 0, 255, cv::NORM_MINMAX);
+  return t;
+}
+
+struct Rendered {
+  cv::Mat rgb, depth;
+  cv::Mat face;  // CV_8U, 255 where the face is seen
+};
+
+// The wall (a smooth grey ramp, almost featureless) and, if `with_face`, the face at kFaceZ
+// centred on the world's Z axis, seen from Pose(t).
+Rendered Render(int t, bool with_face) {
+  static const cv::Mat texture = FaceTexture();
+  Rendered r{cv::Mat(kCamera.height, kCamera.width, CV_8UC3),
+             cv::Mat(kCamera.height, kCamera.width, CV_32FC1),
+             cv::Mat::zeros(kCamera.height, kCamera.width, CV_8UC1)};
+  const Eigen::Vector3d c = Pose(t).translation();
+  for (int v = 0; v < kCamera.height; ++v)
+    for (int u = 0; u < kCamera.width; ++u) {
+      const Eigen::Vector3d ray = kCamera.RayCam(u, v) / kCamera.RayCam(u, v).z();
+      const Eigen::Vector3d on_face = c + kFaceZ * ray;
+      if (with_face && std::abs(on_face.x()) < kFaceHalf && std::abs(on_face.y()) < kFaceHalf) {
+        const float tx = float((on_face.x() + kFaceHalf) / (2 * kFaceHalf) * 399.0);
+        const float ty = float((on_face.y() + kFaceHalf) / (2 * kFaceHalf) * 399.0);
+        cv::Mat px;
+        cv::getRectSubPix(texture, cv::Size(1, 1), cv::Point2f(tx, ty), px);
+        r.rgb.at<cv::Vec3b>(v, u) = cv::Vec3b::all(px.at<uchar>(0));
+        r.depth.at<float>(v, u) = float(kFaceZ);
+        r.face.at<uchar>(v, u) = 255;
+      } else {
+        const Eigen::Vector3d on_wall = c + kWallZ * ray;
+        r.rgb.at<cv::Vec3b>(v, u) = cv::Vec3b::all(uchar(120 + 20 * std::tanh(on_wall.x())));
+        r.depth.at<float>(v, u) = float(kWallZ);
+      }
+    }
+  return r;
+}
+
+// The appearance map's surprise where the frame differs from what it knew: high on `changed`,
+// low noise elsewhere.
+cv::Mat Surprise(const cv::Mat& changed, int t) {
+  cv::Mat s(changed.size(), CV_32FC1);
+  cv::RNG(100 + t).fill(s, cv::RNG::UNIFORM, 0.0f, 1.0f);
+  s.setTo(30.0f, changed);
+  return s;
+}
+
+TEST(ObjectAcquisition, LearnsAnAddedObjectAndRecognisesItLater) {
+  ObjectAcquisition acquisition;
+  const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  int learnt_frames = 0;
+  for (int t = 0; t < 12; ++t) {
+    const Rendered r = Render(t, true);
+    const AcquisitionStep s =
+        acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), wall_depth, kCamera, Pose(t));
+    EXPECT_EQ(s.change.kind, ChangeKind::kAdded) << "frame " << t;
+    EXPECT_NEAR(s.change.observed_depth, kFaceZ, 0.05) << "frame " << t;
+    EXPECT_TRUE(s.learning);
+    // The box is the face's projection (the surprise was set there exactly).
+    const cv::Rect face = cv::boundingRect(r.face);
+    EXPECT_LE((s.focus.box & face).area(), face.area());
+    EXPECT_GT((s.focus.box & face).area(), 0.9 * face.area()) << "frame " << t;
+    EXPECT_GT(s.extracted, 20) << "frame " << t;
+    EXPECT_EQ(s.reconstructed, s.extracted) << "all have depth";
+    if (s.learner.learnt > 0) ++learnt_frames;
+  }
+  const FeatureDatabase& db = acquisition.learner().database();
+  EXPECT_EQ(db.objects(), 1) << "one face, one object";
+  EXPECT_GE(db.features(), 20);
+  EXPECT_GE(learnt_frames, 1);
+  EXPECT_EQ(db.descriptors().cols, DescriptorWidth(FeatureExtractor::kMSurf));
+  // Each learnt feature sits on the face, where the depth put it (world frame).
+  for (int h = 0; h < db.features(); ++h) {
+    const Eigen::Vector3d& p = db.Position(h);
+    EXPECT_NEAR(p.z(), kFaceZ, 1e-3) << h;
+    EXPECT_LT(std::max(std::abs(p.x()), std::abs(p.y())), kFaceHalf + 1e-3) << h;
+  }
+  // Later, the same face seen again: the database recognises it.
+  const Rendered again = Render(20, true);
+  const AcquisitionStep s = acquisition.Process(again.rgb, again.depth, Surprise(again.face, 20),
+                                                wall_depth, kCamera, Pose(20));
+  EXPECT_EQ(s.learner.recognised, LearnerStep::Recognised::kByDatabase);
+  EXPECT_EQ(s.learner.object, 0);
+  ASSERT_EQ(s.learner.matches_per_object.size(), 1u);
+  EXPECT_GE(s.learner.matches_per_object[0], 10);
+}
+
+TEST(ObjectAcquisition, NeverLearnsTheBackgroundARemovedObjectUncovers) {
+  ObjectAcquisition acquisition;
+  for (int t = 0; t < 12; ++t) {
+    // The map knew the face (its depth expected there); the frame shows the wall.
+    const Rendered known = Render(t, true), now = Render(t, false);
+    const AcquisitionStep s = acquisition.Process(now.rgb, now.depth, Surprise(known.face, t),
+                                                  known.depth, kCamera, Pose(t));
+    EXPECT_EQ(s.change.kind, ChangeKind::kRemoved) << "frame " << t;
+    EXPECT_FALSE(s.learning);
+    EXPECT_EQ(s.extracted, 0);
+  }
+  EXPECT_EQ(acquisition.learner().database().objects(), 0);
+  EXPECT_EQ(acquisition.learner().database().features(), 0);
+  EXPECT_TRUE(acquisition.learner().active().empty());
+}
+
+TEST(ObjectAcquisition, EveryExtractorLearnsTheAddedFace) {
+  for (const std::string& name : FeatureExtractorNames()) {
+    ObjectAcquisitionOptions o;
+    o.extractor = ParseFeatureExtractor(name);
+    ObjectAcquisition acquisition(o);
+    const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+    for (int t = 0; t < 8; ++t) {
+      const Rendered r = Render(t, true);
+      acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), wall_depth, kCamera, Pose(t));
+    }
+    const FeatureDatabase& db = acquisition.learner().database();
+    std::printf("%s: %d objects, %d features learnt in 8 frames\n", name.c_str(), db.objects(),
+                db.features());
+    EXPECT_EQ(db.objects(), 1) << name;
+    EXPECT_GE(db.features(), 10) << name;
+    EXPECT_EQ(db.descriptors().cols, DescriptorWidth(o.extractor)) << name;
+  }
+}
+
+TEST(ObjectAcquisition, BadInputIsRejectedAndTheLearnerUnchanged) {
+  ObjectAcquisitionOptions bad;
+  EXPECT_THROW(ParseFeatureExtractor("orb"), std::invalid_argument);
+  bad.extractor = FeatureExtractor(7);
+  EXPECT_THROW(ObjectAcquisition{bad}, std::invalid_argument);
+  bad.extractor = FeatureExtractor::kMSurf;
+  bad.relative_descriptor_change = 0.0;
+  EXPECT_THROW(ObjectAcquisition{bad}, std::invalid_argument);
+
+  ObjectAcquisition acquisition;
+  const Rendered r = Render(0, true);
+  const cv::Mat s = Surprise(r.face, 0);
+  const cv::Mat small(10, 10, CV_32FC1, cv::Scalar(1.0f));
+  EXPECT_THROW(acquisition.Process(r.rgb, small, s, cv::Mat(), kCamera, Pose(0)),
+               std::invalid_argument);
+  EXPECT_THROW(acquisition.Process(r.depth, r.depth, s, cv::Mat(), kCamera, Pose(0)),
+               std::invalid_argument);
+  EXPECT_THROW(acquisition.Process(r.rgb, r.depth, s, small, kCamera, Pose(0)),
+               std::invalid_argument);
+  Eigen::Isometry3d nan_pose = Pose(0);
+  nan_pose.translation().x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(acquisition.Process(r.rgb, r.depth, s, cv::Mat(), kCamera, nan_pose),
+               std::invalid_argument);
+  EXPECT_TRUE(acquisition.learner().active().empty());
+  // A map that covers nothing (all NaN): no box, a frame without features, no error.
+  const cv::Mat uncovered(r.depth.size(), CV_32FC1,
+                          cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
+  const AcquisitionStep step =
+      acquisition.Process(r.rgb, r.depth, uncovered, cv::Mat(), kCamera, Pose(0));
+  EXPECT_TRUE(step.focus.box.empty());
+  EXPECT_EQ(step.learner.selected, 0);
+}
+
+}  // namespace
+}  // namespace novelty::objects
