@@ -26,6 +26,7 @@
 #include "maps/stats/normal_gamma_kl.h"
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/differencing_map_options.h"
+#include "mrpt_plugins/object_database_map_options.h"
 
 namespace {
 
@@ -93,7 +94,8 @@ void SurpriseDemo() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> classes = {"CAppearanceMap", "CDifferencingMap"};
+  std::vector<std::string> classes = {"CAppearanceMap", "CDifferencingMap",
+                                      "CObjectDatabaseMap"};
   TCLAP::ValuesConstraint<std::string> allowed(classes);
   TCLAP::ValueArg<std::string> dump_options(
       "", "dump-options",
@@ -109,10 +111,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (dump_options.isSet()) {
-    if (dump_options.getValue() == "CAppearanceMap")
+    const std::string& cls = dump_options.getValue();
+    if (cls == "CAppearanceMap")
       novelty::mrpt_plugins::AppearanceMapConfig().dumpAsMultiMap(std::cout);
-    else
+    else if (cls == "CDifferencingMap")
       novelty::mrpt_plugins::DifferencingMapConfig().dumpAsMultiMap(std::cout);
+    else
+      novelty::mrpt_plugins::ObjectDatabaseMapConfig().dumpAsMultiMap(std::cout);
     return 0;
   }
   std::printf("NoveltyMaps %s\n\nLibraries:\n", NOVELTY_VERSION);
@@ -133,10 +138,12 @@ int main(int argc, char** argv) {
       "  maps/color       YCbCr (ICT) and back, HSV\n"
       "  maps/views       view selection, depth-mesh warping, blending (ch. 3)\n"
       "  maps/appearance  appearance map and image differencing (ch. 4)\n"
+      "  maps/objects     M-SURF, focus of attention, object learner and database (ch. 5)\n"
       "  eval             AS/PAS, findings, PSNR, depth accuracy, panels, HTML report\n"
       "  sensors          RGB-D folders, rawlog frames, tracker, stereo, localization\n"
       "  sim              ODE world, Embree cameras, scenarios, rawlogs + ground truth\n"
-      "  mrpt_plugins     CAppearanceMap, CDifferencingMap, RawlogMapPlayer\n"
+      "  mrpt_plugins     CAppearanceMap, CDifferencingMap, CObjectDatabaseMap,\n"
+      "                   RawlogMapPlayer\n"
       "  apps             novelty-sim, -synth, -run, -depth, -poses, -info\n");
   std::printf("\nStatistics core demo (one pixel, f=%.1f, xi=%.3g):\n", 0.8, 0.01);
   SurpriseDemo();

@@ -33,6 +33,12 @@ class CAppearanceMap : public ViewMapAdapter<appearance::AppearanceMap, Appearan
   std::string asString() const override;
   void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
   void LoadFromFile(const std::string& path) { LoadAs<CAppearanceMap>(path); }
+  /// Whether lastProducts() holds the depth the map expected (AppearanceProducts::
+  /// expected_depth): off by default, turned on by a CObjectDatabaseMap linked to this map.
+  void setPredictDepth(bool on) {
+    predict_depth_ = on;
+    map_->set_predict_depth(on);
+  }
   /// The last frame's surprise and uncertainty Σβ in false colour on the fixed scales of
   /// maps/appearance/product_images.h (empty before the first frame): for mrpt::gui windows, or
   /// written into a rawlog with ProductObservation (cimage_products.h) for RawLogViewer.
@@ -46,6 +52,10 @@ class CAppearanceMap : public ViewMapAdapter<appearance::AppearanceMap, Appearan
   MAP_DEFINITION_START(CAppearanceMap)
   AppearanceMapConfig config;  ///< from the section "<prefix>_options"
   MAP_DEFINITION_END(CAppearanceMap)
+
+ private:
+  void MapReplaced() override { map_->set_predict_depth(predict_depth_); }
+  bool predict_depth_ = false;
 };
 
 }  // namespace novelty::mrpt_plugins

@@ -4,12 +4,14 @@
 
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
+#include "mrpt_plugins/c_object_database_map.h"
 
 namespace novelty::mrpt_plugins {
 
 void RegisterMaps() {
   mrpt::rtti::registerClass(CLASS_ID(CAppearanceMap));
   mrpt::rtti::registerClass(CLASS_ID(CDifferencingMap));
+  mrpt::rtti::registerClass(CLASS_ID(CObjectDatabaseMap));
 }
 
 }  // namespace novelty::mrpt_plugins

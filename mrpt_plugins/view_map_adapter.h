@@ -58,6 +58,9 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   const Map& map() const { return *map_; }
   /// The image the map expected for the last frame (the prior's mean), as an MRPT image.
   mrpt::img::CImage expectedImage() const { return ToCImage(last_.expected_rgb); }
+  /// Frames inserted since construction (never reset: a map that reads this one's products, as
+  /// CObjectDatabaseMap does, tells by it whether this map took an observation).
+  long framesInserted() const { return frames_inserted_; }
   /// Frames whose camera pose the pose checks found implausible (each logged as a warning).
   int poseWarnings() const { return pose_check_.warnings(); }
 
@@ -151,7 +154,11 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     map_ = std::move(map);
     last_ = {};
     frame_ = {};
+    MapReplaced();
   }
+  /// After a load or clear put a new map in place: what the derived class set on the old one
+  /// that is not an option (not saved) is set again here.
+  virtual void MapReplaced() {}
 
   std::unique_ptr<Map> map_;
   Products last_;
@@ -169,6 +176,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
                          double time, const std::optional<PoseCheck::Mount>& mount) {
     WarnIfImplausible(T_world_cam, time, mount);
     last_ = map_->Insert(rgb, depth, camera, T_world_cam);
+    ++frames_inserted_;
     frame_ = core::Frame();
     frame_.rgb = rgb;
     frame_.depth = depth;
@@ -220,6 +228,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
 
   const char* name_;
   const char* extension_;
+  long frames_inserted_ = 0;
 };
 
 }  // namespace novelty::mrpt_plugins

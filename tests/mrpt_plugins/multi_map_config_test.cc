@@ -10,6 +10,7 @@
 
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
+#include "mrpt_plugins/c_object_database_map.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
@@ -77,7 +78,7 @@ std::string Shipped(const char* name) {
 // each alone declares its map, and the two pasted one after the other declare both (MRPT merges
 // the repeated [map] section).
 TEST(LoadMultiMapConfig, TheShippedFilesDropIn) {
-  for (const char* name : {"appearance.ini", "differencing.ini"}) {
+  for (const char* name : {"appearance.ini", "differencing.ini", "object_database.ini"}) {
     const auto inits =
         LoadMultiMapConfig(mrpt::config::CConfigFileMemory(Shipped(name)), "map", name);
     EXPECT_EQ(inits.size(), 1u) << name;
@@ -88,6 +89,13 @@ TEST(LoadMultiMapConfig, TheShippedFilesDropIn) {
   ASSERT_EQ(maps.maps.size(), 2u);
   EXPECT_TRUE(maps.mapByClass<CAppearanceMap>());
   EXPECT_TRUE(maps.mapByClass<CDifferencingMap>());
+  // The object database after the appearance map, linked to it.
+  const std::string objects = Shipped("appearance.ini") + Shipped("object_database.ini");
+  mrpt::maps::CMultiMetricMap with_objects;
+  with_objects.setListOfMaps(
+      LoadMultiMapConfig(mrpt::config::CConfigFileMemory(objects), "map", "objects"));
+  ASSERT_EQ(with_objects.maps.size(), 2u);
+  EXPECT_NO_THROW(LinkObjectDatabaseMaps(with_objects));
 }
 
 // A typo in a pasted file: the error names the file, the section and the key.

@@ -1,0 +1,253 @@
+#include "mrpt_plugins/c_object_database_map.h"
+
+#include <mrpt/opengl/CPointCloudColoured.h>
+#include <mrpt/opengl/CText.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <stdexcept>
+
+#include "maps/objects/feature_extractor.h"
+#include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/register_maps.h"
+
+using novelty::mrpt_plugins::CObjectDatabaseMap;
+
+MAP_DEFINITION_REGISTER("CObjectDatabaseMap,novelty::mrpt_plugins::CObjectDatabaseMap",
+                        novelty::mrpt_plugins::CObjectDatabaseMap)
+
+IMPLEMENTS_SERIALIZABLE(CObjectDatabaseMap, CMetricMap, novelty::mrpt_plugins)
+
+namespace novelty::mrpt_plugins {
+
+namespace {
+
+// Bounds on what a map file may claim before anything is allocated: a corrupt count must not ask
+// for gigabytes.
+constexpr int32_t kMaxObjects = 1 << 20, kMaxFeatures = 1 << 24;
+
+void WriteVector(mrpt::serialization::CArchive& out, const Eigen::Vector3d& p) {
+  out << p.x() << p.y() << p.z();
+}
+
+Eigen::Vector3d ReadVector(mrpt::serialization::CArchive& in) {
+  Eigen::Vector3d p;
+  in >> p.x() >> p.y() >> p.z();
+  return p;
+}
+
+[[noreturn]] void Corrupt(const std::string& what) {
+  throw std::runtime_error(std::string(kMapFileError) + what);
+}
+
+// A colour per object, well apart for neighbouring indices (golden-ratio hues).
+mrpt::img::TColorf ObjectColour(int k) {
+  const double h = std::fmod(0.61803398875 * k, 1.0) * 6.0;
+  const double x = 1.0 - std::abs(std::fmod(h, 2.0) - 1.0);
+  const int sector = int(h);
+  const double rgb[6][3] = {{1, x, 0}, {x, 1, 0}, {0, 1, x}, {0, x, 1}, {x, 0, 1}, {1, 0, x}};
+  return mrpt::img::TColorf(float(rgb[sector][0]), float(rgb[sector][1]), float(rgb[sector][2]));
+}
+
+}  // namespace
+
+CObjectDatabaseMap::CObjectDatabaseMap(const ObjectDatabaseMapConfig& config)
+    : mrpt::system::COutputLogger("CObjectDatabaseMap"),
+      config_(config),
+      acquisition_(std::make_unique<objects::ObjectAcquisition>(config.map)) {}
+
+void CObjectDatabaseMap::linkAppearanceMap(const std::shared_ptr<CAppearanceMap>& appearance) {
+  if (!appearance) throw std::invalid_argument("CObjectDatabaseMap: no CAppearanceMap to link");
+  appearance->setPredictDepth(true);
+  appearance_ = appearance;
+  appearance_frames_ = appearance->framesInserted();
+}
+
+bool CObjectDatabaseMap::internal_insertObservation(
+    const mrpt::obs::CObservation&, const std::optional<const mrpt::poses::CPose3D>&) {
+  const std::shared_ptr<CAppearanceMap> appearance = appearance_.lock();
+  if (!appearance)
+    throw std::logic_error(
+        "CObjectDatabaseMap: not linked to a CAppearanceMap (call LinkObjectDatabaseMaps(multimap) "
+        "after its maps are made)");
+  if (appearance->framesInserted() == appearance_frames_) return false;  // it did not take it
+  appearance_frames_ = appearance->framesInserted();
+  const core::Frame& f = appearance->lastFrame();
+  const appearance::AppearanceProducts& p = appearance->lastProducts();
+  last_ = acquisition_->Process(f.rgb, f.depth, p.surprise, p.expected_depth, f.camera,
+                                *f.T_world_cam);
+  if (last_.learner.recognised == objects::LearnerStep::Recognised::kNewObject)
+    learnt_at_.push_back(f.T_world_cam->translation());
+  ++frames_used_;
+  return true;
+}
+
+void CObjectDatabaseMap::internal_clear() {
+  acquisition_ = std::make_unique<objects::ObjectAcquisition>(config_.map);
+  learnt_at_.clear();
+  last_ = {};
+  frames_used_ = 0;
+}
+
+std::string CObjectDatabaseMap::asString() const {
+  const objects::FeatureDatabase& db = database();
+  std::vector<int> features(std::size_t(db.objects()), 0);
+  for (int h = 0; h < db.features(); ++h) ++features[std::size_t(db.MostProbableObject(h))];
+  std::ostringstream s;
+  s << "CObjectDatabaseMap: " << db.objects() << " objects, " << db.features() << " "
+    << objects::FeatureExtractorName(config_.map.extractor) << " features";
+  for (int k = 0; k < db.objects(); ++k) {
+    const Eigen::Vector3d& at = learnt_at_[std::size_t(k)];
+    s << "\n  object " << k << ": " << features[std::size_t(k)] << " features, learnt from ("
+      << at.x() << ", " << at.y() << ", " << at.z() << ")";
+  }
+  return s.str();
+}
+
+void CObjectDatabaseMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
+  const objects::FeatureDatabase& db = database();
+  std::vector<Eigen::Vector3d> sum(std::size_t(db.objects()), Eigen::Vector3d::Zero());
+  std::vector<int> placed(std::size_t(db.objects()), 0);
+  auto cloud = mrpt::opengl::CPointCloudColoured::Create();
+  cloud->setPointSize(4.0f);
+  for (int h = 0; h < db.features(); ++h) {
+    const Eigen::Vector3d& p = db.Position(h);
+    if (!p.allFinite()) continue;
+    const int k = db.MostProbableObject(h);
+    const mrpt::img::TColorf c = ObjectColour(k);
+    cloud->push_back(float(p.x()), float(p.y()), float(p.z()), c.R, c.G, c.B);
+    sum[std::size_t(k)] += p;
+    ++placed[std::size_t(k)];
+  }
+  o.insert(cloud);
+  for (int k = 0; k < db.objects(); ++k) {
+    if (placed[std::size_t(k)] == 0) continue;
+    const Eigen::Vector3d c = sum[std::size_t(k)] / placed[std::size_t(k)];
+    auto label = mrpt::opengl::CText::Create("object " + std::to_string(k));
+    label->setLocation(c.x(), c.y(), c.z() + 0.05);
+    label->setColor(ObjectColour(k));
+    o.insert(label);
+  }
+}
+
+void CObjectDatabaseMap::SaveToFile(const std::string& path) const {
+  SaveAtomically(*this, path);
+}
+
+void CObjectDatabaseMap::LoadFromFile(const std::string& path) {
+  RegisterMaps();  // the archive names the class
+  CObjectDatabaseMap loaded;  // a fresh map: on failure this one is untouched
+  LoadInto(loaded, path, "CObjectDatabaseMap");
+  config_ = loaded.config_;
+  acquisition_ = std::move(loaded.acquisition_);
+  learnt_at_ = std::move(loaded.learnt_at_);
+  last_ = {};
+  frames_used_ = 0;
+}
+
+void CObjectDatabaseMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {
+  SaveToFile(prefix + ".object_database");
+}
+
+// Map file, version 0: every option by key (option_table.h); the object count; the descriptors
+// (rows, width, floats); per feature its counts (object, n) and its 3-D place; per object where it
+// was learnt.
+uint8_t CObjectDatabaseMap::serializeGetVersion() const { return 0; }
+
+void CObjectDatabaseMap::serializeTo(mrpt::serialization::CArchive& out) const {
+  ObjectDatabaseMapConfig::Table().Write(out, config_);
+  const objects::FeatureDatabase& db = database();
+  const cv::Mat& d = db.descriptors();
+  out << int32_t(db.objects()) << int32_t(d.rows) << int32_t(d.rows ? d.cols : 0);
+  for (int h = 0; h < d.rows; ++h) out.WriteBufferFixEndianness(d.ptr<float>(h), std::size_t(d.cols));
+  for (const auto& counts : db.counts()) {
+    out << uint32_t(counts.size());
+    for (const auto& [object, n] : counts) out << int32_t(object) << int32_t(n);
+  }
+  for (int h = 0; h < d.rows; ++h) WriteVector(out, db.Position(h));
+  for (const Eigen::Vector3d& at : learnt_at_) WriteVector(out, at);
+}
+
+void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
+  if (version > 0)
+    Corrupt("format version " + std::to_string(version) + ", newer than this program's (0)");
+  ObjectDatabaseMapConfig config;
+  ObjectDatabaseMapConfig::Table().Read(in, config);
+  int32_t objects = 0, rows = 0, cols = 0;
+  in >> objects >> rows >> cols;
+  if (objects < 0 || objects > kMaxObjects || rows < 0 || rows > kMaxFeatures)
+    Corrupt(std::to_string(objects) + " objects and " + std::to_string(rows) + " features");
+  const int width = objects::DescriptorWidth(config.map.extractor);
+  if (rows > 0 && cols != width)
+    Corrupt("descriptors of width " + std::to_string(cols) + ", but " +
+            objects::FeatureExtractorName(config.map.extractor) + " gives " +
+            std::to_string(width));
+  cv::Mat d(rows, rows ? cols : 0, CV_32F);
+  for (int h = 0; h < rows; ++h) in.ReadBufferFixEndianness(d.ptr<float>(h), std::size_t(cols));
+  objects::FeatureDatabase::Counts counts(static_cast<std::size_t>(rows));
+  for (auto& c : counts) {
+    uint32_t n = 0;
+    in >> n;
+    if (n > uint32_t(objects)) Corrupt(std::to_string(n) + " counts for a feature");
+    c.resize(n);
+    for (auto& [object, count] : c) {
+      int32_t k = 0, m = 0;
+      in >> k >> m;
+      object = k;
+      count = m;
+    }
+  }
+  std::vector<Eigen::Vector3d> positions(static_cast<std::size_t>(rows)),
+      learnt_at(static_cast<std::size_t>(objects));
+  for (auto& p : positions) p = ReadVector(in);
+  for (auto& p : learnt_at) p = ReadVector(in);
+  auto acquisition = std::make_unique<objects::ObjectAcquisition>(config.map);
+  try {
+    acquisition->learner().database() =
+        objects::FeatureDatabase::FromParts(objects, d, counts, positions);
+  } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
+    Corrupt(e.what());
+  }
+  config_ = config;  // only now: a failure above leaves the map as it was
+  acquisition_ = std::move(acquisition);
+  learnt_at_ = std::move(learnt_at);
+  last_ = {};
+}
+
+// --- CMultiMetricMap integration ---------------------------------------------------------------
+
+CObjectDatabaseMap::TMapDefinition::TMapDefinition() = default;
+
+void CObjectDatabaseMap::TMapDefinition::loadFromConfigFile_map_specific(
+    const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
+  config =
+      ObjectDatabaseMapConfig::FromConfig(source, prefix + "_options", ConfigSourceName(source));
+}
+
+void CObjectDatabaseMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {
+  config.dumpToTextStream(out);
+}
+
+mrpt::maps::CMetricMap* CObjectDatabaseMap::internal_CreateFromMapDefinition(
+    const mrpt::maps::TMetricMapInitializer& def) {
+  return new CObjectDatabaseMap(
+      dynamic_cast<const CObjectDatabaseMap::TMapDefinition&>(def).config);
+}
+
+void LinkObjectDatabaseMaps(mrpt::maps::CMultiMetricMap& maps) {
+  std::shared_ptr<CAppearanceMap> appearance;
+  for (const auto& m : maps.maps) {
+    if (auto a = std::dynamic_pointer_cast<CAppearanceMap>(m); a && !appearance) appearance = a;
+    if (auto o = std::dynamic_pointer_cast<CObjectDatabaseMap>(m)) {
+      if (!appearance)
+        throw std::invalid_argument(
+            "CObjectDatabaseMap needs a CAppearanceMap before it in the multimap (it reads the "
+            "appearance map's surprise of the same frame)");
+      o->linkAppearanceMap(appearance);
+    }
+  }
+}
+
+}  // namespace novelty::mrpt_plugins

@@ -1,0 +1,100 @@
+// CObjectDatabaseMap: the object database of thesis ch. 5 (maps/objects/object_acquisition.h) as
+// an MRPT metric map — where the appearance map is surprised, it learns the new object's features
+// on its own, and recognises learnt objects later, in this room or another.
+//
+// - Declared in a CMultiMetricMap .ini beside a CAppearanceMap ("CObjectDatabaseMap_count = 1",
+//   options in "<prefix>_options" with the keys of share/object_database.ini; unknown keys are
+//   errors). It reads the appearance map's frame and products (surprise, expected depth) of the
+//   same observation, so it must be linked to it: LinkObjectDatabaseMaps(multimap) after the
+//   multimap's maps are made (and again whenever they are remade); the appearance map must come
+//   first in the multimap (MRPT orders the maps of an .ini by class name, so it does).
+// - insertObservation(obs, robotPose) uses the observation when the linked appearance map took it
+//   (it counts its frames), else returns false; lastStep() holds the frame's focus of attention,
+//   added/removed decision, features and recognition.
+// - MRPT serialization saves the options and the database (descriptors, counts n_{h,k}, 3-D
+//   places, where each object was learnt); not the active features of an object being learnt.
+//   SaveToFile writes atomically; LoadFromFile leaves the map as it was when the file is truncated,
+//   of another class, or holds descriptors of another extractor.
+// - getVisualizationInto draws each object's features at their 3-D places, one colour per object,
+//   with its name; asString lists objects, feature counts and where they were learnt.
+#pragma once
+
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/system/COutputLogger.h>
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/eigen_abi.h"
+#include "maps/objects/object_acquisition.h"
+#include "mrpt_plugins/c_appearance_map.h"
+#include "mrpt_plugins/object_database_map_options.h"
+
+namespace novelty::mrpt_plugins {
+
+class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::COutputLogger {
+  DEFINE_SERIALIZABLE(CObjectDatabaseMap, novelty::mrpt_plugins)
+
+ public:
+  explicit CObjectDatabaseMap(const ObjectDatabaseMapConfig& config = {});
+
+  /// Reads frames and products from `appearance` from now on, and asks it for its expected depth.
+  void linkAppearanceMap(const std::shared_ptr<CAppearanceMap>& appearance);
+
+  bool isEmpty() const override { return database().features() == 0; }
+  std::string asString() const override;
+  void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
+
+  /// The last used frame's step (empty before the first).
+  const objects::AcquisitionStep& lastStep() const { return last_; }
+  const objects::FeatureDatabase& database() const { return acquisition_->learner().database(); }
+  const objects::ObjectAcquisition& acquisition() const { return *acquisition_; }
+  const ObjectDatabaseMapConfig& config() const { return config_; }
+  /// Per object, the camera position (world) of the frame that gave it its class.
+  const std::vector<Eigen::Vector3d>& learntAt() const { return learnt_at_; }
+  /// Frames used (the appearance map took them).
+  int framesUsed() const { return frames_used_; }
+
+  void SaveToFile(const std::string& path) const;
+  /// Replaces this map by the CObjectDatabaseMap in `path`; throws std::runtime_error naming the
+  /// file and leaves this map as it was.
+  void LoadFromFile(const std::string& path);
+  /// Saves the map as `prefix` + ".object_database".
+  void saveMetricMapRepresentationToFile(const std::string& prefix) const override;
+
+  MAP_DEFINITION_START(CObjectDatabaseMap)
+  ObjectDatabaseMapConfig config;  ///< from the section "<prefix>_options"
+  MAP_DEFINITION_END(CObjectDatabaseMap)
+
+ private:
+  void internal_clear() override;
+  bool internal_insertObservation(
+      const mrpt::obs::CObservation& obs,
+      const std::optional<const mrpt::poses::CPose3D>& robot_pose = std::nullopt) override;
+  double internal_computeObservationLikelihood(const mrpt::obs::CObservation&,
+                                               const mrpt::poses::CPose3D&) const override {
+    return 0.0;  // recognition is the product, not a likelihood for localization
+  }
+  bool internal_canComputeObservationLikelihood(const mrpt::obs::CObservation&) const override {
+    return false;
+  }
+
+  ObjectDatabaseMapConfig config_;
+  std::unique_ptr<objects::ObjectAcquisition> acquisition_;
+  std::vector<Eigen::Vector3d> learnt_at_;
+  objects::AcquisitionStep last_;
+  std::weak_ptr<CAppearanceMap> appearance_;
+  long appearance_frames_ = 0;  // the appearance map's frame count when this map last read it
+  int frames_used_ = 0;
+};
+
+/// Links every CObjectDatabaseMap in `maps` to the first CAppearanceMap there. Throws
+/// std::invalid_argument if there is an object database but no appearance map, or the appearance
+/// map comes after it (it would read the previous frame's products).
+void LinkObjectDatabaseMaps(mrpt::maps::CMultiMetricMap& maps);
+
+}  // namespace novelty::mrpt_plugins

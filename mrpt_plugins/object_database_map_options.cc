@@ -1,0 +1,68 @@
+#include "mrpt_plugins/object_database_map_options.h"
+
+#include "core/range_check.h"
+#include "maps/objects/feature_extractor.h"
+
+namespace novelty::mrpt_plugins {
+
+const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
+  using C = ObjectDatabaseMapConfig;
+  static const OptionTable<C> table = [] {
+    OptionTable<C> t;
+    t.AddChoice(
+         "extractor", [](C & c) -> auto& { return c.map.extractor; },
+         objects::FeatureExtractorNames(),
+         "features: msurf (the thesis's SURF), sift or akaze (OpenCV, float KAZE descriptor)")
+        .Add(
+            "xi", [](C & c) -> auto& { return c.map.focus.xi; },
+            "flood fill down to mean + xi * std of the surprise map (thesis 5.1: 2)")
+        .Add(
+            "morphology_size", [](C & c) -> auto& { return c.map.focus.morphology_size; },
+            "px, side of the closing and opening element (not in the thesis; 0 = none)")
+        .Add(
+            "static_distance_px", [](C & c) -> auto& { return c.map.learner.static_distance_px; },
+            "px, delta of eq. 5.1 (thesis: 2)")
+        .Add(
+            "match_ratio", [](C & c) -> auto& { return c.map.learner.match_ratio; },
+            "nearest / second-nearest distance ratio for a match (thesis 5.1: 0.65)")
+        .Add(
+            "min_surprising_share",
+            [](C & c) -> auto& { return c.map.learner.min_surprising_share; },
+            "T of eq. 5.5: share of a descriptor's window on surprise to learn it (thesis: 0.8)")
+        .Add(
+            "forget_after_frames",
+            [](C & c) -> auto& { return c.map.learner.forget_after_frames; },
+            "frames without selected features that drop the active features (thesis: 10)")
+        .Add(
+            "relative_descriptor_change",
+            [](C & c) -> auto& { return c.map.relative_descriptor_change; },
+            "eq. 5.2's bound without a second camera, share of the descriptor's norm (chosen)")
+        .Add(
+            "min_relative_depth_change",
+            [](C & c) -> auto& { return c.map.change.min_relative_difference; },
+            "added/removed: observed vs expected mean depth differ by this share (chosen: 5 %)")
+        .Add(
+            "min_known_depth_share",
+            [](C & c) -> auto& { return c.map.change.min_known_share; },
+            "added/removed: share of the region with both depths needed to tell (chosen)")
+        .Add(
+            "learn_unknown_change", [](C & c) -> auto& { return c.map.learn_unknown_change; },
+            "learn where added/removed cannot be told (true = the thesis, which always learnt)")
+        .Check([](const C& c) {
+          const objects::ObjectAcquisitionOptions& o = c.map;
+          CheckInRange(o.focus.xi, -10, 10, "xi");
+          CheckInRange(o.focus.morphology_size, 0, 101, "morphology_size");
+          CheckInRange(o.learner.static_distance_px, 1e-3, 100, "static_distance_px");
+          CheckInRange(o.learner.match_ratio, 1e-3, 1, "match_ratio");
+          CheckInRange(o.learner.min_surprising_share, 0, 1, "min_surprising_share");
+          CheckInRange(o.learner.forget_after_frames, 1, 100000, "forget_after_frames");
+          CheckInRange(o.relative_descriptor_change, 1e-6, 10, "relative_descriptor_change");
+          CheckInRange(o.change.min_relative_difference, 0, 10, "min_relative_depth_change");
+          CheckInRange(o.change.min_known_share, 0, 1, "min_known_depth_share");
+        });
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace novelty::mrpt_plugins

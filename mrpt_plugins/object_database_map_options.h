@@ -1,0 +1,21 @@
+// The options of CObjectDatabaseMap: the surprise-driven acquisition's (maps/objects/
+// object_acquisition.h) in one table (option_table.h), with the thesis's values as defaults —
+// share/object_database.ini is the dump of them (tested).
+#pragma once
+
+#include "maps/objects/object_acquisition.h"
+#include "mrpt_plugins/option_table.h"
+
+namespace novelty::mrpt_plugins {
+
+struct ObjectDatabaseMapConfig : public TabledOptions<ObjectDatabaseMapConfig> {
+  objects::ObjectAcquisitionOptions map;
+
+  static const OptionTable<ObjectDatabaseMapConfig>& Table();
+  static constexpr const char* kClass = "CObjectDatabaseMap";
+  /// The options section of the first CObjectDatabaseMap of a CMultiMetricMap .ini whose maps are
+  /// declared in [map] (MRPT's naming: <section>_<Class>_<NN>_options), as in share/*.ini.
+  static constexpr const char* kSection = "map_CObjectDatabaseMap_00_options";
+};
+
+}  // namespace novelty::mrpt_plugins

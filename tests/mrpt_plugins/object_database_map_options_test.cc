@@ -1,0 +1,62 @@
+#include "mrpt_plugins/object_database_map_options.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace novelty::mrpt_plugins {
+namespace {
+
+// The file without its leading comment lines.
+std::string Body(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, body;
+  while (std::getline(in, line))
+    if (!(body.empty() && line.rfind('#', 0) == 0)) body += line + "\n";
+  return body;
+}
+
+const std::string kShipped = std::string(NOVELTY_SOURCE_DIR) + "/share/object_database.ini";
+
+TEST(ObjectDatabaseMapOptions, ShippedIniIsTheDumpOfTheDefaults) {
+  std::ostringstream dump;
+  ObjectDatabaseMapConfig().dumpAsMultiMap(dump);
+  EXPECT_EQ(Body(kShipped), dump.str())
+      << "regenerate with: build/bin/novelty-info --dump-options CObjectDatabaseMap";
+}
+
+// Thesis 5.1: ξ = 2, δ = 2 px, ratio 0.65, T = 0.8, active features dropped after 10 frames,
+// SURF features.
+TEST(ObjectDatabaseMapOptions, ShippedIniGivesTheThesisValues) {
+  const auto c =
+      ObjectDatabaseMapConfig::FromFile(kShipped, ObjectDatabaseMapConfig::kSection);
+  EXPECT_EQ(c.map.extractor, objects::FeatureExtractor::kMSurf);
+  EXPECT_EQ(c.map.focus.xi, 2.0);
+  EXPECT_EQ(c.map.learner.static_distance_px, 2.0);
+  EXPECT_EQ(c.map.learner.match_ratio, 0.65);
+  EXPECT_EQ(c.map.learner.min_surprising_share, 0.8);
+  EXPECT_EQ(c.map.learner.forget_after_frames, 10);
+  EXPECT_TRUE(c.map.learn_unknown_change);
+}
+
+TEST(ObjectDatabaseMapOptions, BadValuesNameTheKey) {
+  for (const char* line : {"extractor = surf", "match_ratio = 1.5", "forget_after_frames = 0",
+                           "min_surprising_share = -0.1", "relative_descriptor_change = 0",
+                           "xi = nan", "no_such_key = 1"}) {
+    const std::string key = std::string(line).substr(0, std::string(line).find(' '));
+    try {
+      ObjectDatabaseMapConfig::FromConfig(
+          mrpt::config::CConfigFileMemory(std::string("[o]\n") + line + "\n"), "o", "test.ini");
+      ADD_FAILURE() << line;
+    } catch (const std::runtime_error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("test.ini"), std::string::npos) << what;
+      EXPECT_NE(what.find(key), std::string::npos) << what;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace novelty::mrpt_plugins
