@@ -20,7 +20,12 @@
 //   OUT/report.html        the findings, plots of AS/PAS over frames, a table per object and
 //                          phase, panels,
 // and the map (OUT/map.appearance_map, or --map-out; --map-in continues from a saved map) with
-// its reference-view frusta as OUT/map.3Dscene for SceneViewer3D.
+// its reference-view frusta as OUT/map.3Dscene for SceneViewer3D. With a CObjectDatabaseMap in
+// the .ini (thesis ch. 5, share/object_database.ini) also
+//   OUT/objects.csv        per frame its focus box, added/removed, features, recognition
+//                          (from --objects-from on: the appearance map learns the room first)
+//   OUT/map.object_database  the learnt database (--objects-in starts from a saved one: learnt
+//                          in one room, recognised in another).
 // Progress on stderr.
 //
 // Exit status: 0 done; 1 an error (one line on stderr; nothing overwritten, no map saved when no
@@ -51,12 +56,14 @@
 #include "eval/first_run.h"
 #include "eval/html_report.h"
 #include "eval/novelty_panel.h"
+#include "eval/object_steps_csv.h"
 #include "eval/selectivity_csv.h"
 #include "eval/selectivity_findings.h"
 #include "maps/appearance/appearance_map.h"
 #include "maps/appearance/differencing_map.h"
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
+#include "mrpt_plugins/c_object_database_map.h"
 #include "mrpt_plugins/multi_map_config.h"
 #include "mrpt_plugins/option_table.h"
 #include "mrpt_plugins/rawlog_map_player.h"
@@ -137,6 +144,7 @@ struct RunMaps {
       inits.push_back(d);
     }
     multi.setListOfMaps(inits);
+    mrpt_plugins::LinkObjectDatabaseMaps(multi);  // an object database reads the appearance map
   }
 
   mrpt_plugins::CAppearanceMap& appearance(std::size_t k = 0) const {
@@ -144,6 +152,10 @@ struct RunMaps {
   }
   mrpt_plugins::CDifferencingMap& differencing(std::size_t k = 0) const {
     return *multi.mapByClass<mrpt_plugins::CDifferencingMap>(k);
+  }
+  /// The object database, if the .ini declares one.
+  mrpt_plugins::CObjectDatabaseMap* objects() const {
+    return multi.mapByClass<mrpt_plugins::CObjectDatabaseMap>().get();
   }
 };
 
@@ -239,9 +251,10 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
 
 // What the command line asks for.
 struct RunArgs {
-  std::string rawlog, truth, out, config, map_in, map_out, compare_views;
+  std::string rawlog, truth, out, config, map_in, map_out, compare_views, objects_in;
   std::optional<int> max_frames;
   int panels_every = 10;
+  int objects_from = 1;
   std::string pose_source = "groundtruth";
   double reduction = 1.0;
 };
@@ -271,6 +284,15 @@ RunArgs ParseArgs(int argc, char** argv) {
   TCLAP::ValueArg<std::string> map_out(
       "", "map-out", "Save the appearance map here (default OUT/map.appearance_map)", false, "",
       "M", cmd);
+  TCLAP::ValueArg<std::string> objects_in(
+      "", "objects-in",
+      "Start the CObjectDatabaseMap (declared in --config) from a saved object database",
+      false, "", "D", cmd);
+  TCLAP::ValueArg<int> objects_from(
+      "", "objects-from",
+      "The CObjectDatabaseMap takes frames from this one on (default 1); before, the appearance "
+      "map learns the room alone (the thesis's I1: 361 for share/scenarios/object_learning.scn)",
+      false, 1, "N", cmd);
   std::vector<std::string> pose_sources = {"groundtruth", "rawlog", "odometry"};
   TCLAP::ValuesConstraint<std::string> allowed_poses(pose_sources);
   TCLAP::ValueArg<std::string> pose_source(
@@ -295,6 +317,9 @@ RunArgs ParseArgs(int argc, char** argv) {
   a.out = out.getValue();
   a.config = config.getValue();
   a.map_in = map_in.getValue();
+  a.objects_in = objects_in.getValue();
+  a.objects_from = objects_from.getValue();
+  if (a.objects_from < 1) throw std::invalid_argument("--objects-from must be >= 1");
   a.map_out = map_out.isSet() ? map_out.getValue() : a.out + "/map.appearance_map";
   a.compare_views = compare_views.getValue();
   if (max_frames.isSet()) a.max_frames = max_frames.getValue();
@@ -341,13 +366,23 @@ Played Play(const RunArgs& a, RunMaps& maps, const sim::GroundTruthReader& groun
             mrpt_plugins::RawlogMapPlayer& player) {
   mrpt_plugins::CAppearanceMap& map = maps.appearance();
   eval::SelectivityCsv csv(a.out + "/metrics.csv");
+  std::optional<eval::ObjectStepsCsv> object_steps;
+  if (maps.objects()) object_steps.emplace(a.out + "/objects.csv");
+  int objects_used = 0;  // frames the object database took so far
+  if (maps.objects()) maps.objects()->setPaused(a.objects_from > 1);
   Played run;
   int index = 0;
   const auto start = std::chrono::steady_clock::now();
   while ((!a.max_frames || run.frames < *a.max_frames) && player.Next(maps.multi, index)) {
+    // The next frame is index + 1: the object database takes it from --objects-from on.
+    if (maps.objects()) maps.objects()->setPaused(index + 1 < a.objects_from);
     const appearance::AppearanceProducts& p = map.lastProducts();
     const appearance::DifferencingProducts& d = maps.differencing().lastProducts();
     ++run.frames;
+    if (object_steps && maps.objects()->framesUsed() != objects_used) {
+      objects_used = maps.objects()->framesUsed();
+      object_steps->Add(index, maps.objects()->lastStep(), maps.objects()->database().features());
+    }
     for (const auto& [object, region] : ground_truth.ChangedRegions(index, 30)) {
       run.rows.push_back({index, object, eval::AttentionalSelectivity(p.surprise, region),
                           eval::AttentionalSelectivity(d.difference, region)});
@@ -415,6 +450,12 @@ int main(int argc, char** argv) {
                    "and --view-reduction apply to the other maps)\n",
                    a.map_in.c_str());
     }
+    if (!a.objects_in.empty()) {
+      if (!maps.objects())
+        throw std::invalid_argument("--objects-in " + a.objects_in +
+                                    ": --config declares no CObjectDatabaseMap to load it into");
+      maps.objects()->LoadFromFile(a.objects_in);
+    }
     const sim::GroundTruthReader ground_truth(a.truth);
     std::filesystem::create_directories(a.out + "/panels");
     if (const auto parent = std::filesystem::path(a.map_out).parent_path(); !parent.empty())
@@ -439,6 +480,11 @@ int main(int argc, char** argv) {
                 run.panel_frames, run.frames, run.seconds, map.map().store().size(), notes);
     map.SaveToFile(a.map_out);
     map.SaveSceneFile(a.out + "/map.3Dscene");  // for SceneViewer3D
+    if (const mrpt_plugins::CObjectDatabaseMap* objects = maps.objects()) {
+      objects->SaveToFile(a.out + "/map.object_database");
+      std::printf("  objects: %s/objects.csv, %s/map.object_database\n  %s\n", a.out.c_str(),
+                  a.out.c_str(), objects->asString().c_str());
+    }
     std::printf(
         "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
         "  map:     %s (%s)\n  report:  %s/report.html\n",

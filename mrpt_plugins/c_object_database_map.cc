@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -26,7 +27,7 @@ namespace {
 
 // Bounds on what a map file may claim before anything is allocated: a corrupt count must not ask
 // for gigabytes.
-constexpr int32_t kMaxObjects = 1 << 20, kMaxFeatures = 1 << 24;
+constexpr int32_t kMaxObjects = 1 << 16, kMaxFeatures = 1 << 22;
 
 void WriteVector(mrpt::serialization::CArchive& out, const Eigen::Vector3d& p) {
   out << p.x() << p.y() << p.z();
@@ -72,8 +73,9 @@ bool CObjectDatabaseMap::internal_insertObservation(
     throw std::logic_error(
         "CObjectDatabaseMap: not linked to a CAppearanceMap (call LinkObjectDatabaseMaps(multimap) "
         "after its maps are made)");
-  if (appearance->framesInserted() == appearance_frames_) return false;  // it did not take it
+  const bool taken = appearance->framesInserted() != appearance_frames_;
   appearance_frames_ = appearance->framesInserted();
+  if (!taken || paused_) return false;
   const core::Frame& f = appearance->lastFrame();
   const appearance::AppearanceProducts& p = appearance->lastProducts();
   last_ = acquisition_->Process(f.rgb, f.depth, p.surprise, p.expected_depth, f.camera,
@@ -91,6 +93,13 @@ void CObjectDatabaseMap::internal_clear() {
   frames_used_ = 0;
 }
 
+std::vector<Eigen::Vector3d> CObjectDatabaseMap::learntAt() const {
+  std::vector<Eigen::Vector3d> at = learnt_at_;
+  at.resize(std::size_t(database().objects()),
+            Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
+  return at;
+}
+
 std::string CObjectDatabaseMap::asString() const {
   const objects::FeatureDatabase& db = database();
   std::vector<int> features(std::size_t(db.objects()), 0);
@@ -98,8 +107,9 @@ std::string CObjectDatabaseMap::asString() const {
   std::ostringstream s;
   s << "CObjectDatabaseMap: " << db.objects() << " objects, " << db.features() << " "
     << objects::FeatureExtractorName(config_.map.extractor) << " features";
+  const std::vector<Eigen::Vector3d> learnt_at = learntAt();
   for (int k = 0; k < db.objects(); ++k) {
-    const Eigen::Vector3d& at = learnt_at_[std::size_t(k)];
+    const Eigen::Vector3d& at = learnt_at[std::size_t(k)];
     s << "\n  object " << k << ": " << features[std::size_t(k)] << " features, learnt from ("
       << at.x() << ", " << at.y() << ", " << at.z() << ")";
   }
@@ -167,7 +177,7 @@ void CObjectDatabaseMap::serializeTo(mrpt::serialization::CArchive& out) const {
     for (const auto& [object, n] : counts) out << int32_t(object) << int32_t(n);
   }
   for (int h = 0; h < d.rows; ++h) WriteVector(out, db.Position(h));
-  for (const Eigen::Vector3d& at : learnt_at_) WriteVector(out, at);
+  for (const Eigen::Vector3d& at : learntAt()) WriteVector(out, at);
 }
 
 void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
@@ -184,25 +194,28 @@ void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
     Corrupt("descriptors of width " + std::to_string(cols) + ", but " +
             objects::FeatureExtractorName(config.map.extractor) + " gives " +
             std::to_string(width));
-  cv::Mat d(rows, rows ? cols : 0, CV_32F);
-  for (int h = 0; h < rows; ++h) in.ReadBufferFixEndianness(d.ptr<float>(h), std::size_t(cols));
-  objects::FeatureDatabase::Counts counts(static_cast<std::size_t>(rows));
-  for (auto& c : counts) {
+  // Everything grows as it is read, never by what the file claims: a truncated or corrupt file
+  // fails at its end, having allocated no more than it held.
+  cv::Mat d(0, width, CV_32F), row(1, width, CV_32F);
+  for (int h = 0; h < rows; ++h) {
+    in.ReadBufferFixEndianness(row.ptr<float>(), std::size_t(width));
+    d.push_back(row);
+  }
+  objects::FeatureDatabase::Counts counts;
+  for (int h = 0; h < rows; ++h) {
     uint32_t n = 0;
     in >> n;
     if (n > uint32_t(objects)) Corrupt(std::to_string(n) + " counts for a feature");
-    c.resize(n);
-    for (auto& [object, count] : c) {
+    counts.emplace_back();
+    for (uint32_t i = 0; i < n; ++i) {
       int32_t k = 0, m = 0;
       in >> k >> m;
-      object = k;
-      count = m;
+      counts.back().emplace_back(k, m);
     }
   }
-  std::vector<Eigen::Vector3d> positions(static_cast<std::size_t>(rows)),
-      learnt_at(static_cast<std::size_t>(objects));
-  for (auto& p : positions) p = ReadVector(in);
-  for (auto& p : learnt_at) p = ReadVector(in);
+  std::vector<Eigen::Vector3d> positions, learnt_at;
+  for (int h = 0; h < rows; ++h) positions.push_back(ReadVector(in));
+  for (int k = 0; k < objects; ++k) learnt_at.push_back(ReadVector(in));
   auto acquisition = std::make_unique<objects::ObjectAcquisition>(config.map);
   try {
     acquisition->learner().database() =

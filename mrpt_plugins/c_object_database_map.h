@@ -52,12 +52,20 @@ class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::C
   /// The last used frame's step (empty before the first).
   const objects::AcquisitionStep& lastStep() const { return last_; }
   const objects::FeatureDatabase& database() const { return acquisition_->learner().database(); }
+  /// For tools that build or edit a database themselves (a baseline's, a merge); objects added
+  /// here have no place they were learnt from (NaN in learntAt()).
+  objects::FeatureDatabase& database() { return acquisition_->learner().database(); }
   const objects::ObjectAcquisition& acquisition() const { return *acquisition_; }
   const ObjectDatabaseMapConfig& config() const { return config_; }
-  /// Per object, the camera position (world) of the frame that gave it its class.
-  const std::vector<Eigen::Vector3d>& learntAt() const { return learnt_at_; }
+  /// Per object, the camera position (world) of the frame that gave it its class; NaN unknown.
+  std::vector<Eigen::Vector3d> learntAt() const;
   /// Frames used (the appearance map took them).
   int framesUsed() const { return frames_used_; }
+  /// While paused, observations are not used (insertObservation returns false): the appearance
+  /// map learns the room first, as in the thesis's sequence I1, and surprise at sensor noise in a
+  /// map still being built teaches no object. Not saved with the map.
+  void setPaused(bool paused) { paused_ = paused; }
+  bool paused() const { return paused_; }
 
   void SaveToFile(const std::string& path) const;
   /// Replaces this map by the CObjectDatabaseMap in `path`; throws std::runtime_error naming the
@@ -90,6 +98,7 @@ class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::C
   std::weak_ptr<CAppearanceMap> appearance_;
   long appearance_frames_ = 0;  // the appearance map's frame count when this map last read it
   int frames_used_ = 0;
+  bool paused_ = false;
 };
 
 /// Links every CObjectDatabaseMap in `maps` to the first CAppearanceMap there. Throws

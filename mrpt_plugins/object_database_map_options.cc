@@ -47,7 +47,8 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "added/removed: share of the region with both depths needed to tell (chosen)")
         .Add(
             "learn_unknown_change", [](C & c) -> auto& { return c.map.learn_unknown_change; },
-            "learn where added/removed cannot be told (true = the thesis, which always learnt)")
+            "learn where depth cannot tell added from removed (true = the thesis, which always "
+            "learnt); equal depths are never learnt")
         .Check([](const C& c) {
           const objects::ObjectAcquisitionOptions& o = c.map;
           CheckInRange(o.focus.xi, -10, 10, "xi");

@@ -35,8 +35,9 @@ ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observ
   c.predicted_depth = predicted / double(known);
   if (c.known_share < options.min_known_share) return c;
   const double relative = (c.observed_depth - c.predicted_depth) / c.predicted_depth;
-  if (relative <= -options.min_relative_difference) c.kind = ChangeKind::kAdded;
-  if (relative >= options.min_relative_difference) c.kind = ChangeKind::kRemoved;
+  c.kind = relative <= -options.min_relative_difference  ? ChangeKind::kAdded
+           : relative >= options.min_relative_difference ? ChangeKind::kRemoved
+                                                         : ChangeKind::kUnchanged;
   return c;
 }
 

@@ -2,14 +2,21 @@
 // An object put down is nearer to the camera than what the map predicts there; an object taken
 // away leaves the farther background it hid. The region's observed mean depth against the mean
 // depth the map predicts for the same pixels tells them apart — so that the learner learns the
-// added object and never the background a removed one uncovers.
+// added object and never the background a removed one uncovers. Equal depths say that the
+// region's shape did not change: a change of light or colour, or sensor noise — no object to
+// learn (nor one as flat as a sheet of paper: its millimetres are below any depth sensor's noise).
 #pragma once
 
 #include <opencv2/core.hpp>
 
 namespace novelty::objects {
 
-enum class ChangeKind { kUnknown, kAdded, kRemoved };
+enum class ChangeKind {
+  kUnknown,    ///< too few pixels with both depths to tell
+  kAdded,      ///< nearer than predicted
+  kRemoved,    ///< farther than predicted
+  kUnchanged,  ///< both depths known and within min_relative_difference of each other
+};
 
 struct ChangeKindOptions {
   /// The means must differ by at least this fraction of the predicted depth: 5 % is about three

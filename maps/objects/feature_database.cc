@@ -6,6 +6,12 @@
 
 namespace novelty::objects {
 
+namespace {
+// A feature seen on every frame of a year at 30 Hz stays far below; sums over the objects of a
+// feature stay within 64 bits.
+constexpr int kMaxCount = 1 << 30;
+}  // namespace
+
 void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
                                   const std::vector<Eigen::Vector3d>& positions) {
   if (object < 0 || object >= objects_)
@@ -44,7 +50,7 @@ FeatureDatabase FeatureDatabase::FromParts(int objects, const cv::Mat& descripto
   for (std::size_t h = 0; h < n; ++h) {
     if (counts[h].empty()) fail("feature " + std::to_string(h) + " belongs to no object");
     for (const auto& [object, count] : counts[h])
-      if (object < 0 || object >= objects || count < 1)
+      if (object < 0 || object >= objects || count < 1 || count > kMaxCount)
         fail("feature " + std::to_string(h) + ": count " + std::to_string(count) + " on object " +
              std::to_string(object) + " of " + std::to_string(objects));
   }
@@ -77,7 +83,7 @@ int FeatureDatabase::Count(int h, int k) const {
 
 double FeatureDatabase::RelativeFrequency(int h, int k) const {
   CheckFeature(h);
-  int total = 0;
+  long long total = 0;
   for (const auto& entry : n_[std::size_t(h)]) total += entry.second;
   return total > 0 ? double(Count(h, k)) / total : 0.0;  // eq. 5.3
 }
@@ -100,7 +106,7 @@ FeatureDatabase::Recognition FeatureDatabase::Recognize(const cv::Mat& selected,
     const int k = MostProbableObject(m.reference);
     ++r.matches_per_object[std::size_t(k)];
     for (auto& entry : n_[std::size_t(m.reference)])
-      if (entry.first == k) ++entry.second;  // n_{h,M} += 1
+      if (entry.first == k && entry.second < kMaxCount) ++entry.second;  // n_{h,M} += 1
   }
   int best = 0;
   for (int k = 0; k < objects_; ++k) {  // eq. 5.4

@@ -60,8 +60,9 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
   if (!step.focus.box.empty() && !expected_depth.empty())
     step.change = ClassifyChange(step.focus.region, depth, expected_depth, options_.change);
   const ChangeKind kind = step.change.kind;
-  step.learning = !step.focus.box.empty() && kind != ChangeKind::kRemoved &&
-                  (kind == ChangeKind::kAdded || options_.learn_unknown_change);
+  step.learning = !step.focus.box.empty() &&
+                  (kind == ChangeKind::kAdded ||
+                   (kind == ChangeKind::kUnknown && options_.learn_unknown_change));
   SelectedFeatures features;
   if (step.learning) features = Extract(rgb, depth, step.focus.box, camera, step);
   step.learner = learner_.Process(step.focus, features, camera, T_world_cam);

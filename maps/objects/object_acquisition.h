@@ -2,7 +2,8 @@
 //   1. the focus of attention on the frame's surprise map (focus_of_attention.h);
 //   2. added or removed (change_kind.h): the focus region's observed depth against the depth the
 //      appearance map expects there; a removed object's region shows the background it hid, and
-//      none of its features are learnt (the frame counts as one without selected features);
+//      an unchanged depth says the surprise is not an object (light, noise): in both, no feature
+//      is extracted or learnt (the frame counts as one without selected features);
 //   3. features inside the focus box, by the chosen extractor (feature_extractor.h);
 //   4. their 3-D positions from the frame's depth (the thesis matched along the other camera's
 //      epipolar lines; sensors/localization/epipolar_feature_matching.h does that for a rig);
@@ -36,14 +37,16 @@ struct ObjectAcquisitionOptions {
   /// features about 1 apart (msurf_test.cc on graf).
   double relative_descriptor_change = 0.3;
   /// Learn where the appearance map expects no depth, or too little of the region has both
-  /// depths to tell added from removed (ChangeKind::kUnknown): the thesis always learnt.
+  /// depths to tell added from removed (ChangeKind::kUnknown): the thesis always learnt. Where
+  /// both depths are known and equal (kUnchanged) nothing is learnt.
   bool learn_unknown_change = true;
 };
 
 struct AcquisitionStep {
   FocusOfAttention focus;
   ChangeClassification change;  ///< kUnknown also when no expected depth was given
-  bool learning = false;  ///< the box's features went to the learner (not removed, box found)
+  bool learning = false;  ///< the box's features went to the learner (added, or unknown and
+                          ///< learn_unknown_change; a box found)
   int extracted = 0;      ///< features extracted in the box
   int reconstructed = 0;  ///< of them, with a depth
   LearnerStep learner;

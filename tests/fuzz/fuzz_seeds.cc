@@ -1,6 +1,7 @@
 // Writes the seed corpora the fuzzers start from, made by the code they fuzz (so that seeds follow
 // the formats): fuzz_seeds OUT_DIR SOURCE_DIR
-//   OUT/map_file/   a small appearance map and a differencing map (class byte + plain archive)
+//   OUT/map_file/   a small appearance map, a differencing map and an object database (class
+//                   byte + plain archive)
 //   OUT/rawlog/     a small plain rawlog: robot poses and RGB-D frames with their images inside
 //   OUT/scenario/   the shipped scenarios        OUT/ini/   the shipped .ini files
 //   and in each, the inputs of tests/fuzz/regressions/<target>/ that a fuzzer once failed on
@@ -16,6 +17,7 @@
 
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
+#include "mrpt_plugins/c_object_database_map.h"
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/rgbd_observation.h"
 #include "sim/scenario/scenario_parser.h"
@@ -96,6 +98,17 @@ int main(int argc, char** argv) {
   }
   WriteMap(appearance, 0, out / "map_file" / "appearance");
   WriteMap(differencing, 1, out / "map_file" / "differencing");
+  {  // an object database of two objects, five features each, one of them seen twice
+    mrpt_plugins::CObjectDatabaseMap objects;
+    objects::FeatureDatabase& db = objects.database();
+    cv::Mat d(10, 64, CV_32F);
+    cv::RNG(1).fill(d, cv::RNG::NORMAL, 0.0, 1.0);
+    db.AddFeatures(d.rowRange(0, 5), db.AddObject(),
+                   std::vector<Eigen::Vector3d>(5, Eigen::Vector3d(1, 2, 0.8)));
+    db.AddFeatures(d.rowRange(5, 10), db.AddObject());
+    db.Recognize(d.rowRange(0, 2));
+    WriteMap(objects, 2, out / "map_file" / "object_database");
+  }
   CopyAll(source / "share" / "scenarios", ".scn", out / "scenario");
   CopyAll(source / "share", ".ini", out / "ini");
   fs::copy_file(source / "examples" / "maps.ini", out / "ini" / "example_maps.ini",

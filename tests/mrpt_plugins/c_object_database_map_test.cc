@@ -202,6 +202,15 @@ TEST(CObjectDatabaseMap, AFileWhoseDescriptorsAreNotItsExtractorsIsRefused) {
   huge.Seek(0);
   auto in2 = mrpt::serialization::archiveFrom(huge);
   EXPECT_THROW(reader.serializeFrom(in2, 0), std::runtime_error);
+  // A count within the bounds, in a file that ends there: read as far as the file goes (no
+  // allocation by the claim), then an error.
+  mrpt::io::CMemoryStream short_file;
+  auto out3 = mrpt::serialization::archiveFrom(short_file);
+  ObjectDatabaseMapConfig::Table().Write(out3, ObjectDatabaseMapConfig());
+  out3 << int32_t(1) << int32_t(1 << 22) << int32_t(64);
+  short_file.Seek(0);
+  auto in3 = mrpt::serialization::archiveFrom(short_file);
+  EXPECT_ANY_THROW(reader.serializeFrom(in3, 0));
   EXPECT_EQ(reader.database().features(), 0);
 }
 

@@ -28,7 +28,7 @@ TEST(ChangeKind, NearerIsAddedFartherIsRemoved) {
   // A change of colour only (a lamp, a sheet of paper): same depth.
   cv::Mat same = s.predicted.clone();
   same(cv::Rect(50, 40, 40, 30)).setTo(1.49f);
-  EXPECT_EQ(ClassifyChange(s.region, same, s.predicted).kind, ChangeKind::kUnknown);
+  EXPECT_EQ(ClassifyChange(s.region, same, s.predicted).kind, ChangeKind::kUnchanged);
 }
 
 TEST(ChangeKind, UnknownDepthsCountOnlyWhereBothAreKnown) {

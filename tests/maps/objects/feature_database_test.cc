@@ -115,6 +115,8 @@ TEST(FeatureDatabase, RebuiltFromItsPartsItIsTheSame) {
   EXPECT_THROW(FeatureDatabase::FromParts(1, d, {{{0, 0}}}, one), std::invalid_argument)
       << "a zero count";
   EXPECT_THROW(FeatureDatabase::FromParts(1, d, {{}}, one), std::invalid_argument) << "no owner";
+  EXPECT_THROW(FeatureDatabase::FromParts(1, d, {{{0, (1 << 30) + 1}}}, one), std::invalid_argument)
+      << "a count no run gives (and sums of which would overflow)";
   EXPECT_THROW(FeatureDatabase::FromParts(1, d, {}, one), std::invalid_argument) << "no counts";
   cv::Mat nan = d.clone();
   nan.at<float>(0, 3) = std::nanf("");

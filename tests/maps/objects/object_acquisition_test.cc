@@ -132,6 +132,20 @@ TEST(ObjectAcquisition, NeverLearnsTheBackgroundARemovedObjectUncovers) {
   EXPECT_TRUE(acquisition.learner().active().empty());
 }
 
+// A surprise where the map expects the depth the frame has (a new print on a known surface, a
+// shadow, sensor noise): no object to learn.
+TEST(ObjectAcquisition, NeverLearnsWhereOnlyTheLookChanged) {
+  ObjectAcquisition acquisition;
+  for (int t = 0; t < 12; ++t) {
+    const Rendered r = Render(t, true);
+    const AcquisitionStep s =
+        acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), r.depth, kCamera, Pose(t));
+    EXPECT_EQ(s.change.kind, ChangeKind::kUnchanged) << "frame " << t;
+    EXPECT_FALSE(s.learning);
+  }
+  EXPECT_EQ(acquisition.learner().database().features(), 0);
+}
+
 TEST(ObjectAcquisition, EveryExtractorLearnsTheAddedFace) {
   for (const std::string& name : FeatureExtractorNames()) {
     ObjectAcquisitionOptions o;
