@@ -1,6 +1,7 @@
 #include "maps/objects/fast_hessian.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <opencv2/core/utility.hpp>
 #include <stdexcept>
@@ -13,7 +14,9 @@ namespace novelty::objects {
 namespace {
 
 // Filter side of interval i (0…3) in octave o.
-int FilterSize(int octave, int interval) { return 3 * ((2 << octave) * (interval + 1) + 1); }
+int FilterSize(int octave, int interval) {
+  return 3 * ((2 << octave) * (interval + 1) + 1);
+}
 
 // det H and the trace's sign of one filter size over one octave's sampling grid.
 struct Layer {
@@ -22,16 +25,31 @@ struct Layer {
   cv::Mat laplacian;  // CV_8S
 };
 
-Layer ComputeLayer(const cv::Mat& integral, int size, int step, int rows, int cols) {
+// The samples (rows, columns of a grid of `step` px) whose image position lies in `area`.
+struct SampleRange {
+  cv::Range rows, cols;
+};
+
+SampleRange SamplesIn(const cv::Rect& area, int step, int rows, int cols) {
+  const auto first = [step](int px) { return (px + step - 1) / step; };
+  const auto last = [step](int px) { return px / step; };
+  return {
+      cv::Range(std::min(first(area.y), rows), std::min(last(area.y + area.height - 1) + 1, rows)),
+      cv::Range(std::min(first(area.x), cols), std::min(last(area.x + area.width - 1) + 1, cols))};
+}
+
+// det H and the trace's sign at the samples of `in`; 0 elsewhere (below any threshold).
+Layer ComputeLayer(const cv::Mat& integral, int size, int step, int rows, int cols,
+                   const SampleRange& in) {
   Layer l;
   l.size = size;
-  l.det.create(rows, cols, CV_32F);
-  l.laplacian.create(rows, cols, CV_8S);
-  cv::parallel_for_(cv::Range(0, rows), [&](const cv::Range& range) {
+  l.det = cv::Mat::zeros(rows, cols, CV_32F);
+  l.laplacian = cv::Mat::zeros(rows, cols, CV_8S);
+  cv::parallel_for_(in.rows, [&](const cv::Range& range) {
     for (int r = range.start; r < range.end; ++r) {
       float* det = l.det.ptr<float>(r);
       schar* laplacian = l.laplacian.ptr<schar>(r);
-      for (int c = 0; c < cols; ++c) {
+      for (int c = in.cols.start; c < in.cols.end; ++c) {
         int sign = 0;
         det[c] = HessianDeterminant(integral, r * step, c * step, size, &sign);
         laplacian[c] = schar(sign);
@@ -106,22 +124,37 @@ float HessianDeterminant(const cv::Mat& integral, int row, int col, int size, in
   const double dyy = BoxSum(integral, row - b, col - l + 1, size, 2 * l - 1) -
                      3.0 * BoxSum(integral, row - l / 2, col - l + 1, l, 2 * l - 1);
   // −∂²/∂x∂y (the sign does not matter: only Dxy² enters).
-  const double dxy = BoxSum(integral, row - l, col + 1, l, l) + BoxSum(integral, row + 1, col - l, l, l) -
-                     BoxSum(integral, row - l, col - l, l, l) - BoxSum(integral, row + 1, col + 1, l, l);
+  const double dxy =
+      BoxSum(integral, row - l, col + 1, l, l) + BoxSum(integral, row + 1, col - l, l, l) -
+      BoxSum(integral, row - l, col - l, l, l) - BoxSum(integral, row + 1, col + 1, l, l);
   const double area = double(size) * size;  // normalises the response to the filter size
   if (laplacian) *laplacian = dxx + dyy >= 0.0 ? 1 : -1;
   return float((dxx * dyy - 0.81 * dxy * dxy) / (area * area));  // Bay eq. 4, w = 0.9
 }
 
 std::vector<HessianPoint> DetectFastHessian(const cv::Mat& integral,
-                                            const FastHessianOptions& options) {
+                                            const FastHessianOptions& options,
+                                            const cv::Rect& region) {
   if (integral.type() != CV_64FC1 || integral.rows < 2 || integral.cols < 2)
     throw std::invalid_argument("DetectFastHessian: expected a CV_64F integral image");
   if (!(options.threshold >= 0.0) || options.octaves < 1 || options.octaves > 8 ||
       options.init_step < 1 || options.init_step > 8)
-    throw std::invalid_argument("DetectFastHessian: threshold must be >= 0, octaves in 1..8, "
-                                "init_step in 1..8");
+    throw std::invalid_argument(
+        "DetectFastHessian: threshold must be >= 0, octaves in 1..8, "
+        "init_step in 1..8");
   const int height = integral.rows - 1, width = integral.cols - 1;
+  const cv::Rect image(0, 0, width, height);
+  const cv::Rect searched = region.empty() ? image : region & image;
+  // A maximum found at a sample within one step of `searched` (its refined position may round
+  // into it) reads its neighbours and their neighbours, two steps out, at most 2·(init_step <<
+  // (octaves − 1)) px; and octave o + 1 reads octave o's layers at its own samples. Responses
+  // within three coarsest steps of `searched` serve every octave exactly as the whole image.
+  const int margin = 3 * (options.init_step << (options.octaves - 1));
+  const cv::Rect computed =
+      region.empty() ? image
+                     : cv::Rect(searched.x - margin, searched.y - margin,
+                                searched.width + 2 * margin, searched.height + 2 * margin) &
+                           image;
   std::vector<HessianPoint> points;
   std::vector<Layer> layers;  // this octave's four, after the octave before's
   for (int o = 0; o < options.octaves; ++o) {
@@ -137,14 +170,20 @@ std::vector<HessianPoint> DetectFastHessian(const cv::Mat& integral,
       if (o > 0 && i < 2) {
         layers.push_back(EverySecond(finer[std::size_t(2 * i + 1)], rows, cols));
       } else {
-        layers.push_back(ComputeLayer(integral, FilterSize(o, i), step, rows, cols));
+        layers.push_back(ComputeLayer(integral, FilterSize(o, i), step, rows, cols,
+                                      SamplesIn(computed, step, rows, cols)));
       }
     }
     for (int i = 1; i <= 2; ++i) {
       const Layer &b = layers[i - 1], &m = layers[i], &t = layers[i + 1];
       const int bound = bound_of(i);
-      for (int r = bound; r < rows - bound; ++r) {
-        for (int c = bound; c < cols - bound; ++c) {
+      const cv::Rect near(searched.x - step, searched.y - step, searched.width + 2 * step,
+                          searched.height + 2 * step);
+      const SampleRange candidates = SamplesIn(near & image, step, rows, cols);
+      for (int r = std::max(bound, candidates.rows.start);
+           r < std::min(rows - bound, candidates.rows.end); ++r) {
+        for (int c = std::max(bound, candidates.cols.start);
+             c < std::min(cols - bound, candidates.cols.end); ++c) {
           const float v = m.det.at<float>(r, c);
           if (!(v > options.threshold) || !IsMaximum(b, m, t, r, c)) continue;
           Eigen::Vector3d offset;

@@ -35,9 +35,13 @@ struct HessianPoint {
 /// odd), and the sign of the trace; `integral`: cv::integral of the 0…1 image, CV_64F.
 float HessianDeterminant(const cv::Mat& integral, int row, int col, int size, int* laplacian);
 
-/// The maxima of `integral` (cv::integral of the 0…1 image, CV_64F). Throws
-/// std::invalid_argument for a bad integral image or options.
+/// The maxima of `integral` (cv::integral of the 0…1 image, CV_64F). With a `region` (px), only
+/// those that may lie in it — within a sample of it — are searched, from responses computed
+/// near it only: the same points there as a search of the whole image gives, for the cost of
+/// the region (a focus of attention). Throws std::invalid_argument for a bad integral image or
+/// options.
 std::vector<HessianPoint> DetectFastHessian(const cv::Mat& integral,
-                                            const FastHessianOptions& options = {});
+                                            const FastHessianOptions& options = {},
+                                            const cv::Rect& region = cv::Rect());
 
 }  // namespace novelty::objects

@@ -1,9 +1,9 @@
 #include "maps/objects/msurf.h"
 
 #include <cmath>
-#include <string>
 #include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "maps/objects/box_filters.h"
 #include "maps/objects/msurf_descriptor.h"
@@ -19,7 +19,9 @@ constexpr float kSizePerScale = 10.0f;
 
 MSurf::MSurf(const MSurfOptions& options) : options_(options) {}
 
-cv::Ptr<MSurf> MSurf::create(const MSurfOptions& options) { return cv::makePtr<MSurf>(options); }
+cv::Ptr<MSurf> MSurf::create(const MSurfOptions& options) {
+  return cv::makePtr<MSurf>(options);
+}
 
 void MSurf::detectAndCompute(cv::InputArray image, cv::InputArray mask,
                              std::vector<cv::KeyPoint>& keypoints, cv::OutputArray descriptors,
@@ -27,10 +29,16 @@ void MSurf::detectAndCompute(cv::InputArray image, cv::InputArray mask,
   const cv::Mat integral = UnitIntegral(image);
   if (!use_provided_keypoints) {
     const cv::Mat m = mask.getMat();
-    CV_Assert(m.empty() || (m.type() == CV_8UC1 && m.rows == integral.rows - 1 &&
-                            m.cols == integral.cols - 1));
+    CV_Assert(m.empty() ||
+              (m.type() == CV_8UC1 && m.rows == integral.rows - 1 && m.cols == integral.cols - 1));
     keypoints.clear();
-    for (const HessianPoint& p : DetectFastHessian(integral, options_.detector)) {
+    // Only where the mask is: the detector computes responses near its bounding box alone.
+    const cv::Rect region = m.empty() ? cv::Rect() : cv::boundingRect(m);
+    if (!m.empty() && region.empty()) {  // nothing masked in
+      if (descriptors.needed()) descriptors.release();
+      return;
+    }
+    for (const HessianPoint& p : DetectFastHessian(integral, options_.detector, region)) {
       const int x = int(std::lround(p.pt.x)), y = int(std::lround(p.pt.y));
       if (!m.empty() && (x < 0 || y < 0 || x >= m.cols || y >= m.rows || !m.at<uchar>(y, x)))
         continue;
@@ -41,8 +49,8 @@ void MSurf::detectAndCompute(cv::InputArray image, cv::InputArray mask,
       cv::parallel_for_(cv::Range(0, int(keypoints.size())), [&](const cv::Range& range) {
         for (int i = range.start; i < range.end; ++i) {
           cv::KeyPoint& k = keypoints[std::size_t(i)];
-          float degrees = SurfOrientation(integral, k.pt, k.size / kSizePerScale) *
-                          float(180.0 / M_PI);
+          float degrees =
+              SurfOrientation(integral, k.pt, k.size / kSizePerScale) * float(180.0 / M_PI);
           k.angle = degrees < 0.0f ? degrees + 360.0f : degrees;
         }
       });

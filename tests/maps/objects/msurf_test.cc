@@ -292,6 +292,49 @@ TEST(MSurf, MasksAndGivenKeypointsWork) {
   EXPECT_EQ(surf->defaultNorm(), cv::NORM_L2);
 }
 
+// A mask restricts the search to its bounding box's neighbourhood (DetectFastHessian's region):
+// the keypoints and descriptors must be exactly those of the whole image that lie in the mask —
+// for boxes anywhere, at borders, narrower than a coarse octave's step, and for no box at all.
+TEST(MSurf, AMaskFindsExactlyTheWholeImagesKeypointsInIt) {
+  const cv::Mat a = Texture(200, 13);
+  const cv::Ptr<MSurf> surf = MSurf::create();
+  std::vector<cv::KeyPoint> all;
+  cv::Mat d_all;
+  surf->detectAndCompute(a, cv::noArray(), all, d_all);
+  int compared = 0;
+  for (const cv::Rect& box : {cv::Rect(60, 50, 70, 60), cv::Rect(0, 0, 40, 200),
+                              cv::Rect(150, 170, 50, 30), cv::Rect(97, 33, 5, 3),
+                              cv::Rect(10, 120, 180, 9)}) {
+    cv::Mat mask = cv::Mat::zeros(a.size(), CV_8U);
+    mask(box).setTo(255);
+    std::vector<cv::KeyPoint> masked;
+    cv::Mat d_masked;
+    surf->detectAndCompute(a, mask, masked, d_masked);
+    std::vector<int> expected;
+    for (int i = 0; i < int(all.size()); ++i) {
+      const int x = int(std::lround(all[std::size_t(i)].pt.x)),
+                y = int(std::lround(all[std::size_t(i)].pt.y));
+      if (box.contains({x, y})) expected.push_back(i);
+    }
+    ASSERT_EQ(masked.size(), expected.size()) << box;
+    for (std::size_t j = 0; j < masked.size(); ++j) {
+      const cv::KeyPoint &k = masked[j], &w = all[std::size_t(expected[j])];
+      EXPECT_EQ(k.pt, w.pt) << box;
+      EXPECT_EQ(k.size, w.size);
+      EXPECT_EQ(k.angle, w.angle);
+      EXPECT_EQ(k.response, w.response);
+      EXPECT_EQ(cv::norm(d_masked.row(int(j)), d_all.row(expected[j]), cv::NORM_INF), 0.0);
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 20);
+  std::vector<cv::KeyPoint> none;
+  cv::Mat d_none;
+  surf->detectAndCompute(a, cv::Mat::zeros(a.size(), CV_8U), none, d_none);
+  EXPECT_TRUE(none.empty());
+  EXPECT_TRUE(d_none.empty());
+}
+
 // How a feature fares on graf1 → graf3 (30° viewpoint change), measured against the true
 // homography H: repeatability (graf1 keypoints whose H-image lies in graf3 with a graf3 keypoint
 // within 3 px), matching score (ratio-test matches that H confirms within 3 px, over those
