@@ -80,8 +80,12 @@ bool CObjectDatabaseMap::internal_insertObservation(
   const appearance::AppearanceProducts& p = appearance->lastProducts();
   last_ = acquisition_->Process(f.rgb, f.depth, p.surprise, p.expected_depth, f.camera,
                                 *f.T_world_cam);
-  if (last_.learner.recognised == objects::LearnerStep::Recognised::kNewObject)
+  if (last_.learner.recognised == objects::LearnerStep::Recognised::kNewObject) {
+    // At the object's index: objects may have been added to the database by hand before.
+    learnt_at_.resize(std::size_t(last_.learner.object),
+                      Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()));
     learnt_at_.push_back(f.T_world_cam->translation());
+  }
   ++frames_used_;
   return true;
 }

@@ -51,7 +51,7 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "learnt); equal depths are never learnt")
         .Check([](const C& c) {
           const objects::ObjectAcquisitionOptions& o = c.map;
-          CheckInRange(o.focus.xi, -10, 10, "xi");
+          CheckInRange(o.focus.xi, 0, 10, "xi");
           CheckInRange(o.focus.morphology_size, 0, 101, "morphology_size");
           CheckInRange(o.learner.static_distance_px, 1e-3, 100, "static_distance_px");
           CheckInRange(o.learner.match_ratio, 1e-3, 1, "match_ratio");

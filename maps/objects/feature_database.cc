@@ -49,6 +49,11 @@ FeatureDatabase FeatureDatabase::FromParts(int objects, const cv::Mat& descripto
          std::to_string(positions.size()) + " positions");
   for (std::size_t h = 0; h < n; ++h) {
     if (counts[h].empty()) fail("feature " + std::to_string(h) + " belongs to no object");
+    for (std::size_t a = 0; a < counts[h].size(); ++a)
+      for (std::size_t b = a + 1; b < counts[h].size(); ++b)
+        if (counts[h][a].first == counts[h][b].first)
+          fail("feature " + std::to_string(h) + " counts object " +
+               std::to_string(counts[h][a].first) + " twice");
     for (const auto& [object, count] : counts[h])
       if (object < 0 || object >= objects || count < 1 || count > kMaxCount)
         fail("feature " + std::to_string(h) + ": count " + std::to_string(count) + " on object " +

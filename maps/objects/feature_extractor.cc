@@ -11,10 +11,11 @@ namespace {
 struct Extractor {
   int width;
   double window_per_size;
+  int window_angle_sign;
 };
 
 // In FeatureExtractor's order.
-constexpr Extractor kExtractors[] = {{64, 2.4}, {128, 6.0}, {64, 12.0}};
+constexpr Extractor kExtractors[] = {{64, 2.4, 1}, {128, 6.0, -1}, {64, 12.0, 1}};
 
 const Extractor& Of(FeatureExtractor e) {
   const int i = int(e);
@@ -60,5 +61,7 @@ cv::Ptr<cv::Feature2D> CreateFeatureExtractor(FeatureExtractor e) {
 int DescriptorWidth(FeatureExtractor e) { return Of(e).width; }
 
 double DescriptorWindowPerSize(FeatureExtractor e) { return Of(e).window_per_size; }
+
+int DescriptorWindowAngleSign(FeatureExtractor e) { return Of(e).window_angle_sign; }
 
 }  // namespace novelty::objects

@@ -32,4 +32,9 @@ int DescriptorWidth(FeatureExtractor e);
 /// 2.4; SIFT 4 bins of 3σ with OpenCV's size 2σ → 6; KAZE 24·scale with scale = size/2 → 12.
 double DescriptorWindowPerSize(FeatureExtractor e);
 
+/// How the descriptor's window turns with the keypoint's angle: +1 M-SURF (msurf_descriptor.h)
+/// and AKAZE's KAZE descriptor (M-SURF's pattern), −1 OpenCV's SIFT, which samples at
+/// 360° − angle.
+int DescriptorWindowAngleSign(FeatureExtractor e);
+
 }  // namespace novelty::objects

@@ -15,12 +15,22 @@ ObjectLearnerOptions LearnerOptionsFor(const ObjectAcquisitionOptions& o) {
   ObjectLearnerOptions l = o.learner;
   l.window_per_scale = DescriptorWindowPerSize(o.extractor);  // window per keypoint size
   l.size_per_scale = 1.0;
+  l.window_angle_sign = DescriptorWindowAngleSign(o.extractor);
   return l;
 }
 
 const ObjectAcquisitionOptions& Checked(const ObjectAcquisitionOptions& o) {
+  // Every option is checked here, so that bad ones fail when the map is made or loaded, not at
+  // every frame.
   if (!(o.relative_descriptor_change > 0.0))
     throw std::invalid_argument("ObjectAcquisitionOptions: relative_descriptor_change must be > 0");
+  if (!(o.focus.xi >= 0.0 && std::isfinite(o.focus.xi)) || o.focus.morphology_size < 0)
+    throw std::invalid_argument("ObjectAcquisitionOptions: xi must be finite and >= 0, "
+                                "morphology_size >= 0");
+  if (!(o.change.min_relative_difference >= 0.0) ||
+      !(o.change.min_known_share >= 0.0 && o.change.min_known_share <= 1.0))
+    throw std::invalid_argument("ObjectAcquisitionOptions: min_relative_difference must be >= 0, "
+                                "min_known_share in [0, 1]");
   DescriptorWidth(o.extractor);  // throws for a value that names no extractor
   return o;
 }
@@ -59,10 +69,15 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
   step.focus = FindFocusOfAttention(surprise, options_.focus);
   if (!step.focus.box.empty() && !expected_depth.empty())
     step.change = ClassifyChange(step.focus.region, depth, expected_depth, options_.change);
+  // An object being learnt (active features held) stays added although its depth is now
+  // expected: the appearance map stores each frame's depth with its posterior, so the frame
+  // after an object appears already predicts it there.
   const ChangeKind kind = step.change.kind;
+  const bool being_learnt = !learner_.active().empty();
   step.learning = !step.focus.box.empty() &&
                   (kind == ChangeKind::kAdded ||
-                   (kind == ChangeKind::kUnknown && options_.learn_unknown_change));
+                   (kind == ChangeKind::kUnknown && options_.learn_unknown_change) ||
+                   (kind == ChangeKind::kUnchanged && being_learnt));
   SelectedFeatures features;
   if (step.learning) features = Extract(rgb, depth, step.focus.box, camera, step);
   step.learner = learner_.Process(step.focus, features, camera, T_world_cam);

@@ -3,7 +3,9 @@
 //   2. added or removed (change_kind.h): the focus region's observed depth against the depth the
 //      appearance map expects there; a removed object's region shows the background it hid, and
 //      an unchanged depth says the surprise is not an object (light, noise): in both, no feature
-//      is extracted or learnt (the frame counts as one without selected features);
+//      is extracted or learnt (the frame counts as one without selected features) — except that
+//      an object being learnt (the learner holds active features) stays learnt when the map,
+//      which takes each frame's depth, expects it already;
 //   3. features inside the focus box, by the chosen extractor (feature_extractor.h);
 //   4. their 3-D positions from the frame's depth (the thesis matched along the other camera's
 //      epipolar lines; sensors/localization/epipolar_feature_matching.h does that for a rig);
@@ -27,8 +29,9 @@ struct ObjectAcquisitionOptions {
   /// M-SURF (the thesis's SURF), SIFT or AKAZE (feature_extractor.h).
   FeatureExtractor extractor = FeatureExtractor::kMSurf;
   FocusOfAttentionOptions focus;
-  /// The learner's thresholds (δ, ratio, T, forgetting). Its window_per_scale and size_per_scale
-  /// are set from the extractor (DescriptorWindowPerSize): what is given there is not used.
+  /// The learner's thresholds (δ, ratio, T, forgetting). Its window_per_scale, size_per_scale
+  /// and window_angle_sign are set from the extractor (feature_extractor.h): what is given there
+  /// is not used.
   ObjectLearnerOptions learner;
   ChangeKindOptions change;
   /// Eq. 5.2's bound ‖d_g − d_m‖ for a feature reconstructed from depth, where there is no second

@@ -13,10 +13,11 @@ ObjectLearner::ObjectLearner(const ObjectLearnerOptions& options) : options_(opt
   if (!(options.static_distance_px > 0.0) || !(options.match_ratio > 0.0 && options.match_ratio <= 1.0) ||
       !(options.min_surprising_share >= 0.0 && options.min_surprising_share <= 1.0) ||
       !(options.window_per_scale > 0.0) || !(options.size_per_scale > 0.0) ||
-      options.forget_after_frames < 1)
+      options.forget_after_frames < 1 ||
+      (options.window_angle_sign != 1 && options.window_angle_sign != -1))
     throw std::invalid_argument("ObjectLearnerOptions: static_distance_px > 0, match_ratio in "
                                 "(0, 1], min_surprising_share in [0, 1], window_per_scale > 0, "
-                                "size_per_scale > 0, forget_after_frames >= 1");
+                                "size_per_scale > 0, forget_after_frames >= 1, window_angle_sign ±1");
 }
 
 LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
@@ -50,7 +51,8 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
   for (int i : statics) {
     const cv::KeyPoint& k = f.keypoints[std::size_t(i)];
     const float window = float(options_.window_per_scale * k.size / options_.size_per_scale);
-    if (SurprisingShare(focus, k.pt, window, float(k.angle * M_PI / 180.0)) >
+    const float angle = float(options_.window_angle_sign * k.angle * M_PI / 180.0);
+    if (SurprisingShare(focus, k.pt, window, angle) >
         options_.min_surprising_share)
       on_surprise.push_back(i);
   }
@@ -95,11 +97,24 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
     learning_object_ = step.object;
   }
 
-  // 4. New active features: reconstructed, neither static nor in the database.
+  // 4. New active features: reconstructed, neither static nor in the database, and where no
+  // active feature already reprojects within δ: a place is held once, so that the active
+  // features grow with what is seen, not with the frames a lasting surprise is seen for.
   std::vector<bool> is_static(n, false);
   for (int i : statics) is_static[std::size_t(i)] = true;
+  const Eigen::Isometry3d T_cam_world = T_world_cam.inverse();
+  std::vector<Eigen::Vector2d> held;
+  for (const ActiveFeature& g : active_) {
+    const Eigen::Vector3d p = T_cam_world * g.p_world;
+    if (p.z() > 0.0) held.push_back(camera.Project(p));
+  }
+  const auto is_held = [&](const cv::Point2f& pt) {
+    for (const Eigen::Vector2d& q : held)
+      if ((q - Eigen::Vector2d(pt.x, pt.y)).norm() < options_.static_distance_px) return true;
+    return false;
+  };
   for (std::size_t i = 0; i < n; ++i) {
-    if (is_static[i] || in_database[i] || !f.p_cam[i]) continue;
+    if (is_static[i] || in_database[i] || !f.p_cam[i] || is_held(f.keypoints[i].pt)) continue;
     active_.push_back({T_world_cam * *f.p_cam[i], f.descriptors.row(int(i)).clone(),
                        f.max_descriptor_change[i]});
     ++step.new_active;

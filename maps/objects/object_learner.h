@@ -37,6 +37,9 @@ struct ObjectLearnerOptions {
   /// 24s; keypoint size = 10·s, msurf.h).
   double window_per_scale = 24.0;
   double size_per_scale = 10.0;  ///< keypoint size / s of the features given (msurf.h: 10)
+  /// +1: the descriptor's window turns by the keypoint's angle (M-SURF); −1: by minus it
+  /// (OpenCV's SIFT samples at 360° − angle).
+  int window_angle_sign = 1;
   int forget_after_frames = 10;  ///< frames without selected features that drop the active ones
 };
 

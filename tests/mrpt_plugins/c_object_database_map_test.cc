@@ -214,6 +214,16 @@ TEST(CObjectDatabaseMap, AFileWhoseDescriptorsAreNotItsExtractorsIsRefused) {
   EXPECT_EQ(reader.database().features(), 0);
 }
 
+// Objects added to the database by hand have no place they were learnt from.
+TEST(CObjectDatabaseMap, ObjectsAddedByHandAreListedWithoutAPlace) {
+  CObjectDatabaseMap map;
+  map.database().AddObject();
+  ASSERT_EQ(map.learntAt().size(), 1u);
+  EXPECT_TRUE(std::isnan(map.learntAt()[0].x()));
+  EXPECT_NE(map.asString().find("1 objects, 0 msurf features"), std::string::npos)
+      << map.asString();
+}
+
 TEST(CObjectDatabaseMap, DeclaredBesideTheAppearanceMapInAMultiMetricMapIni) {
   const mrpt::config::CConfigFileMemory ini(R"(
 [map]

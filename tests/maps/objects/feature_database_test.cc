@@ -118,6 +118,8 @@ TEST(FeatureDatabase, RebuiltFromItsPartsItIsTheSame) {
   EXPECT_THROW(FeatureDatabase::FromParts(1, d, {{{0, (1 << 30) + 1}}}, one), std::invalid_argument)
       << "a count no run gives (and sums of which would overflow)";
   EXPECT_THROW(FeatureDatabase::FromParts(1, d, {}, one), std::invalid_argument) << "no counts";
+  EXPECT_THROW(FeatureDatabase::FromParts(2, d, {{{0, 3}, {0, 2}}}, one), std::invalid_argument)
+      << "one object counted twice";
   cv::Mat nan = d.clone();
   nan.at<float>(0, 3) = std::nanf("");
   EXPECT_THROW(FeatureDatabase::FromParts(1, nan, {{{0, 1}}}, one), std::invalid_argument);

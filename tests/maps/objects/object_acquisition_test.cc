@@ -132,6 +132,23 @@ TEST(ObjectAcquisition, NeverLearnsTheBackgroundARemovedObjectUncovers) {
   EXPECT_TRUE(acquisition.learner().active().empty());
 }
 
+// A static camera: the appearance map stores each frame's depth, so from the second frame on it
+// expects the new face where it is. The face is still learnt — the object being learnt stays
+// added — and recognised.
+TEST(ObjectAcquisition, AnObjectTheMapAlreadyExpectsIsLearntOnceItWasAdded) {
+  ObjectAcquisition acquisition;
+  const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  const Rendered r = Render(0, true);
+  for (int t = 0; t < 4; ++t) {
+    const AcquisitionStep s = acquisition.Process(r.rgb, r.depth, Surprise(r.face, t),
+                                                  t == 0 ? wall_depth : r.depth, kCamera, Pose(0));
+    EXPECT_EQ(s.change.kind, t == 0 ? ChangeKind::kAdded : ChangeKind::kUnchanged) << t;
+    EXPECT_TRUE(s.learning) << t;
+  }
+  EXPECT_EQ(acquisition.learner().database().objects(), 1);
+  EXPECT_GE(acquisition.learner().database().features(), 10);
+}
+
 // A surprise where the map expects the depth the frame has (a new print on a known surface, a
 // shadow, sensor noise): no object to learn.
 TEST(ObjectAcquisition, NeverLearnsWhereOnlyTheLookChanged) {
@@ -172,6 +189,12 @@ TEST(ObjectAcquisition, BadInputIsRejectedAndTheLearnerUnchanged) {
   EXPECT_THROW(ObjectAcquisition{bad}, std::invalid_argument);
   bad.extractor = FeatureExtractor::kMSurf;
   bad.relative_descriptor_change = 0.0;
+  EXPECT_THROW(ObjectAcquisition{bad}, std::invalid_argument);
+  bad.relative_descriptor_change = 0.3;
+  bad.focus.xi = -1.0;  // would throw at every frame: refused when made
+  EXPECT_THROW(ObjectAcquisition{bad}, std::invalid_argument);
+  bad.focus.xi = 2.0;
+  bad.change.min_known_share = 1.5;
   EXPECT_THROW(ObjectAcquisition{bad}, std::invalid_argument);
 
   ObjectAcquisition acquisition;
