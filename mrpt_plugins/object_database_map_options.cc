@@ -49,8 +49,22 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "learn_unknown_change", [](C & c) -> auto& { return c.map.learn_unknown_change; },
             "learn where depth cannot tell added from removed (true = the thesis, which always "
             "learnt); equal depths are never learnt")
+        .Add(
+            "verify_pose", [](C & c) -> auto& { return c.map.learner.verify_pose; },
+            "recognise only if the matches' 3-D places agree on a pose (OpenGV RANSAC; false = "
+            "the thesis)")
+        .Add(
+            "verify_reprojection_px",
+            [](C & c) -> auto& { return c.map.learner.verification.reprojection_px; },
+            "px, a match agrees with the pose within this (chosen: eq. 5.1's 2 px)")
+        .Add(
+            "verify_min_inliers",
+            [](C & c) -> auto& { return c.map.learner.verification.min_inliers; },
+            "matches that must agree (chosen: P3P's 3, one to choose, two against chance)")
         .Check([](const C& c) {
           const objects::ObjectAcquisitionOptions& o = c.map;
+          CheckInRange(o.learner.verification.reprojection_px, 1e-3, 100, "verify_reprojection_px");
+          CheckInRange(o.learner.verification.min_inliers, 4, 100000, "verify_min_inliers");
           CheckInRange(o.focus.xi, 0, 10, "xi");
           CheckInRange(o.focus.morphology_size, 0, 101, "morphology_size");
           CheckInRange(o.learner.static_distance_px, 1e-3, 100, "static_distance_px");

@@ -20,6 +20,19 @@ ObjectLearner::ObjectLearner(const ObjectLearnerOptions& options) : options_(opt
                                 "size_per_scale > 0, forget_after_frames >= 1, window_angle_sign ±1");
 }
 
+VerifiedPose ObjectLearner::Verify(const FeatureDatabase::Recognition& r,
+                                   const SelectedFeatures& f,
+                                   const core::PinholeCamera& camera) const {
+  std::vector<Eigen::Vector3d> places;
+  std::vector<cv::Point2f> pixels;
+  for (const RatioMatch& m : r.matches) {
+    if (database_.MostProbableObject(m.reference) != r.object) continue;
+    places.push_back(database_.Position(m.reference));
+    pixels.push_back(f.keypoints[std::size_t(m.candidate)].pt);
+  }
+  return VerifyObjectPose(places, pixels, camera, options_.verification);
+}
+
 LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
                                    const SelectedFeatures& f,
                                    const core::PinholeCamera& camera,
@@ -62,7 +75,11 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
   step.matches_per_object = r.matches_per_object;
   std::vector<bool> in_database(n, false);
   for (const RatioMatch& m : r.matches) in_database[std::size_t(m.candidate)] = true;
-  if (r.object >= 0) {
+  if (r.object >= 0 && options_.verify_pose) {
+    step.verification = Verify(r, f, camera);
+    step.verification_tried = true;
+  }
+  if (r.object >= 0 && (!options_.verify_pose || step.verification.verified)) {
     step.recognised = LearnerStep::Recognised::kByDatabase;
     step.object = r.object;
   } else {

@@ -3,7 +3,8 @@
 // its box and reconstructed what it could of them (the rig's other camera: epipolar matching;
 // RGB-D: the depth):
 //   1. static features: selected features that an active feature explains (eq. 5.1, 5.2);
-//   2. recognition: the database's object of most matches (eq. 5.3, 5.4); failing that, the
+//   2. recognition: the database's object of most matches (eq. 5.3, 5.4) — with verify_pose, only
+//      if the matched features' 3-D places agree on a camera pose; failing that, the
 //      active features — the object being learnt; failing both, an unknown object, which gets a
 //      new class if one of the static features lies mostly on surprise (ρ_S > T, eq. 5.5). The
 //      thesis leaves open what the active features recognise before the object being learnt has
@@ -25,6 +26,7 @@
 #include "core/pinhole_camera.h"
 #include "maps/objects/feature_database.h"
 #include "maps/objects/focus_of_attention.h"
+#include "maps/objects/object_pose_verification.h"
 #include "maps/objects/static_features.h"
 
 namespace novelty::objects {
@@ -41,6 +43,10 @@ struct ObjectLearnerOptions {
   /// (OpenCV's SIFT samples at 360° − angle).
   int window_angle_sign = 1;
   int forget_after_frames = 10;  ///< frames without selected features that drop the active ones
+  /// Beyond the thesis: the database recognises an object only if the 3-D places of its matched
+  /// features agree on a camera pose (object_pose_verification.h); false: eq. 5.4 alone.
+  bool verify_pose = false;
+  PoseVerificationOptions verification;
 };
 
 /// The selected features of one frame and what the caller reconstructed of them.
@@ -60,6 +66,10 @@ struct LearnerStep {
   int object = -1;  ///< the recognised or new object, −1 if none
   std::vector<int> matches_per_object;  ///< N_k of eq. 5.4
   int selected = 0, static_features = 0, learnt = 0, new_active = 0, active = 0;
+  /// With verify_pose, for the object the database's matches name: whether a pose verified it
+  /// (else it is not recognised by the database) and the object's pose in the camera.
+  bool verification_tried = false;
+  VerifiedPose verification;
 };
 
 class ObjectLearner {
@@ -77,6 +87,10 @@ class ObjectLearner {
   const ObjectLearnerOptions& options() const { return options_; }
 
  private:
+  // The pose the matches of r's object agree on (verify_pose).
+  VerifiedPose Verify(const FeatureDatabase::Recognition& r, const SelectedFeatures& f,
+                      const core::PinholeCamera& camera) const;
+
   ObjectLearnerOptions options_;
   FeatureDatabase database_;
   std::vector<ActiveFeature> active_;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <opencv2/imgproc.hpp>
 
 namespace novelty::objects {
@@ -97,6 +99,35 @@ TEST(ObjectLearner, LearnsAStaticObjectOnceAndThenRecognisesIt) {
   EXPECT_EQ(s.learnt, 0);
   EXPECT_EQ(learner.database().features(), 25);
   EXPECT_EQ(learner.database().Count(0, 0), 2);  // n_{h,M} += 1 (frame 2's match)
+}
+
+// With verify_pose the database names an object only if its matched features' learnt places
+// agree on a camera pose: the cup seen again is verified at the camera's true pose; the same
+// descriptors seen at places that fit no pose (shuffled) are not recognised by the database.
+TEST(ObjectLearner, AVerifiedRecognitionReportsTheObjectsPose) {
+  const Thing cup = MakeThing({0.05, 0.0, 1.0}, 0.05, 25, 1);
+  ObjectLearnerOptions o;
+  o.verify_pose = true;
+  ObjectLearner learner(o);
+  learner.Process(Focus(cup, 0), See({&cup}, 0, 100), kCamera, Pose(0));
+  learner.Process(Focus(cup, 1), See({&cup}, 1, 100), kCamera, Pose(1));
+  ASSERT_EQ(learner.database().features(), 25);
+  LearnerStep s = learner.Process(Focus(cup, 3), See({&cup}, 3, 100), kCamera, Pose(3));
+  EXPECT_TRUE(s.verification_tried);
+  EXPECT_TRUE(s.verification.verified);
+  EXPECT_EQ(s.verification.inliers, 25);
+  EXPECT_EQ(s.recognised, LearnerStep::Recognised::kByDatabase);
+  // The object's frame is the world where it was learnt: in the camera, T_cam_world.
+  const Eigen::Isometry3d truth = Pose(3).inverse();
+  EXPECT_LT((s.verification.T_cam_object.translation() - truth.translation()).norm(), 1e-3);
+  SelectedFeatures shuffled = See({&cup}, 4, 100);
+  std::reverse(shuffled.keypoints.begin(), shuffled.keypoints.end());
+  ObjectLearner fresh(o);
+  fresh.database() = learner.database();
+  s = fresh.Process(Focus(cup, 4), shuffled, kCamera, Pose(4));
+  EXPECT_TRUE(s.verification_tried);
+  EXPECT_FALSE(s.verification.verified);
+  EXPECT_NE(s.recognised, LearnerStep::Recognised::kByDatabase);
 }
 
 TEST(ObjectLearner, FeaturesOffTheirSurpriseAreNotLearnt) {
