@@ -291,7 +291,8 @@ RunArgs ParseArgs(int argc, char** argv) {
   TCLAP::ValueArg<int> objects_from(
       "", "objects-from",
       "The CObjectDatabaseMap takes frames from this one on (default 1); before, the appearance "
-      "map learns the room alone (the thesis's I1: 361 for share/scenarios/object_learning.scn)",
+      "map learns the room alone (the thesis's I1: 361 for share/scenarios/object_learning.scn; "
+      "a frame skipped just before it delays the start by one)",
       false, 1, "N", cmd);
   std::vector<std::string> pose_sources = {"groundtruth", "rawlog", "odometry"};
   TCLAP::ValuesConstraint<std::string> allowed_poses(pose_sources);
@@ -455,6 +456,10 @@ int main(int argc, char** argv) {
         throw std::invalid_argument("--objects-in " + a.objects_in +
                                     ": --config declares no CObjectDatabaseMap to load it into");
       maps.objects()->LoadFromFile(a.objects_in);
+      std::fprintf(stderr,
+                   "novelty-run: object database from %s, with the options saved in it (the "
+                   ".ini's CObjectDatabaseMap options do not apply)\n",
+                   a.objects_in.c_str());
     }
     const sim::GroundTruthReader ground_truth(a.truth);
     std::filesystem::create_directories(a.out + "/panels");

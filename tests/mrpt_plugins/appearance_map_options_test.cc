@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "mrpt_plugins/differencing_map_options.h"
+#include "mrpt_plugins/object_database_map_options.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
@@ -43,6 +44,11 @@ TEST(AppearanceMapOptions, ShippedIniIsTheDumpOfTheDefaults) {
   DifferencingMapConfig().dumpAsMultiMap(diff_dump);
   EXPECT_EQ(Body(std::string(NOVELTY_SOURCE_DIR) + "/share/differencing.ini"), diff_dump.str())
       << "regenerate with: build/bin/novelty-info --dump-options CDifferencingMap";
+  std::ostringstream objects_dump;
+  ObjectDatabaseMapConfig().dumpAsMultiMap(objects_dump);
+  EXPECT_EQ(Body(std::string(NOVELTY_SOURCE_DIR) + "/share/object_database.ini"),
+            objects_dump.str())
+      << "regenerate with: build/bin/novelty-info --dump-options CObjectDatabaseMap";
 }
 
 TEST(AppearanceMapOptions, ShippedIniGivesTheThesisValues) {
