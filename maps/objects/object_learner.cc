@@ -119,15 +119,13 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
   // features grow with what is seen, not with the frames a lasting surprise is seen for.
   std::vector<bool> is_static(n, false);
   for (int i : statics) is_static[std::size_t(i)] = true;
-  const Eigen::Isometry3d T_cam_world = T_world_cam.inverse();
-  std::vector<Eigen::Vector2d> held;
-  for (const ActiveFeature& g : active_) {
-    const Eigen::Vector3d p = T_cam_world * g.p_world;
-    if (p.z() > 0.0) held.push_back(camera.Project(p));
-  }
+  // (Only the pixels are read: the pointers into active_ do not outlive the push_backs below.)
+  const std::vector<ProjectedActiveFeature> held =
+      ProjectActiveFeatures(active_, camera, T_world_cam);
   const auto is_held = [&](const cv::Point2f& pt) {
-    for (const Eigen::Vector2d& q : held)
-      if ((q - Eigen::Vector2d(pt.x, pt.y)).norm() < options_.static_distance_px) return true;
+    for (const ProjectedActiveFeature& g : held)
+      if ((g.pixel - Eigen::Vector2d(pt.x, pt.y)).norm() < options_.static_distance_px)
+        return true;
     return false;
   };
   for (std::size_t i = 0; i < n; ++i) {

@@ -4,6 +4,18 @@
 
 namespace novelty::objects {
 
+std::vector<ProjectedActiveFeature> ProjectActiveFeatures(const std::vector<ActiveFeature>& active,
+                                                          const core::PinholeCamera& camera,
+                                                          const Eigen::Isometry3d& T_world_cam) {
+  const Eigen::Isometry3d T_cam_world = T_world_cam.inverse();
+  std::vector<ProjectedActiveFeature> visible;
+  for (const ActiveFeature& g : active) {
+    const Eigen::Vector3d p = T_cam_world * g.p_world;
+    if (p.z() > 0.0) visible.push_back({&g, camera.Project(p)});
+  }
+  return visible;
+}
+
 std::vector<int> StaticFeatures(const std::vector<cv::KeyPoint>& keypoints,
                                 const cv::Mat& descriptors,
                                 const std::vector<ActiveFeature>& active,
@@ -19,25 +31,17 @@ std::vector<int> StaticFeatures(const std::vector<cv::KeyPoint>& keypoints,
                                   std::to_string(g.descriptor.cols) + " wide, not " +
                                   std::to_string(descriptors.cols));
   }
-  // The active features in the current image (eq. 5.1's p'_g), and eq. 5.2's bound per feature.
-  const Eigen::Isometry3d T_cam_world = T_world_cam.inverse();
-  std::vector<cv::Point2d> projected;
-  std::vector<double> bound;
-  std::vector<const ActiveFeature*> visible;
-  for (const ActiveFeature& g : active) {
-    const Eigen::Vector3d p = T_cam_world * g.p_world;
-    if (p.z() <= 0.0) continue;
-    const Eigen::Vector2d uv = camera.Project(p);
-    projected.emplace_back(uv.x(), uv.y());
-    bound.push_back(g.max_descriptor_change);
-    visible.push_back(&g);
-  }
+  // The active features in the current image (eq. 5.1's p'_g).
+  const std::vector<ProjectedActiveFeature> visible =
+      ProjectActiveFeatures(active, camera, T_world_cam);
   std::vector<int> out;
   for (int f = 0; f < int(keypoints.size()); ++f) {
-    const cv::Point2d p_f = keypoints[std::size_t(f)].pt;
-    for (std::size_t g = 0; g < visible.size(); ++g) {
-      if (cv::norm(p_f - projected[g]) >= delta_px) continue;                       // eq. 5.1
-      if (cv::norm(descriptors.row(f), visible[g]->descriptor, cv::NORM_L2) > bound[g]) continue;  // eq. 5.2
+    const Eigen::Vector2d p_f(keypoints[std::size_t(f)].pt.x, keypoints[std::size_t(f)].pt.y);
+    for (const ProjectedActiveFeature& g : visible) {
+      if ((p_f - g.pixel).norm() >= delta_px) continue;  // eq. 5.1
+      if (cv::norm(descriptors.row(f), g.feature->descriptor, cv::NORM_L2) >
+          g.feature->max_descriptor_change)
+        continue;  // eq. 5.2
       out.push_back(f);
       break;
     }

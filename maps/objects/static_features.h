@@ -27,6 +27,17 @@ struct ActiveFeature {
   double max_descriptor_change = 0.0;
 };
 
+/// An active feature in front of the camera, and where it reprojects (p'_g of eq. 5.1, px).
+struct ProjectedActiveFeature {
+  const ActiveFeature* feature = nullptr;
+  Eigen::Vector2d pixel = Eigen::Vector2d::Zero();
+};
+
+/// The active features in front of `camera` at T_world_cam, with their reprojections.
+std::vector<ProjectedActiveFeature> ProjectActiveFeatures(const std::vector<ActiveFeature>& active,
+                                                          const core::PinholeCamera& camera,
+                                                          const Eigen::Isometry3d& T_world_cam);
+
 /// Indices of the selected features (keypoints and descriptors, one row each) that are static
 /// against `active` seen from `camera` at T_world_cam; δ = `delta_px` (the thesis: 2 px).
 /// Throws std::invalid_argument when counts or descriptor widths disagree.
