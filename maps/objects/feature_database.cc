@@ -102,20 +102,25 @@ int FeatureDatabase::MostProbableObject(int h) const {
   return best;
 }
 
-FeatureDatabase::Recognition FeatureDatabase::Recognize(const cv::Mat& selected, double ratio) {
+FeatureDatabase::Recognition FeatureDatabase::Match(const cv::Mat& selected, double ratio) const {
   Recognition r;
   r.matches_per_object.assign(std::size_t(objects_), 0);
   r.matches = RatioMatches(descriptors_, selected, ratio);
-  // Each database feature matches at most once, so its increment cannot change another's M.
-  for (const RatioMatch& m : r.matches) {
-    const int k = MostProbableObject(m.reference);
-    ++r.matches_per_object[std::size_t(k)];
-    for (auto& entry : n_[std::size_t(m.reference)])
-      if (entry.first == k && entry.second < kMaxCount) ++entry.second;  // n_{h,M} += 1
-  }
+  for (const RatioMatch& m : r.matches) ++r.matches_per_object[std::size_t(MostProbableObject(m.reference))];
   int best = 0;
   for (int k = 0; k < objects_; ++k) {  // eq. 5.4
     if (r.matches_per_object[std::size_t(k)] > best) best = r.matches_per_object[std::size_t(k)], r.object = k;
+  }
+  return r;
+}
+
+FeatureDatabase::Recognition FeatureDatabase::Recognize(const cv::Mat& selected, double ratio) {
+  Recognition r = Match(selected, ratio);
+  // Each database feature matches at most once, so its increment cannot change another's M.
+  for (const RatioMatch& m : r.matches) {
+    const int k = MostProbableObject(m.reference);
+    for (auto& entry : n_[std::size_t(m.reference)])
+      if (entry.first == k && entry.second < kMaxCount) ++entry.second;  // n_{h,M} += 1
   }
   return r;
 }

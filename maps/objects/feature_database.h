@@ -47,6 +47,9 @@ class FeatureDatabase {
   /// Matches the selected features' descriptors against the database and updates the counts
   /// (eq. 5.4 and the n_{h,M} increments). `ratio`: the thesis's 0.65.
   Recognition Recognize(const cv::Mat& selected, double ratio = 0.65);
+  /// The same matches and N_k without updating the counts: recognition by a robot that no
+  /// longer learns (the thesis's I3).
+  Recognition Match(const cv::Mat& selected, double ratio = 0.65) const;
 
   /// n_{h,k}.
   int Count(int h, int k) const;

@@ -80,7 +80,8 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
                    (kind == ChangeKind::kUnchanged && being_learnt));
   SelectedFeatures features;
   if (step.learning) features = Extract(rgb, depth, step.focus.box, camera, step);
-  step.learner = learner_.Process(step.focus, features, camera, T_world_cam);
+  step.learner = learner_.Process(step.focus, features, camera, T_world_cam,
+                                  kind != ChangeKind::kUnchanged);
   return step;
 }
 

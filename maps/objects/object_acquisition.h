@@ -5,7 +5,9 @@
 //      an unchanged depth says the surprise is not an object (light, noise): in both, no feature
 //      is extracted or learnt (the frame counts as one without selected features) — except that
 //      an object being learnt (the learner holds active features) stays learnt when the map,
-//      which takes each frame's depth, expects it already;
+//      which takes each frame's depth, expects it already; such a frame still counts towards
+//      forgetting the active features, so that an object that has gone is forgotten although
+//      the focus finds features elsewhere;
 //   3. features inside the focus box, by the chosen extractor (feature_extractor.h);
 //   4. their 3-D positions from the frame's depth (the thesis matched along the other camera's
 //      epipolar lines; sensors/localization/epipolar_feature_matching.h does that for a rig);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "maps/objects/object_recognition.h"
 #include "maps/objects/ratio_matches.h"
 
 namespace novelty::objects {
@@ -20,23 +21,11 @@ ObjectLearner::ObjectLearner(const ObjectLearnerOptions& options) : options_(opt
                                 "size_per_scale > 0, forget_after_frames >= 1, window_angle_sign ±1");
 }
 
-VerifiedPose ObjectLearner::Verify(const FeatureDatabase::Recognition& r,
-                                   const SelectedFeatures& f,
-                                   const core::PinholeCamera& camera) const {
-  std::vector<Eigen::Vector3d> places;
-  std::vector<cv::Point2f> pixels;
-  for (const RatioMatch& m : r.matches) {
-    if (database_.MostProbableObject(m.reference) != r.object) continue;
-    places.push_back(database_.Position(m.reference));
-    pixels.push_back(f.keypoints[std::size_t(m.candidate)].pt);
-  }
-  return VerifyObjectPose(places, pixels, camera, options_.verification);
-}
-
 LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
                                    const SelectedFeatures& f,
                                    const core::PinholeCamera& camera,
-                                   const Eigen::Isometry3d& T_world_cam) {
+                                   const Eigen::Isometry3d& T_world_cam,
+                                   bool object_in_focus) {
   const std::size_t n = f.keypoints.size();
   if (int(n) != f.descriptors.rows || f.p_cam.size() != n || f.max_descriptor_change.size() != n)
     throw std::invalid_argument("ObjectLearner::Process: " + std::to_string(n) + " keypoints, " +
@@ -45,16 +34,19 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
                                 std::to_string(f.max_descriptor_change.size()) + " bounds");
   LearnerStep step;
   step.selected = int(n);
-  if (n == 0) {  // nothing in the focus: the object may have gone
+  if (n == 0 || !object_in_focus) {  // the object may have gone
     if (++frames_without_features_ >= options_.forget_after_frames) {
       active_.clear();
       learning_object_ = -1;
     }
+  } else {
+    frames_without_features_ = 0;
+  }
+  if (n == 0) {
     step.matches_per_object.assign(std::size_t(database_.objects()), 0);
     step.active = int(active_.size());
     return step;
   }
-  frames_without_features_ = 0;
 
   // 1. Static features (eq. 5.1, 5.2), and which of them lie mostly on surprise (eq. 5.5).
   const std::vector<int> statics = StaticFeatures(f.keypoints, f.descriptors, active_, camera,
@@ -76,7 +68,8 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
   std::vector<bool> in_database(n, false);
   for (const RatioMatch& m : r.matches) in_database[std::size_t(m.candidate)] = true;
   if (r.object >= 0 && options_.verify_pose) {
-    step.verification = Verify(r, f, camera);
+    step.verification = VerifyObjectMatches(database_, r.matches, f.keypoints, r.object, camera,
+                                            options_.verification);
     step.verification_tried = true;
   }
   if (r.object >= 0 && (!options_.verify_pose || step.verification.verified)) {
@@ -128,7 +121,9 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
         return true;
     return false;
   };
-  for (std::size_t i = 0; i < n; ++i) {
+  // Where the focus holds no new object, no place starts being held: only the active features of
+  // the object being learnt can make static features there.
+  for (std::size_t i = 0; i < n && object_in_focus; ++i) {
     if (is_static[i] || in_database[i] || !f.p_cam[i] || is_held(f.keypoints[i].pt)) continue;
     active_.push_back({T_world_cam * *f.p_cam[i], f.descriptors.row(int(i)).clone(),
                        f.max_descriptor_change[i]});

@@ -42,7 +42,9 @@ struct ObjectLearnerOptions {
   /// +1: the descriptor's window turns by the keypoint's angle (M-SURF); −1: by minus it
   /// (OpenCV's SIFT samples at 360° − angle).
   int window_angle_sign = 1;
-  int forget_after_frames = 10;  ///< frames without selected features that drop the active ones
+  /// Frames without selected features (or without a new object in the focus) that drop the
+  /// active ones (thesis 5.1: 10).
+  int forget_after_frames = 10;
   /// Beyond the thesis: the database recognises an object only if the 3-D places of its matched
   /// features agree on a camera pose (object_pose_verification.h); false: eq. 5.4 alone.
   bool verify_pose = false;
@@ -77,9 +79,15 @@ class ObjectLearner {
   explicit ObjectLearner(const ObjectLearnerOptions& options = {});
 
   /// One frame: the focus of attention it was selected in, its selected features, and the
-  /// camera and its pose. Throws std::invalid_argument when the features' vectors disagree.
+  /// camera and its pose. `object_in_focus` false says the focus holds no new object (its depth
+  /// is the expected one): its features are still used against the active ones, but none
+  /// becomes active and the frame counts towards `forget_after_frames` like one without
+  /// features, so that the active features of an object that has gone do not live on in
+  /// whatever the focus turns to next. Throws
+  /// std::invalid_argument when the features' vectors disagree.
   LearnerStep Process(const FocusOfAttention& focus, const SelectedFeatures& features,
-                      const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam);
+                      const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
+                      bool object_in_focus = true);
 
   const FeatureDatabase& database() const { return database_; }
   FeatureDatabase& database() { return database_; }
@@ -87,10 +95,6 @@ class ObjectLearner {
   const ObjectLearnerOptions& options() const { return options_; }
 
  private:
-  // The pose the matches of r's object agree on (verify_pose).
-  VerifiedPose Verify(const FeatureDatabase::Recognition& r, const SelectedFeatures& f,
-                      const core::PinholeCamera& camera) const;
-
   ObjectLearnerOptions options_;
   FeatureDatabase database_;
   std::vector<ActiveFeature> active_;

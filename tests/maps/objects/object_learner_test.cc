@@ -166,6 +166,34 @@ TEST(ObjectLearner, AMovingHandIsNeverLearntAndActiveFeaturesAreForgotten) {
   EXPECT_TRUE(learner.active().empty()) << "the tenth frame drops them";
 }
 
+// The object being learnt has gone and the focus moved to a place whose depth is the expected one
+// (object_in_focus false): its features still come, but after ten such frames the active
+// features are dropped as after ten frames without features — else they would live on and name
+// the next object that is put down.
+TEST(ObjectLearner, FramesWithoutANewObjectInFocusForgetTheActiveFeatures) {
+  const Thing cup = MakeThing({0.05, 0.0, 1.0}, 0.05, 25, 1);
+  ObjectLearner learner;
+  for (int t = 0; t < 3; ++t) learner.Process(Focus(cup, t), See({&cup}, t, 100), kCamera, Pose(t));
+  ASSERT_EQ(learner.database().objects(), 1);
+  ASSERT_FALSE(learner.active().empty());
+  const Thing shadow = MakeThing({-0.2, 0.1, 1.0}, 0.04, 20, 7);
+  for (int t = 3; t < 12; ++t) {
+    const LearnerStep s = learner.Process(Focus(shadow, t), See({&shadow}, t, 200), kCamera,
+                                          Pose(t), /*object_in_focus=*/false);
+    EXPECT_EQ(s.selected, 20) << "its features are still used, frame " << t;
+    EXPECT_EQ(s.new_active, 0) << "but none is held, frame " << t;
+    EXPECT_EQ(s.learnt, 0) << "nor learnt into the cup, frame " << t;
+  }
+  EXPECT_FALSE(learner.active().empty()) << "nine frames: still kept";
+  learner.Process(Focus(shadow, 12), See({&shadow}, 12, 200), kCamera, Pose(12), false);
+  EXPECT_TRUE(learner.active().empty()) << "the tenth frame drops them";
+  // The next object put down is a new one, not the cup continued.
+  const Thing box = MakeThing({-0.05, 0.02, 1.0}, 0.05, 25, 9);
+  for (int t = 13; t < 16; ++t)
+    learner.Process(Focus(box, t), See({&box}, t, 300), kCamera, Pose(t));
+  EXPECT_EQ(learner.database().objects(), 2);
+}
+
 // A surprise that lasts on features that never become static (their descriptors change more
 // than eq. 5.2 allows): each place is held by one active feature, however many frames it lasts.
 TEST(ObjectLearner, ActiveFeaturesGrowWithPlacesNotWithFrames) {

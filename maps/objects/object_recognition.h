@@ -1,0 +1,48 @@
+// Recognition of learnt objects in a whole frame, by a robot that no longer learns (thesis 5.2,
+// sequence I3): features are extracted from the frame (no surprise map: the room is new), each
+// database feature is matched with the ratio test (eq. 5.4's matching) and counts for its most
+// probable object (eq. 5.3). Per object the number of matches N_k is the thesis's score (its
+// ROC sweeps the number of matches required); beyond the thesis, the matches of an object can be
+// verified geometrically (object_pose_verification.h): the score is then the number of matches
+// that agree on one pose of the object.
+#pragma once
+
+#include <opencv2/features2d.hpp>
+#include <vector>
+
+#include "core/eigen_abi.h"
+#include "core/pinhole_camera.h"
+#include "maps/objects/feature_database.h"
+#include "maps/objects/object_pose_verification.h"
+
+namespace novelty::objects {
+
+struct ObjectEvidence {
+  int matches = 0;      ///< N_k: matched database features whose most probable object is k
+  VerifiedPose pose;    ///< set when verification was asked for and k has matches
+};
+
+struct FrameRecognition {
+  std::vector<cv::KeyPoint> keypoints;       ///< the frame's features
+  std::vector<RatioMatch> matches;           ///< reference = database feature, candidate = keypoint
+  std::vector<ObjectEvidence> per_object;    ///< one per database object
+};
+
+/// The matches of `object` among `matches` as 2-D–3-D pairs (the database features' learnt
+/// places and the keypoints' pixels), verified by VerifyObjectPose.
+VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
+                                 const std::vector<RatioMatch>& matches,
+                                 const std::vector<cv::KeyPoint>& keypoints, int object,
+                                 const core::PinholeCamera& camera,
+                                 const PoseVerificationOptions& options);
+
+/// Extracts features from `grey` (CV_8UC1) with `extractor` (it must give the database's
+/// descriptors) and matches them with `database` (counts unchanged). With `verification`, each
+/// object with matches is verified. Throws std::invalid_argument for a descriptor width that is
+/// not the database's.
+FrameRecognition RecognizeObjects(const cv::Mat& grey, cv::Feature2D& extractor,
+                                  const FeatureDatabase& database, double match_ratio,
+                                  const core::PinholeCamera& camera,
+                                  const PoseVerificationOptions* verification = nullptr);
+
+}  // namespace novelty::objects
