@@ -78,7 +78,7 @@ bool CObjectDatabaseMap::internal_insertObservation(
   if (!taken || paused_) return false;
   const core::Frame& f = appearance->lastFrame();
   const appearance::AppearanceProducts& p = appearance->lastProducts();
-  last_ = acquisition_->Process(f.rgb, f.depth, p.surprise, p.expected_depth, f.camera,
+  last_ = acquisition_->Process(f.rgb, f.depth, p.surprise, p.expected_depth_span, f.camera,
                                 *f.T_world_cam);
   if (last_.learner.recognised == objects::LearnerStep::Recognised::kNewObject) {
     // At the object's index: objects may have been added to the database by hand before.

@@ -40,15 +40,30 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
         .Add(
             "min_relative_depth_change",
             [](C & c) -> auto& { return c.map.change.min_relative_difference; },
-            "added/removed: observed vs expected mean depth differ by this share (chosen: 5 %)")
+            "added/removed: a pixel's observed and expected depth differ by this share (chosen: 5 %)")
         .Add(
             "min_known_depth_share",
             [](C & c) -> auto& { return c.map.change.min_known_share; },
             "added/removed: share of the region with both depths needed to tell (chosen)")
         .Add(
+            "min_changed_depth_share",
+            [](C & c) -> auto& { return c.map.change.min_changed_share; },
+            "added/removed: share of those pixels nearer/farther than expected (chosen: a quarter)")
+        .Add(
             "learn_unknown_change", [](C & c) -> auto& { return c.map.learn_unknown_change; },
             "learn where depth cannot tell added from removed (true = the thesis, which always "
-            "learnt); equal depths are never learnt")
+            "learnt)")
+        .Add(
+            "learn_unchanged_change",
+            [](C & c) -> auto& { return c.map.learn_unchanged_change; },
+            "learn where the region's depth is the expected one (true = the thesis, which had no "
+            "depth test; false: light and noise teach nothing, but an object whose shape the "
+            "appearance map took in already is learnt only while its features are held)")
+        .Add(
+            "distinct_second_match",
+            [](C & c) -> auto& { return c.map.learner.distinct_second_match; },
+            "ratio test against the second candidate of another place, not a duplicate of the "
+            "nearest's blob (false = the thesis)")
         .Add(
             "verify_pose", [](C & c) -> auto& { return c.map.learner.verify_pose; },
             "recognise only if the matches' 3-D places agree on a pose (OpenGV RANSAC; false = "
@@ -74,6 +89,7 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
           CheckInRange(o.relative_descriptor_change, 1e-6, 10, "relative_descriptor_change");
           CheckInRange(o.change.min_relative_difference, 0, 10, "min_relative_depth_change");
           CheckInRange(o.change.min_known_share, 0, 1, "min_known_depth_share");
+          CheckInRange(o.change.min_changed_share, 0, 1, "min_changed_depth_share");
         });
     return t;
   }();

@@ -257,6 +257,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   out.valid = prior.valid;
   // A static camera's prediction shares the view's depth, which the update below replaces.
   out.expected_depth = prior.warped ? prior.depth : prior.depth.clone();
+  out.expected_depth_span = prior.depth_span;  // its own buffer, even for a static camera
   out.warp_sigma_px = warp_sigma;
   out.selected = prior.selected;
   out.surprise = f.surprise;

@@ -50,6 +50,9 @@ struct AppearanceProducts {
   /// CV_32FC1, the depth (m) of the surface the map expects at each pixel, 0 where it expects
   /// none (Prediction::depth); only with set_predict_depth(true), else empty.
   cv::Mat expected_depth;
+  /// CV_32FC2, per pixel the nearest and the farthest depth over the views that cover it
+  /// (Prediction::depth_span); with expected_depth.
+  cv::Mat expected_depth_span;
   double warp_sigma_px = 0.0;  ///< s of the prior's floor in this frame (0: none)
   std::vector<int> selected;
   ViewBasedMap::UpdateResult update;

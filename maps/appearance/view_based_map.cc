@@ -35,22 +35,38 @@ struct Prediction::Blend {
 
 namespace {
 
-// Prediction::depth: per pixel the first warp (in selection order) that covers it.
-cv::Mat FirstCoveringDepth(const std::vector<views::WarpField>& warps,
-                           const core::PinholeCamera& camera) {
-  cv::Mat depth = cv::Mat::zeros(camera.height, camera.width, CV_32FC1);
-  for (int y = 0; y < depth.rows; ++y) {
-    float* out = depth.ptr<float>(y);
+// Prediction::depth: per pixel the first warp (in selection order) that covers it; and
+// Prediction::depth_span: the nearest and farthest of the warps that cover it.
+void CoveringDepths(const std::vector<views::WarpField>& warps, const core::PinholeCamera& camera,
+                    Prediction& p) {
+  p.depth = cv::Mat::zeros(camera.height, camera.width, CV_32FC1);
+  p.depth_span = cv::Mat::zeros(camera.height, camera.width, CV_32FC2);
+  for (int y = 0; y < p.depth.rows; ++y) {
+    float* out = p.depth.ptr<float>(y);
+    cv::Vec2f* span = p.depth_span.ptr<cv::Vec2f>(y);
     for (const views::WarpField& w : warps) {
       if (w.depth.empty())
         throw std::invalid_argument(
             "ViewBasedMap: a prediction with depth needs warps with depth (WarpOutputs::depth)");
       const float* d = w.depth.ptr<float>(y);
-      for (int x = 0; x < depth.cols; ++x)
-        if (out[x] == 0.0f && d[x] > 0.0f) out[x] = d[x];
+      for (int x = 0; x < p.depth.cols; ++x) {
+        if (!(d[x] > 0.0f)) continue;
+        if (out[x] == 0.0f) {
+          out[x] = d[x];
+          span[x] = cv::Vec2f(d[x], d[x]);
+        } else {
+          span[x][0] = std::min(span[x][0], d[x]);
+          span[x][1] = std::max(span[x][1], d[x]);
+        }
+      }
     }
   }
-  return depth;
+}
+
+cv::Mat SpanOf(const cv::Mat& depth) {
+  cv::Mat span;
+  cv::merge(std::vector<cv::Mat>{depth, depth}, span);
+  return span;
 }
 
 }  // namespace
@@ -102,7 +118,10 @@ Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
       m.reshape(1).setTo(std::numeric_limits<float>::quiet_NaN());  // Scalar: ≤ 4 channels
     }
     p.valid = cv::Mat::zeros(camera.height, camera.width, CV_8UC1);
-    if (with_depth) p.depth = cv::Mat::zeros(camera.height, camera.width, CV_32FC1);
+    if (with_depth) {
+      p.depth = cv::Mat::zeros(camera.height, camera.width, CV_32FC1);
+      p.depth_span = cv::Mat::zeros(camera.height, camera.width, CV_32FC2);
+    }
     return p;
   }
   // A camera exactly at a reference view (a static camera) needs no warp: the view's own
@@ -114,7 +133,10 @@ Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
     p.selected = {j};
     for (std::size_t k = 0; k < names.size(); ++k) p.value[k] = v.planes.at(names[k].first);
     p.valid = cv::Mat(camera.height, camera.width, CV_8UC1, cv::Scalar(255));
-    if (with_depth) p.depth = v.depth;  // shared, as the planes: read only
+    if (with_depth) {
+      p.depth = v.depth;  // shared, as the planes: read only
+      p.depth_span = SpanOf(v.depth);
+    }
     return p;
   }
   std::vector<views::SourceView> sources;
@@ -144,7 +166,7 @@ Prediction ViewBasedMap::PredictDeferred(const core::PinholeCamera& camera,
   }
   warper_.WarpMany(sources, camera, T_world_cam, b.warps);
   p.warped = true;
-  if (with_depth) p.depth = FirstCoveringDepth(b.warps, camera);
+  if (with_depth) CoveringDepths(b.warps, camera, p);
   b.options = options_.blend;
   if (b.options.weights.empty()) b.options.weights = selection.Weights(options_.selection);
   b.results.resize(std::max(b.results.size(), names.size()));

@@ -65,6 +65,9 @@ class Prediction {
   /// predicts there — that of the first selected view (best for the central ray first) whose
   /// warp covers the pixel; 0 where none does. Complete at once, blended or not.
   cv::Mat depth;
+  /// With `depth`: CV_32FC2, per pixel the nearest and the farthest depth over the selected
+  /// views whose warps cover it (0, 0 where none does; both `depth` for a static camera).
+  cv::Mat depth_span;
 
   /// True when nothing is left to blend (an empty map, a static camera, or a Predict).
   bool complete() const { return blend_ == nullptr; }

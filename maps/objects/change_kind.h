@@ -24,17 +24,30 @@ struct ChangeKindOptions {
   double min_relative_difference = 0.05;
   /// At least this share of the region's pixels must have both depths, else kUnknown.
   double min_known_share = 0.5;
+  /// Added (removed) if at least this share of the pixels with both depths is nearer (farther)
+  /// by min_relative_difference; the larger share decides if both are.
+  double min_changed_share = 0.25;
 };
 
 struct ChangeClassification {
   ChangeKind kind = ChangeKind::kUnknown;
   double observed_depth = 0.0;   ///< mean over the pixels with both depths (m)
-  double predicted_depth = 0.0;  ///< mean of the map's prediction there (m)
+  /// Mean of the map's prediction there (m): of the nearest surface if removed, else of the
+  /// farthest.
+  double predicted_depth = 0.0;
   double known_share = 0.0;      ///< share of the region's pixels with both depths
+  double nearer_share = 0.0;     ///< share of those nearer than predicted (the farthest view)
+  double farther_share = 0.0;    ///< share of those farther than predicted (the nearest view)
 };
 
-/// `region`: CV_8U, non-zero where the change is (FocusOfAttention::region); depths CV_32F in
-/// metres, 0 or NaN unknown. Throws std::invalid_argument for other types or sizes.
+/// `region`: CV_8U, non-zero where the change is (FocusOfAttention::region); the observed depth
+/// CV_32F in metres, 0 or NaN unknown; the predicted depth CV_32F, or CV_32FC2 holding per pixel
+/// the nearest and the farthest surface over the map's views (AppearanceProducts::
+/// expected_depth_span). With the span, a region is added if nearer than the farthest surface a
+/// view saw there, removed if farther than the nearest: a map that takes each frame into its
+/// views (appearance_map.h) expects a new object from the next frame on in the view it just
+/// replaced, while the views it has not replaced yet still show what was there before. Throws
+/// std::invalid_argument for other types or sizes.
 ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observed_depth,
                                     const cv::Mat& predicted_depth,
                                     const ChangeKindOptions& options = {});

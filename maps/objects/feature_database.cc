@@ -102,10 +102,12 @@ int FeatureDatabase::MostProbableObject(int h) const {
   return best;
 }
 
-FeatureDatabase::Recognition FeatureDatabase::Match(const cv::Mat& selected, double ratio) const {
+FeatureDatabase::Recognition FeatureDatabase::Match(
+    const cv::Mat& selected, double ratio, const std::vector<cv::KeyPoint>* keypoints) const {
   Recognition r;
   r.matches_per_object.assign(std::size_t(objects_), 0);
-  r.matches = RatioMatches(descriptors_, selected, ratio);
+  r.matches = keypoints ? RatioMatches(descriptors_, selected, ratio, *keypoints)
+                        : RatioMatches(descriptors_, selected, ratio);
   for (const RatioMatch& m : r.matches) ++r.matches_per_object[std::size_t(MostProbableObject(m.reference))];
   int best = 0;
   for (int k = 0; k < objects_; ++k) {  // eq. 5.4
@@ -114,8 +116,9 @@ FeatureDatabase::Recognition FeatureDatabase::Match(const cv::Mat& selected, dou
   return r;
 }
 
-FeatureDatabase::Recognition FeatureDatabase::Recognize(const cv::Mat& selected, double ratio) {
-  Recognition r = Match(selected, ratio);
+FeatureDatabase::Recognition FeatureDatabase::Recognize(
+    const cv::Mat& selected, double ratio, const std::vector<cv::KeyPoint>* keypoints) {
+  Recognition r = Match(selected, ratio, keypoints);
   // Each database feature matches at most once, so its increment cannot change another's M.
   for (const RatioMatch& m : r.matches) {
     const int k = MostProbableObject(m.reference);

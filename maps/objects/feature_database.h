@@ -46,10 +46,14 @@ class FeatureDatabase {
 
   /// Matches the selected features' descriptors against the database and updates the counts
   /// (eq. 5.4 and the n_{h,M} increments). `ratio`: the thesis's 0.65.
-  Recognition Recognize(const cv::Mat& selected, double ratio = 0.65);
+  /// With `keypoints` (one per selected row), the ratio test's second candidate is one of another
+  /// place (ratio_matches.h).
+  Recognition Recognize(const cv::Mat& selected, double ratio = 0.65,
+                        const std::vector<cv::KeyPoint>* keypoints = nullptr);
   /// The same matches and N_k without updating the counts: recognition by a robot that no
   /// longer learns (the thesis's I3).
-  Recognition Match(const cv::Mat& selected, double ratio = 0.65) const;
+  Recognition Match(const cv::Mat& selected, double ratio = 0.65,
+                    const std::vector<cv::KeyPoint>* keypoints = nullptr) const;
 
   /// n_{h,k}.
   int Count(int h, int k) const;

@@ -40,7 +40,7 @@ void CheckPlane(const cv::Mat& m, int type, const core::PinholeCamera& camera, c
   if (may_be_empty && m.empty()) return;
   if (m.type() != type || m.cols != camera.width || m.rows != camera.height)
     throw std::invalid_argument(std::string("ObjectAcquisition::Process: ") + name + " must be " +
-                                (type == CV_8UC3 ? "CV_8UC3" : "CV_32FC1") + " of " +
+                                (type == CV_8UC3 ? "CV_8UC3" : type == CV_32FC2 ? "CV_32FC2" : "CV_32FC1") + " of " +
                                 std::to_string(camera.width) + "x" +
                                 std::to_string(camera.height) + ", is " +
                                 std::to_string(m.cols) + "x" + std::to_string(m.rows) +
@@ -61,7 +61,8 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
   CheckPlane(rgb, CV_8UC3, camera, "rgb", false);
   CheckPlane(depth, CV_32FC1, camera, "depth", false);
   CheckPlane(surprise, CV_32FC1, camera, "surprise", false);
-  CheckPlane(expected_depth, CV_32FC1, camera, "expected depth", true);
+  CheckPlane(expected_depth, expected_depth.type() == CV_32FC2 ? CV_32FC2 : CV_32FC1, camera,
+             "expected depth", true);
   if (!T_world_cam.matrix().allFinite())
     throw std::invalid_argument("ObjectAcquisition::Process: the pose is not finite");
 
@@ -77,11 +78,13 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
   step.learning = !step.focus.box.empty() &&
                   (kind == ChangeKind::kAdded ||
                    (kind == ChangeKind::kUnknown && options_.learn_unknown_change) ||
-                   (kind == ChangeKind::kUnchanged && being_learnt));
+                   (kind == ChangeKind::kUnchanged &&
+                    (being_learnt || options_.learn_unchanged_change)));
   SelectedFeatures features;
   if (step.learning) features = Extract(rgb, depth, step.focus.box, camera, step);
   step.learner = learner_.Process(step.focus, features, camera, T_world_cam,
-                                  kind != ChangeKind::kUnchanged);
+                                  kind != ChangeKind::kUnchanged ||
+                                      options_.learn_unchanged_change);
   return step;
 }
 

@@ -43,8 +43,13 @@ struct ObjectAcquisitionOptions {
   double relative_descriptor_change = 0.3;
   /// Learn where the appearance map expects no depth, or too little of the region has both
   /// depths to tell added from removed (ChangeKind::kUnknown): the thesis always learnt. Where
-  /// both depths are known and equal (kUnchanged) nothing is learnt.
+  /// both depths are known and equal (kUnchanged) nothing is learnt, unless:
   bool learn_unknown_change = true;
+  /// Learn where the depths are equal too (the thesis, which had no depth test). A map that
+  /// takes each frame's depth into its views (appearance_map.h) expects an object's shape soon
+  /// after it appeared, long before its look stops surprising; while the robot stands still, at
+  /// once. Otherwise such frames count towards forgetting the active features (object_learner.h).
+  bool learn_unchanged_change = false;
 };
 
 struct AcquisitionStep {
@@ -63,8 +68,9 @@ class ObjectAcquisition {
   explicit ObjectAcquisition(const ObjectAcquisitionOptions& options = {});
 
   /// One frame: rgb CV_8UC3 (R, G, B), depth CV_32FC1 (m, 0 or NaN unknown), the appearance
-  /// map's surprise CV_32FC1 (NaN where it does not cover), the depth it expects CV_32FC1 (0
-  /// unknown; empty: none), all of `camera`'s size, and the pose T_world_cam. Throws
+  /// map's surprise CV_32FC1 (NaN where it does not cover), the depth it expects — CV_32FC1, or
+  /// CV_32FC2 with the nearest and farthest over its views (change_kind.h); 0 unknown; empty:
+  /// none — all of `camera`'s size, and the pose T_world_cam. Throws
   /// std::invalid_argument naming the input that is wrong; the learner is then unchanged.
   AcquisitionStep Process(const cv::Mat& rgb, const cv::Mat& depth, const cv::Mat& surprise,
                           const cv::Mat& expected_depth, const core::PinholeCamera& camera,

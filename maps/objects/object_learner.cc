@@ -63,7 +63,9 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
   }
 
   // 2. Recognition: the database first (eq. 5.4), then the active features.
-  const FeatureDatabase::Recognition r = database_.Recognize(f.descriptors, options_.match_ratio);
+  const FeatureDatabase::Recognition r = database_.Recognize(
+      f.descriptors, options_.match_ratio,
+      options_.distinct_second_match ? &f.keypoints : nullptr);
   step.matches_per_object = r.matches_per_object;
   std::vector<bool> in_database(n, false);
   for (const RatioMatch& m : r.matches) in_database[std::size_t(m.candidate)] = true;

@@ -48,6 +48,9 @@ struct ObjectLearnerOptions {
   /// Beyond the thesis: the database recognises an object only if the 3-D places of its matched
   /// features agree on a camera pose (object_pose_verification.h); false: eq. 5.4 alone.
   bool verify_pose = false;
+  /// Beyond the thesis: the ratio test against the database compares with the second candidate
+  /// of another place (ratio_matches.h); false: with any second candidate (the thesis).
+  bool distinct_second_match = false;
   PoseVerificationOptions verification;
 };
 

@@ -20,31 +20,45 @@ VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
   return VerifyObjectPose(places, pixels, camera, options);
 }
 
-FrameRecognition RecognizeObjects(const cv::Mat& grey, cv::Feature2D& extractor,
-                                  const FeatureDatabase& database, double match_ratio,
-                                  const core::PinholeCamera& camera,
-                                  const PoseVerificationOptions* verification) {
+FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor) {
+  FrameFeatures f;
+  extractor.detectAndCompute(grey, cv::noArray(), f.keypoints, f.descriptors);
+  if (!f.keypoints.empty() && f.descriptors.type() != CV_32F)
+    f.descriptors.convertTo(f.descriptors, CV_32F);
+  return f;
+}
+
+FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDatabase& database,
+                              const core::PinholeCamera& camera,
+                              const ObjectRecognitionOptions& options) {
   FrameRecognition r;
-  cv::Mat descriptors;
-  extractor.detectAndCompute(grey, cv::noArray(), r.keypoints, descriptors);
-  if (!r.keypoints.empty() && descriptors.type() != CV_32F)
-    descriptors.convertTo(descriptors, CV_32F);
-  if (!r.keypoints.empty() && database.features() > 0 &&
-      descriptors.cols != database.descriptors().cols)
-    throw std::invalid_argument("RecognizeObjects: the extractor gives descriptors of width " +
-                                std::to_string(descriptors.cols) + ", the database holds " +
+  r.keypoints = features.keypoints;
+  const bool any = !r.keypoints.empty();
+  if (any && database.features() > 0 && features.descriptors.cols != database.descriptors().cols)
+    throw std::invalid_argument("MatchObjects: the frame's descriptors have width " +
+                                std::to_string(features.descriptors.cols) +
+                                ", the database's " +
                                 std::to_string(database.descriptors().cols));
   const FeatureDatabase::Recognition m =
-      database.Match(r.keypoints.empty() ? cv::Mat() : descriptors, match_ratio);
+      database.Match(any ? features.descriptors : cv::Mat(), options.match_ratio,
+                     options.distinct_second && any ? &r.keypoints : nullptr);
   r.matches = m.matches;
   r.per_object.resize(std::size_t(database.objects()));
   for (int k = 0; k < database.objects(); ++k) {
     ObjectEvidence& e = r.per_object[std::size_t(k)];
     e.matches = m.matches_per_object[std::size_t(k)];
-    if (verification && e.matches > 0)
-      e.pose = VerifyObjectMatches(database, r.matches, r.keypoints, k, camera, *verification);
+    if (options.verify && e.matches > 0)
+      e.pose = VerifyObjectMatches(database, r.matches, r.keypoints, k, camera,
+                                   options.verification);
   }
   return r;
+}
+
+FrameRecognition RecognizeObjects(const cv::Mat& grey, cv::Feature2D& extractor,
+                                  const FeatureDatabase& database,
+                                  const core::PinholeCamera& camera,
+                                  const ObjectRecognitionOptions& options) {
+  return MatchObjects(ExtractFrameFeatures(grey, extractor), database, camera, options);
 }
 
 }  // namespace novelty::objects

@@ -36,13 +36,32 @@ VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
                                  const core::PinholeCamera& camera,
                                  const PoseVerificationOptions& options);
 
-/// Extracts features from `grey` (CV_8UC1) with `extractor` (it must give the database's
-/// descriptors) and matches them with `database` (counts unchanged). With `verification`, each
-/// object with matches is verified. Throws std::invalid_argument for a descriptor width that is
-/// not the database's.
+struct ObjectRecognitionOptions {
+  double match_ratio = 0.65;     ///< the ratio test's bound (thesis 5.1: 0.65)
+  /// The ratio test's second candidate of another place (ratio_matches.h); false: the thesis's.
+  bool distinct_second = false;
+  bool verify = false;           ///< verify each object with matches (object_pose_verification.h)
+  PoseVerificationOptions verification;
+};
+
+struct FrameFeatures {
+  std::vector<cv::KeyPoint> keypoints;
+  cv::Mat descriptors;  ///< CV_32F, one row per keypoint
+};
+
+/// The features of a whole frame, `grey` CV_8UC1.
+FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor);
+
+/// Matches a frame's features with `database` (counts unchanged). Throws std::invalid_argument
+/// for a descriptor width that is not the database's.
+FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDatabase& database,
+                              const core::PinholeCamera& camera,
+                              const ObjectRecognitionOptions& options = {});
+
+/// Both: `extractor` must give the database's descriptors.
 FrameRecognition RecognizeObjects(const cv::Mat& grey, cv::Feature2D& extractor,
-                                  const FeatureDatabase& database, double match_ratio,
+                                  const FeatureDatabase& database,
                                   const core::PinholeCamera& camera,
-                                  const PoseVerificationOptions* verification = nullptr);
+                                  const ObjectRecognitionOptions& options = {});
 
 }  // namespace novelty::objects

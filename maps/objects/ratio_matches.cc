@@ -1,26 +1,61 @@
 #include "maps/objects/ratio_matches.h"
 
+#include <algorithm>
 #include <opencv2/features2d.hpp>
 #include <stdexcept>
 #include <string>
 
 namespace novelty::objects {
 
-std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& candidates,
-                                     double ratio) {
+namespace {
+
+// The k nearest candidates of each reference row, or nothing if no test can pass.
+std::vector<std::vector<cv::DMatch>> Nearest(const cv::Mat& reference, const cv::Mat& candidates,
+                                             double ratio, int k) {
   if (!(ratio > 0.0 && ratio <= 1.0))
     throw std::invalid_argument("RatioMatches: ratio must be in (0, 1], got " +
                                 std::to_string(ratio));
-  std::vector<RatioMatch> out;
-  if (reference.empty() || candidates.rows < 2) return out;
+  std::vector<std::vector<cv::DMatch>> knn;
+  if (reference.empty() || candidates.rows < 2) return knn;
   if (reference.type() != CV_32FC1 || candidates.type() != CV_32FC1 ||
       reference.cols != candidates.cols)
     throw std::invalid_argument("RatioMatches: descriptors must be CV_32F rows of equal width");
-  std::vector<std::vector<cv::DMatch>> knn;
-  cv::BFMatcher(cv::NORM_L2).knnMatch(reference, candidates, knn, 2);
-  for (const auto& m : knn) {
+  cv::BFMatcher(cv::NORM_L2).knnMatch(reference, candidates, knn, std::min(k, candidates.rows));
+  return knn;
+}
+
+}  // namespace
+
+std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& candidates,
+                                     double ratio) {
+  std::vector<RatioMatch> out;
+  for (const auto& m : Nearest(reference, candidates, ratio, 2)) {
     if (m.size() == 2 && m[0].distance <= ratio * m[1].distance)
       out.push_back({m[0].queryIdx, m[0].trainIdx, m[0].distance});
+  }
+  return out;
+}
+
+std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& candidates,
+                                     double ratio,
+                                     const std::vector<cv::KeyPoint>& candidate_keypoints) {
+  if (int(candidate_keypoints.size()) != candidates.rows)
+    throw std::invalid_argument("RatioMatches: " + std::to_string(candidate_keypoints.size()) +
+                                " keypoints for " + std::to_string(candidates.rows) +
+                                " candidates");
+  std::vector<RatioMatch> out;
+  for (const auto& m : Nearest(reference, candidates, ratio, 16)) {
+    if (m.size() < 2) continue;
+    const cv::KeyPoint& best = candidate_keypoints[std::size_t(m[0].trainIdx)];
+    float second = m.back().distance;
+    for (std::size_t i = 1; i < m.size(); ++i) {
+      const cv::Point2f d = candidate_keypoints[std::size_t(m[i].trainIdx)].pt - best.pt;
+      if (d.dot(d) > 0.25f * best.size * best.size) {
+        second = m[i].distance;
+        break;
+      }
+    }
+    if (m[0].distance <= ratio * second) out.push_back({m[0].queryIdx, m[0].trainIdx, m[0].distance});
   }
   return out;
 }

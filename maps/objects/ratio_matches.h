@@ -22,4 +22,15 @@ struct RatioMatch {
 std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& candidates,
                                      double ratio = 0.65);
 
+/// As above, but the second-nearest is the nearest candidate of another place: one whose
+/// keypoint lies farther than the nearest's radius (size / 2) from it. A detector finds one
+/// blob at neighbouring scales or orientations, and a textured object repeats a structure a few
+/// pixels apart; compared with those, a match the object makes unique fails the ratio test
+/// (beyond the thesis, which compared with any second candidate). Among the 16 nearest, the
+/// first of another place; if none, the 16th (a lower bound, so the test only gets stricter).
+/// Throws std::invalid_argument also if the keypoints are not one per candidate.
+std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& candidates,
+                                     double ratio,
+                                     const std::vector<cv::KeyPoint>& candidate_keypoints);
+
 }  // namespace novelty::objects

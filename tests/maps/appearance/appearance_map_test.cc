@@ -291,6 +291,14 @@ TEST(AppearanceMap, TheExpectedDepthIsTheDepthOfTheKnownScene) {
     const AppearanceProducts p = map.Insert(f.rgb, f.depth, cam, f.T_world_cam);
     EXPECT_TRUE(without.Insert(f.rgb, f.depth, cam, f.T_world_cam).expected_depth.empty());
     ASSERT_EQ(p.expected_depth.type(), CV_32FC1);
+    ASSERT_EQ(p.expected_depth_span.type(), CV_32FC2);
+    // The span holds the first covering view's depth, and nothing where no view covers.
+    for (int i = 0; i < f.depth.rows * f.depth.cols; ++i) {
+      const float e = p.expected_depth.at<float>(i);
+      const cv::Vec2f s = p.expected_depth_span.at<cv::Vec2f>(i);
+      ASSERT_TRUE(e == 0.0f ? s == cv::Vec2f(0, 0) : s[0] <= e && e <= s[1] && s[0] > 0)
+          << "frame " << frames << " pixel " << i << ": " << e << " not in " << s;
+    }
     if (frames++ == 0) {
       EXPECT_EQ(cv::countNonZero(p.expected_depth), 0) << "an empty map expects nothing";
       continue;

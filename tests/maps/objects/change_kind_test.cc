@@ -47,5 +47,28 @@ TEST(ChangeKind, UnknownDepthsCountOnlyWhereBothAreKnown) {
   EXPECT_THROW(ClassifyChange(s.region, observed, cv::Mat(10, 10, CV_32F)), std::invalid_argument);
 }
 
+// With the span of the map's views (nearest, farthest): the view the previous frame replaced
+// already holds the new cup (nearest 1.38 m), the others the table (farthest 1.5 m). The cup is
+// still added; once taken away, the views that saw it make the table behind it removed.
+TEST(ChangeKind, WithTheViewsSpanAViewThatAlreadyTookTheChangeDoesNotHideIt) {
+  Scene s;
+  cv::Mat cup = s.predicted.clone();
+  cup(cv::Rect(50, 40, 40, 30)).setTo(1.38f);
+  cv::Mat span;
+  cv::merge(std::vector<cv::Mat>{cup, s.predicted}, span);
+  ChangeClassification c = ClassifyChange(s.region, cup, span);
+  EXPECT_EQ(c.kind, ChangeKind::kAdded);
+  EXPECT_NEAR(c.predicted_depth, 1.5, 1e-6) << "the farthest surface";
+  c = ClassifyChange(s.region, s.predicted, span);
+  EXPECT_EQ(c.kind, ChangeKind::kRemoved);
+  EXPECT_NEAR(c.predicted_depth, 1.38, 1e-6) << "the nearest surface";
+  // Views that agree: the span is one depth and the single-plane answers hold.
+  cv::Mat same;
+  cv::merge(std::vector<cv::Mat>{s.predicted, s.predicted}, same);
+  EXPECT_EQ(ClassifyChange(s.region, s.predicted, same).kind, ChangeKind::kUnchanged);
+  EXPECT_EQ(ClassifyChange(s.region, cup, same).kind, ChangeKind::kAdded);
+  EXPECT_THROW(ClassifyChange(s.region, cup, cv::Mat(120, 160, CV_32FC3)), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace novelty::objects

@@ -48,9 +48,9 @@ TEST(ObjectRecognition, FindsALearntPrintAfterTheCameraMovedAndVerifiesItsPose) 
   cv::Mat moved;
   const cv::Mat M = (cv::Mat_<double>(2, 3) << 1, 0, shift, 0, 1, 0);
   cv::warpAffine(Print(1), moved, M, Print(1).size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
-  const PoseVerificationOptions verification;
-  const FrameRecognition r =
-      RecognizeObjects(moved, *extractor, db, 0.65, kCamera, &verification);
+  ObjectRecognitionOptions verify;
+  verify.verify = true;
+  const FrameRecognition r = RecognizeObjects(moved, *extractor, db, kCamera, verify);
   ASSERT_EQ(r.per_object.size(), 1u);
   EXPECT_GE(r.per_object[0].matches, db.features() / 2);
   ASSERT_TRUE(r.per_object[0].pose.verified);
@@ -73,9 +73,9 @@ TEST(ObjectRecognition, FindsALearntPrintAfterTheCameraMovedAndVerifiesItsPose) 
 TEST(ObjectRecognition, AnotherPrintIsNotRecognised) {
   cv::Ptr<cv::Feature2D> extractor = CreateFeatureExtractor(FeatureExtractor::kMSurf);
   const FeatureDatabase db = Learn(*extractor, true);
-  const PoseVerificationOptions verification;
-  const FrameRecognition r =
-      RecognizeObjects(Print(3), *extractor, db, 0.65, kCamera, &verification);
+  ObjectRecognitionOptions verify;
+  verify.verify = true;
+  const FrameRecognition r = RecognizeObjects(Print(3), *extractor, db, kCamera, verify);
   ASSERT_EQ(r.per_object.size(), 2u);
   for (const ObjectEvidence& e : r.per_object) {
     // Chance ratio-test matches between unrelated prints are rare; a pose never agrees.
@@ -83,7 +83,7 @@ TEST(ObjectRecognition, AnotherPrintIsNotRecognised) {
     EXPECT_FALSE(e.pose.verified);
   }
   // Print 2 itself: object 1, not object 0.
-  const FrameRecognition two = RecognizeObjects(Print(2), *extractor, db, 0.65, kCamera);
+  const FrameRecognition two = RecognizeObjects(Print(2), *extractor, db, kCamera);
   EXPECT_GE(two.per_object[1].matches, 20);
   EXPECT_LE(two.per_object[0].matches, 3);
 }
@@ -92,7 +92,7 @@ TEST(ObjectRecognition, ADatabaseOfAnotherWidthIsAClearError) {
   FeatureDatabase db;
   db.AddFeatures(cv::Mat::ones(3, 128, CV_32F), db.AddObject());
   cv::Ptr<cv::Feature2D> msurf = CreateFeatureExtractor(FeatureExtractor::kMSurf);
-  EXPECT_THROW(RecognizeObjects(Print(1), *msurf, db, 0.65, kCamera), std::invalid_argument);
+  EXPECT_THROW(RecognizeObjects(Print(1), *msurf, db, kCamera), std::invalid_argument);
 }
 
 }  // namespace

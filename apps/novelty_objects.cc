@@ -1,0 +1,441 @@
+// novelty-objects: the experiment of thesis 5.2 — how well the surprise-driven object database
+// learnt in one room (I1 + I2) recognises its objects in another (I3).
+//
+//   novelty-objects --learnt LEARN --learn-groundtruth DIR --rawlog I3.rawlog --groundtruth DIR
+//                   --out OUT [--min-visible-pixels 400] [--frames N] [--panels-every K]
+//
+// LEARN is novelty-run's output folder of the learning run (objects.csv, map.object_database),
+// e.g. share/scenarios/object_learning.scn with --objects-from 361; the ground-truth folders are
+// novelty-sim's. Writes
+//   OUT/focus.csv          per learning frame: focus box centre, the new object's true box centre,
+//                          features extracted in the box (figs. 5.3 a–c)
+//   OUT/features.csv       per learnt feature: object, the object's true name, its 3-D place,
+//                          whether the place lies on that object (ground-truth ids and depth)
+//   OUT/recognition.csv    per I3 frame and learnt object: pixels it shows, matches N_k, matches
+//                          that agree on a pose (verified), visible (fig. 5.5 a, b)
+//   OUT/findings.csv       finding,value,target,holds — the ROC over (frame, object) decisions
+//                          sweeping the matches required (fig. 5.5 d), TPR at FPR 0.3/1/5 %, AUC,
+//                          the database's size, features on their object
+//   OUT/report.html        the same with plots; OUT/panels/ frames with their matches drawn.
+#include <tclap/CmdLine.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "apps/command_line.h"
+#include "core/frame_stem.h"
+#include "eval/html_report.h"
+#include "eval/object_visibility.h"
+#include "eval/roc.h"
+#include "maps/objects/feature_extractor.h"
+#include "maps/objects/object_recognition.h"
+#include "mrpt_plugins/c_object_database_map.h"
+#include "sensors/rawlog/rawlog_frame_reader.h"
+#include "sim/output/ground_truth_format.h"
+#include "sim/output/ground_truth_reader.h"
+
+using namespace novelty;
+
+namespace {
+
+struct Args {
+  std::string learnt, learn_truth, rawlog, truth, out;
+  int min_visible = 400, frames = 0, panels_every = 20;
+};
+
+// One row of novelty-run's objects.csv (eval/object_steps_csv.h).
+struct StepRow {
+  int frame = 0;
+  bool has_box = false;
+  cv::Rect box;
+  std::string change;
+  int extracted = 0, learnt = 0, object = -1;
+};
+
+std::vector<std::string> SplitCsv(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream s(line);
+  for (std::string c; std::getline(s, c, ',');) cells.push_back(c);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+std::vector<StepRow> ReadSteps(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open (novelty-run writes it when its --config declares a CObjectDatabaseMap)");
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("frame,box_x,box_y,box_width,box_height,change", 0) != 0)
+    throw std::runtime_error(path + ": not novelty-run's objects.csv (header " + line + ")");
+  std::vector<StepRow> rows;
+  for (int n = 2; std::getline(in, line); ++n) {
+    const std::vector<std::string> c = SplitCsv(line);
+    try {
+      if (c.size() < 16) throw std::invalid_argument("too few cells");
+      StepRow r;
+      r.frame = std::stoi(c[0]);
+      r.has_box = !c[1].empty();
+      if (r.has_box) r.box = cv::Rect(std::stoi(c[1]), std::stoi(c[2]), std::stoi(c[3]), std::stoi(c[4]));
+      r.change = c[5];
+      r.extracted = std::stoi(c[8]);
+      r.learnt = std::stoi(c[11]);
+      r.object = std::stoi(c[13]);
+      rows.push_back(r);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(path + ":" + std::to_string(n) + ": malformed row (" + e.what() + ")");
+    }
+  }
+  return rows;
+}
+
+std::string Percent(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f %%", 100.0 * v);
+  return b;
+}
+
+std::string Num(double v, const char* format = "%.3f") {
+  char b[32];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
+// Learning: the focus against the new object's true box (fig. 5.3), and each db object's name:
+// the new object most often in view where it learnt.
+struct LearningEvaluation {
+  std::vector<std::string> names;  // per database object
+  std::vector<int> name_ids;       // its id in the learning ground truth, −1 unknown
+  std::vector<std::vector<int>> learnt_frames;  // per database object
+  std::vector<eval::PlotSeries> plots_x, plots_y, plots_features;
+  double median_centre_error_px = NAN;
+  int compared_frames = 0, centre_inside = 0;
+};
+
+LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
+                                    const sim::GroundTruthReader& truth, int objects,
+                                    const std::string& out) {
+  LearningEvaluation e;
+  e.learnt_frames.resize(std::size_t(objects));
+  std::vector<std::map<int, int>> votes(static_cast<std::size_t>(objects));
+  eval::PlotSeries mx{"focus box", "#0072b2", {}, 1}, tx{"true box", "#000000", {}, 1};
+  eval::PlotSeries my = mx, ty = tx, feats{"features in the box", "#d55e00", {}, 1};
+  std::vector<double> errors;
+  std::ofstream csv(out + "/focus.csv");
+  csv << "frame,box_cx,box_cy,true_cx,true_cy,true_object,arm_in_view,extracted\n";
+  for (const StepRow& r : steps) {
+    const cv::Mat ids = truth.Ids(r.frame), novelty = truth.Novelty(r.frame);
+    eval::NewObjectView view;
+    if (!ids.empty() && !novelty.empty())
+      view = eval::NewObjectInView(ids, novelty, sim::ground_truth::kArmId, sim::ground_truth::kNoveltyAdded);
+    if (r.learnt > 0 && r.object >= 0 && r.object < objects) {
+      e.learnt_frames[std::size_t(r.object)].push_back(r.frame);
+      if (view.id >= 0) ++votes[std::size_t(r.object)][view.id];
+    }
+    const double bx = r.has_box ? r.box.x + 0.5 * r.box.width : NAN;
+    const double by = r.has_box ? r.box.y + 0.5 * r.box.height : NAN;
+    // As the thesis: the truth where the object stands still (no arm in view).
+    const bool still = view.id >= 0 && view.arm_pixels == 0;
+    const double gx = still ? view.box.x + 0.5 * view.box.width : NAN;
+    const double gy = still ? view.box.y + 0.5 * view.box.height : NAN;
+    csv << r.frame << ',' << bx << ',' << by << ',' << gx << ',' << gy << ','
+        << (view.id >= 0 ? truth.ObjectNames().count(view.id) ? truth.ObjectNames().at(view.id) : "?" : "")
+        << ',' << (view.arm_pixels > 0) << ',' << r.extracted << '\n';
+    mx.points.emplace_back(r.frame, bx);
+    my.points.emplace_back(r.frame, by);
+    tx.points.emplace_back(r.frame, gx);
+    ty.points.emplace_back(r.frame, gy);
+    feats.points.emplace_back(r.frame, r.extracted);
+    if (still && r.has_box) {
+      ++e.compared_frames;
+      errors.push_back(std::hypot(bx - gx, by - gy));
+      e.centre_inside += view.box.contains(cv::Point(int(bx), int(by)));
+    }
+  }
+  if (!errors.empty()) {
+    std::nth_element(errors.begin(), errors.begin() + long(errors.size() / 2), errors.end());
+    e.median_centre_error_px = errors[errors.size() / 2];
+  }
+  e.plots_x = {mx, tx};
+  e.plots_y = {my, ty};
+  e.plots_features = {feats};
+  for (int k = 0; k < objects; ++k) {
+    int best = -1, most = 0;
+    for (const auto& [id, n] : votes[std::size_t(k)])
+      if (n > most) best = id, most = n;
+    e.name_ids.push_back(best);
+    e.names.push_back(best >= 0 && truth.ObjectNames().count(best) ? truth.ObjectNames().at(best)
+                                                                   : "object " + std::to_string(k));
+  }
+  return e;
+}
+
+// Whether feature h's learnt place lies on its object: seen from the middle frame its object was
+// learnt in, it projects onto that object's ids at the true depth (2 cm).
+int FeatureOnObject(const objects::FeatureDatabase& db, int h, const LearningEvaluation& e,
+                    const sim::GroundTruthReader& truth, const core::PinholeCamera& camera) {
+  const int k = db.MostProbableObject(h);
+  const Eigen::Vector3d& p = db.Position(h);
+  const std::vector<int>& frames = e.learnt_frames[std::size_t(k)];
+  if (!p.allFinite() || frames.empty() || e.name_ids[std::size_t(k)] < 0) return -1;
+  const int frame = frames[frames.size() / 2];
+  const auto pose = truth.CameraPoses().find(frame);
+  const cv::Mat ids = truth.Ids(frame), depth = truth.Depth(frame);
+  if (pose == truth.CameraPoses().end() || ids.empty() || depth.empty()) return -1;
+  const Eigen::Vector3d c = pose->second.inverse() * p;
+  if (c.z() <= 0) return 0;
+  const Eigen::Vector2d uv = camera.Project(c);
+  const int u = int(std::lround(uv.x())), v = int(std::lround(uv.y()));
+  if (u < 0 || v < 0 || u >= ids.cols || v >= ids.rows) return 0;
+  return ids.at<int>(v, u) == e.name_ids[std::size_t(k)] &&
+         std::abs(depth.at<float>(v, u) - c.z()) < 0.02;
+}
+
+// The recognition scores compared (each an ROC): N_k with the thesis's ratio test, and the
+// matches of N_k that agree on a pose; the same with the ratio test's second candidate of
+// another place (ratio_matches.h).
+constexpr int kScores = 4;
+const char* const kScoreNames[kScores] = {"matches (thesis)", "verified matches",
+                                          "matches, distinct second",
+                                          "verified matches, distinct second"};
+const char* const kScoreColumns[kScores] = {"matches", "verified_matches", "matches_distinct",
+                                            "verified_matches_distinct"};
+const char* const kScoreColours[kScores] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7"};
+
+struct RecognitionRow {
+  int frame, object, visible_pixels;
+  int scores[kScores];
+};
+
+void DrawPanel(const core::Frame& f, const objects::FrameRecognition& r,
+               const objects::FeatureDatabase& db, const std::vector<std::string>& names,
+               const std::string& path) {
+  cv::Mat bgr;
+  cv::cvtColor(f.rgb, bgr, cv::COLOR_RGB2BGR);
+  for (const objects::RatioMatch& m : r.matches) {  // fig. 5.4's cyan squares
+    const cv::Point2f& p = r.keypoints[std::size_t(m.candidate)].pt;
+    cv::rectangle(bgr, cv::Rect(int(p.x) - 3, int(p.y) - 3, 7, 7), cv::Scalar(255, 255, 0), 1);
+  }
+  int y = 14;
+  for (int k = 0; k < db.objects(); ++k) {
+    const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
+    const std::string text = names[std::size_t(k)] + ": " + std::to_string(e.matches) + " (" +
+                             std::to_string(e.pose.verified ? e.pose.inliers : 0) + " verified)";
+    cv::putText(bgr, text, cv::Point(4, y), cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 3);
+    cv::putText(bgr, text, cv::Point(4, y), cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(255, 255, 255), 1);
+    y += 14;
+  }
+  if (!cv::imwrite(path, bgr)) throw std::runtime_error(path + ": cannot write the panel");
+}
+
+Args Parse(int argc, char** argv) {
+  apps::CommandLine cmd(
+      "Thesis 5.2: recognition, in another room, of the objects a CObjectDatabaseMap learnt where "
+      "surprise pointed; the ROC over (frame, object) decisions.", "0.1");
+  TCLAP::ValueArg<std::string> learnt("", "learnt", "novelty-run's output folder of the learning run (objects.csv, map.object_database)", true, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> learn_truth("", "learn-groundtruth", "Ground truth of the learning run", true, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> rawlog("", "rawlog", "The recognition run (I3), an RGB-D rawlog", true, "", "R.rawlog", cmd);
+  TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground truth of the recognition run", true, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> out("", "out", "Output folder", true, "", "OUT", cmd);
+  TCLAP::ValueArg<int> min_visible("", "min-visible-pixels", "An object counts as visible in a frame from this many pixels on (default 400, 0.5 % of 320x240)", false, 400, "N", cmd);
+  TCLAP::ValueArg<int> frames("", "frames", "Only the first N recognition frames", false, 0, "N", cmd);
+  TCLAP::ValueArg<int> panels("", "panels-every", "Write every K-th recognition panel (default 20; 0 none)", false, 20, "K", cmd);
+  cmd.Parse(argc, argv);
+  Args a{learnt.getValue(), learn_truth.getValue(), rawlog.getValue(), truth.getValue(),
+         out.getValue(), min_visible.getValue(), frames.getValue(), panels.getValue()};
+  if (a.min_visible < 1) throw std::invalid_argument("--min-visible-pixels must be >= 1");
+  if (a.frames < 0) throw std::invalid_argument("--frames must be >= 0");
+  if (a.panels_every < 0) throw std::invalid_argument("--panels-every must be >= 0");
+  return a;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const Args a = Parse(argc, argv);
+    mrpt_plugins::CObjectDatabaseMap map;
+    map.LoadFromFile(a.learnt + "/map.object_database");
+    const objects::FeatureDatabase& db = map.database();
+    if (db.objects() == 0)
+      throw std::runtime_error(a.learnt + "/map.object_database: no object was learnt; nothing to recognise");
+    const objects::ObjectAcquisitionOptions& options = map.config().map;
+    const std::vector<StepRow> steps = ReadSteps(a.learnt + "/objects.csv");
+    const sim::GroundTruthReader learn_truth(a.learn_truth), truth(a.truth);
+    std::filesystem::create_directories(a.out + "/panels");
+
+    // 1. Learning (figs. 5.3) and what was learnt.
+    const LearningEvaluation learning = EvaluateLearning(steps, learn_truth, db.objects(), a.out);
+    sensors::RawlogFrameReader reader(a.rawlog);
+    core::Frame frame;
+    if (!reader.Next(frame)) throw std::runtime_error(a.rawlog + ": no RGB-D frame");
+    int on_object = 0, judged = 0;
+    {
+      std::ofstream csv(a.out + "/features.csv");
+      csv << "feature,object,name,x,y,z,on_object\n";
+      for (int h = 0; h < db.features(); ++h) {
+        const int k = db.MostProbableObject(h);
+        const int on = FeatureOnObject(db, h, learning, learn_truth, frame.camera);
+        const Eigen::Vector3d& p = db.Position(h);
+        csv << h << ',' << k << ',' << learning.names[std::size_t(k)] << ',' << p.x() << ','
+            << p.y() << ',' << p.z() << ',' << on << '\n';
+        if (on >= 0) ++judged, on_object += on;
+      }
+    }
+
+    // 2. Recognition in the other room (fig. 5.5).
+    std::map<std::string, int> ids_by_name;
+    for (const auto& [id, name] : truth.ObjectNames()) ids_by_name[name] = id;
+    cv::Ptr<cv::Feature2D> extractor = objects::CreateFeatureExtractor(options.extractor);
+    objects::ObjectRecognitionOptions thesis;
+    thesis.match_ratio = options.learner.match_ratio;
+    thesis.verify = true;  // N_k is the same; the pose adds the verified score
+    thesis.verification = options.learner.verification;
+    objects::ObjectRecognitionOptions distinct = thesis;
+    distinct.distinct_second = true;
+    std::vector<RecognitionRow> rows;
+    std::ofstream rcsv(a.out + "/recognition.csv");
+    rcsv << "frame,object,name,visible_pixels,visible";
+    for (const char* c : kScoreColumns) rcsv << ',' << c;
+    rcsv << '\n';
+    int n = 0;
+    do {
+      if (a.frames > 0 && n >= a.frames) break;
+      ++n;
+      cv::Mat grey;
+      cv::cvtColor(frame.rgb, grey, cv::COLOR_RGB2GRAY);
+      const objects::FrameFeatures features = objects::ExtractFrameFeatures(grey, *extractor);
+      const objects::FrameRecognition r = objects::MatchObjects(features, db, frame.camera, thesis);
+      const objects::FrameRecognition rd =
+          objects::MatchObjects(features, db, frame.camera, distinct);
+      const cv::Mat ids = truth.Ids(frame.index);
+      if (ids.empty()) throw std::runtime_error(a.truth + ": no ids image for frame " + std::to_string(frame.index));
+      for (int k = 0; k < db.objects(); ++k) {
+        const auto id = ids_by_name.find(learning.names[std::size_t(k)]);
+        const int visible = id == ids_by_name.end() ? 0 : eval::VisiblePixels(ids, id->second);
+        const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
+        const objects::ObjectEvidence& ed = rd.per_object[std::size_t(k)];
+        rows.push_back({frame.index, k, visible,
+                        {e.matches, e.pose.verified ? e.pose.inliers : 0, ed.matches,
+                         ed.pose.verified ? ed.pose.inliers : 0}});
+        rcsv << frame.index << ',' << k << ',' << learning.names[std::size_t(k)] << ',' << visible << ','
+             << (visible >= a.min_visible);
+        for (int score : rows.back().scores) rcsv << ',' << score;
+        rcsv << '\n';
+      }
+      if (a.panels_every > 0 && n % a.panels_every == 1)
+        DrawPanel(frame, r, db, learning.names, a.out + "/panels/" + core::FrameStem(frame.index) + ".png");
+      if (n % 25 == 0) std::fprintf(stderr, "[novelty-objects] recognition frame %d\n", frame.index);
+    } while (reader.Next(frame));
+    rcsv.close();
+
+    std::vector<bool> visible;
+    for (const RecognitionRow& r : rows) visible.push_back(r.visible_pixels >= a.min_visible);
+    std::vector<eval::Roc> rocs;
+    for (int i = 0; i < kScores; ++i) {
+      std::vector<double> scores;
+      for (const RecognitionRow& r : rows) scores.push_back(r.scores[i]);
+      rocs.push_back(eval::ComputeRoc(scores, visible));
+    }
+    const eval::Roc& roc = rocs[0];
+
+    // 3. Findings, report.
+    std::ofstream findings(a.out + "/findings.csv");
+    findings << "finding,value,target,holds\n";
+    eval::HtmlReport report("Object learning and recognition (thesis 5.2)");
+    std::vector<std::vector<std::string>> table;
+    const auto finding = [&](const std::string& what, const std::string& value,
+                             const std::string& target, int holds) {
+      findings << what << ',' << value << ',' << target << ',' << (holds < 0 ? "" : holds ? "yes" : "no") << '\n';
+      table.push_back({what, value, target, holds < 0 ? "" : holds ? "yes" : "no"});
+      std::printf("  %-58s %10s  (target %s)\n", what.c_str(), value.c_str(), target.c_str());
+    };
+    std::printf("novelty-objects: %d objects, %d features learnt; %d recognition frames, %d (frame, object) decisions (%d visible)\n",
+                db.objects(), db.features(), n, roc.positives + roc.negatives, roc.positives);
+    finding("objects learnt", std::to_string(db.objects()), "3 (thesis)", db.objects() == 3);
+    finding("features in the database", std::to_string(db.features()), "88 (thesis)", -1);
+    finding("learnt features on their object", judged ? Percent(double(on_object) / judged) : "-",
+            "100 % (none from background)", judged ? on_object == judged : -1);
+    finding("focus box centre inside the new object's true box",
+            learning.compared_frames ? Percent(double(learning.centre_inside) / learning.compared_frames) : "-",
+            "(reported)", -1);
+    finding("median focus box centre error (px)", Num(learning.median_centre_error_px, "%.1f"), "(reported)", -1);
+    for (int i = 0; i < kScores; ++i) {
+      const std::string what = kScoreNames[i];
+      const eval::Roc& r = rocs[std::size_t(i)];
+      finding("TPR at FPR <= 0.3 %, " + what, Percent(r.TprAtFpr(0.003)), ">= 90 % (thesis 81.5 %)", r.TprAtFpr(0.003) >= 0.9);
+      finding("TPR at FPR <= 1 %, " + what, Percent(r.TprAtFpr(0.01)), "(reported)", -1);
+      finding("TPR at FPR <= 5 %, " + what, Percent(r.TprAtFpr(0.05)), "(reported)", -1);
+      finding("AUC, " + what, Num(r.auc), "(reported)", -1);
+    }
+    findings.close();
+
+    report.Heading("Findings");
+    report.Table({"finding", "value", "target", "holds"}, table);
+    report.Paragraph("Learnt objects: " + [&] {
+      std::string s;
+      for (int k = 0; k < db.objects(); ++k) {
+        int count = 0;
+        for (int h = 0; h < db.features(); ++h) count += db.MostProbableObject(h) == k;
+        s += (k ? ", " : "") + learning.names[std::size_t(k)] + " (" + std::to_string(count) + " features)";
+      }
+      return s;
+    }());
+    report.Heading("Learning: focus of attention (fig. 5.3)");
+    report.Raw(eval::SvgLinePlot("Focus box centre x", "frame", "x (px)", learning.plots_x));
+    report.Raw(eval::SvgLinePlot("Focus box centre y", "frame", "y (px)", learning.plots_y));
+    report.Raw(eval::SvgLinePlot("Features selected in the box", "frame", "features", learning.plots_features));
+    report.Heading("Recognition in another room (fig. 5.5)");
+    std::vector<eval::PlotSeries> per_object, shown;
+    const char* colours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9"};
+    for (int k = 0; k < db.objects(); ++k) {
+      eval::PlotSeries m{learning.names[std::size_t(k)], colours[k % 6], {}, 1};
+      eval::PlotSeries v{learning.names[std::size_t(k)], colours[k % 6], {}, 1};
+      for (const RecognitionRow& r : rows)
+        if (r.object == k) {
+          m.points.emplace_back(r.frame, r.scores[0]);
+          v.points.emplace_back(r.frame, r.visible_pixels >= a.min_visible ? k + 1 : NAN);
+        }
+      per_object.push_back(m);
+      shown.push_back(v);
+    }
+    report.Raw(eval::SvgLinePlot("Matches per frame per object", "frame", "matches", per_object));
+    report.Raw(eval::SvgLinePlot("Visible (ground truth), one line per object", "frame", "object", shown));
+    std::vector<eval::PlotSeries> curves, zoom;
+    for (int i = 0; i < kScores; ++i) {
+      eval::PlotSeries c{kScoreNames[i], kScoreColours[i], {}, 0}, z = c;
+      for (const eval::RocPoint& p : rocs[std::size_t(i)].points) {
+        c.points.emplace_back(100 * p.fpr, 100 * p.tpr);
+        if (p.fpr <= 0.05) z.points.emplace_back(100 * p.fpr, 100 * p.tpr);
+      }
+      curves.push_back(c);
+      zoom.push_back(z);
+    }
+    report.Raw(eval::SvgLinePlot("ROC over (frame, object) decisions, sweeping the matches required", "FPR (%)", "TPR (%)", curves));
+    report.Raw(eval::SvgLinePlot("ROC up to FPR 5 %", "FPR (%)", "TPR (%)", zoom));
+    if (a.panels_every > 0) {
+      report.Heading("Panels (matches in cyan, as fig. 5.4)");
+      for (const RecognitionRow& r : rows)
+        if (r.object == 0 && std::filesystem::exists(a.out + "/panels/" + core::FrameStem(r.frame) + ".png"))
+          report.Image("panels/" + core::FrameStem(r.frame) + ".png", "frame " + std::to_string(r.frame));
+    }
+    report.Save(a.out + "/report.html");
+    std::printf("  %s/findings.csv, recognition.csv, features.csv, focus.csv, report.html (%d frames skipped)\n",
+                a.out.c_str(), reader.skipped());
+    return 0;
+  } catch (const TCLAP::ArgException& e) {
+    std::fprintf(stderr, "novelty-objects: %s (%s)\n", e.error().c_str(), e.argId().c_str());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "novelty-objects: %s\n", e.what());
+  }
+  return 1;
+}

@@ -1,0 +1,54 @@
+#include "eval/roc.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace novelty::eval {
+
+double Roc::TprAtFpr(double max_fpr) const {
+  double best = 0.0;
+  for (const RocPoint& p : points)
+    if (p.fpr <= max_fpr) best = std::max(best, p.tpr);
+  return best;
+}
+
+double Roc::FprAtTpr(double min_tpr) const {
+  double best = 1.0;
+  for (const RocPoint& p : points)
+    if (p.tpr >= min_tpr) best = std::min(best, p.fpr);
+  return best;
+}
+
+Roc ComputeRoc(const std::vector<double>& scores, const std::vector<bool>& positive) {
+  if (scores.size() != positive.size())
+    throw std::invalid_argument("ComputeRoc: " + std::to_string(scores.size()) + " scores, " +
+                                std::to_string(positive.size()) + " labels");
+  Roc roc;
+  for (std::size_t i = 0; i < scores.size(); ++i) {
+    if (std::isnan(scores[i])) throw std::invalid_argument("ComputeRoc: score " + std::to_string(i) + " is NaN");
+    (positive[i] ? roc.positives : roc.negatives)++;
+  }
+  if (roc.positives == 0 || roc.negatives == 0)
+    throw std::invalid_argument("ComputeRoc: " + std::to_string(roc.positives) + " positives and " +
+                                std::to_string(roc.negatives) + " negatives; both are needed");
+  std::vector<std::size_t> order(scores.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
+  roc.points.push_back({std::numeric_limits<double>::infinity(), 0.0, 0.0});
+  int tp = 0, fp = 0;
+  for (std::size_t i = 0; i < order.size();) {
+    const double t = scores[order[i]];
+    for (; i < order.size() && scores[order[i]] == t; ++i) (positive[order[i]] ? tp : fp)++;
+    const RocPoint p{t, double(fp) / roc.negatives, double(tp) / roc.positives};
+    const RocPoint& q = roc.points.back();
+    roc.auc += (p.fpr - q.fpr) * 0.5 * (p.tpr + q.tpr);
+    roc.points.push_back(p);
+  }
+  return roc;
+}
+
+}  // namespace novelty::eval

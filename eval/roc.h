@@ -1,0 +1,32 @@
+// Receiver operating characteristic of a score (thesis 5.2, fig. 5.5 d): a decision "positive"
+// when score ≥ t, swept over every distinct score, gives one (FPR, TPR) point per threshold
+//   TPR = TP / (TP + FN)    (eq. 5.8)       FPR = FP / (FP + TN)    (eq. 5.9)
+// from (0, 0) (no threshold passes) to (1, 1) (every decision positive). The area under the
+// curve is the trapezoid sum, which equals the probability that a random positive scores above
+// a random negative, ties counting one half (Mann–Whitney).
+#pragma once
+
+#include <vector>
+
+namespace novelty::eval {
+
+struct RocPoint {
+  double threshold;  ///< decisions with score ≥ threshold are positive (+inf: none)
+  double fpr, tpr;
+};
+
+struct Roc {
+  std::vector<RocPoint> points;  ///< FPR and TPR non-decreasing, first (0, 0), last (1, 1)
+  int positives = 0, negatives = 0;
+  double auc = 0.0;
+
+  /// The highest TPR among the points with FPR ≤ max_fpr (0 if none reaches above 0).
+  double TprAtFpr(double max_fpr) const;
+  /// The smallest FPR among the points with TPR ≥ min_tpr (1 if only the last point does).
+  double FprAtTpr(double min_tpr) const;
+};
+
+/// Throws std::invalid_argument if the sizes differ, a score is NaN, or either class is empty.
+Roc ComputeRoc(const std::vector<double>& scores, const std::vector<bool>& positive);
+
+}  // namespace novelty::eval

@@ -1,0 +1,59 @@
+#include "eval/roc.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/core.hpp>
+
+namespace novelty::eval {
+namespace {
+
+TEST(Roc, KnownSmallCase) {
+  // Scores 4 3 3 2 1 with labels + + - + -: thresholds 4, 3, 2, 1.
+  const Roc roc = ComputeRoc({4, 3, 3, 2, 1}, {true, true, false, true, false});
+  ASSERT_EQ(roc.points.size(), 5u);
+  EXPECT_EQ(roc.positives, 3);
+  EXPECT_EQ(roc.negatives, 2);
+  const double fpr[] = {0, 0, 0.5, 0.5, 1}, tpr[] = {0, 1.0 / 3, 2.0 / 3, 1, 1};
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_DOUBLE_EQ(roc.points[std::size_t(i)].fpr, fpr[i]) << i;
+    EXPECT_DOUBLE_EQ(roc.points[std::size_t(i)].tpr, tpr[i]) << i;
+  }
+  // Positives 4 3 2 against negatives 3 1: 4>3, 4>1, 3=3 (half), 3>1, 2<3, 2>1 → 4.5 of 6.
+  EXPECT_DOUBLE_EQ(roc.auc, 4.5 / 6.0);
+  EXPECT_DOUBLE_EQ(roc.TprAtFpr(0.0), 1.0 / 3);
+  EXPECT_DOUBLE_EQ(roc.TprAtFpr(0.5), 1.0);
+  EXPECT_DOUBLE_EQ(roc.FprAtTpr(0.9), 0.5);
+}
+
+// The area equals the Mann–Whitney probability counted pair by pair, on random integer scores
+// (many ties).
+TEST(Roc, AreaIsTheMannWhitneyProbability) {
+  cv::RNG rng(3);
+  std::vector<double> scores;
+  std::vector<bool> labels;
+  for (int i = 0; i < 400; ++i) {
+    const bool p = rng.uniform(0, 3) == 0;
+    labels.push_back(p);
+    scores.push_back(double(rng.uniform(0, 12) + (p ? 4 : 0)));
+  }
+  double wins = 0.0, pairs = 0.0;
+  for (std::size_t i = 0; i < scores.size(); ++i)
+    for (std::size_t j = 0; j < scores.size(); ++j)
+      if (labels[i] && !labels[j]) {
+        pairs += 1.0;
+        wins += scores[i] > scores[j] ? 1.0 : scores[i] == scores[j] ? 0.5 : 0.0;
+      }
+  EXPECT_NEAR(ComputeRoc(scores, labels).auc, wins / pairs, 1e-12);
+}
+
+TEST(Roc, PerfectAndBadInputs) {
+  const Roc perfect = ComputeRoc({5, 6, 1, 0}, {true, true, false, false});
+  EXPECT_DOUBLE_EQ(perfect.auc, 1.0);
+  EXPECT_DOUBLE_EQ(perfect.TprAtFpr(0.0), 1.0);
+  EXPECT_THROW(ComputeRoc({1, 2}, {true}), std::invalid_argument);
+  EXPECT_THROW(ComputeRoc({1, 2}, {true, true}), std::invalid_argument);
+  EXPECT_THROW(ComputeRoc({1, std::nan("")}, {true, false}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace novelty::eval
