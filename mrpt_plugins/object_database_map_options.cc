@@ -57,8 +57,8 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "learn_unchanged_change",
             [](C & c) -> auto& { return c.map.learn_unchanged_change; },
             "learn where the region's depth is the expected one (true = the thesis, which had no "
-            "depth test; false: light and noise teach nothing, but an object whose shape the "
-            "appearance map took in already is learnt only while its features are held)")
+            "depth test; false: light and noise teach nothing, and an object whose shape the "
+            "appearance map took in already is learnt for forget_after_frames after it was added)")
         .Add(
             "distinct_second_match",
             [](C & c) -> auto& { return c.map.learner.distinct_second_match; },
@@ -87,9 +87,9 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
           CheckInRange(o.learner.min_surprising_share, 0, 1, "min_surprising_share");
           CheckInRange(o.learner.forget_after_frames, 1, 100000, "forget_after_frames");
           CheckInRange(o.relative_descriptor_change, 1e-6, 10, "relative_descriptor_change");
-          CheckInRange(o.change.min_relative_difference, 0, 10, "min_relative_depth_change");
+          CheckInRange(o.change.min_relative_difference, 1e-3, 10, "min_relative_depth_change");
           CheckInRange(o.change.min_known_share, 0, 1, "min_known_depth_share");
-          CheckInRange(o.change.min_changed_share, 0, 1, "min_changed_depth_share");
+          CheckInRange(o.change.min_changed_share, 1e-3, 1, "min_changed_depth_share");
         });
     return t;
   }();

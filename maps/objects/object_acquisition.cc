@@ -70,21 +70,22 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
   step.focus = FindFocusOfAttention(surprise, options_.focus);
   if (!step.focus.box.empty() && !expected_depth.empty())
     step.change = ClassifyChange(step.focus.region, depth, expected_depth, options_.change);
-  // An object being learnt (active features held) stays added although its depth is now
-  // expected: the appearance map stores each frame's depth with its posterior, so the frame
-  // after an object appears already predicts it there.
+  // A region whose depth is the expected one within forget_after_frames of an added one still
+  // holds that object: the appearance map takes each frame's depth into a view, so the frames
+  // after an object appears soon predict it there (a static camera's at once).
   const ChangeKind kind = step.change.kind;
-  const bool being_learnt = !learner_.active().empty();
-  step.learning = !step.focus.box.empty() &&
-                  (kind == ChangeKind::kAdded ||
-                   (kind == ChangeKind::kUnknown && options_.learn_unknown_change) ||
-                   (kind == ChangeKind::kUnchanged &&
-                    (being_learnt || options_.learn_unchanged_change)));
+  const bool added = !step.focus.box.empty() &&
+                     (kind == ChangeKind::kAdded ||
+                      (kind == ChangeKind::kUnknown && options_.learn_unknown_change));
+  frames_since_added_ = added ? 0 : std::min(frames_since_added_ + 1, 1 << 30);
+  const bool unchanged_object =
+      kind == ChangeKind::kUnchanged &&
+      (frames_since_added_ <= options_.learner.forget_after_frames ||
+       options_.learn_unchanged_change);
+  step.learning = !step.focus.box.empty() && (added || unchanged_object);
   SelectedFeatures features;
   if (step.learning) features = Extract(rgb, depth, step.focus.box, camera, step);
-  step.learner = learner_.Process(step.focus, features, camera, T_world_cam,
-                                  kind != ChangeKind::kUnchanged ||
-                                      options_.learn_unchanged_change);
+  step.learner = learner_.Process(step.focus, features, camera, T_world_cam, step.learning);
   return step;
 }
 

@@ -4,10 +4,8 @@
 //      appearance map expects there; a removed object's region shows the background it hid, and
 //      an unchanged depth says the surprise is not an object (light, noise): in both, no feature
 //      is extracted or learnt (the frame counts as one without selected features) — except that
-//      an object being learnt (the learner holds active features) stays learnt when the map,
-//      which takes each frame's depth, expects it already; such a frame still counts towards
-//      forgetting the active features, so that an object that has gone is forgotten although
-//      the focus finds features elsewhere;
+//      an unchanged region within forget_after_frames of an added one is still the added
+//      object: the map, which takes each frame's depth, soon expects it there;
 //   3. features inside the focus box, by the chosen extractor (feature_extractor.h);
 //   4. their 3-D positions from the frame's depth (the thesis matched along the other camera's
 //      epipolar lines; sensors/localization/epipolar_feature_matching.h does that for a rig);
@@ -48,7 +46,8 @@ struct ObjectAcquisitionOptions {
   /// Learn where the depths are equal too (the thesis, which had no depth test). A map that
   /// takes each frame's depth into its views (appearance_map.h) expects an object's shape soon
   /// after it appeared, long before its look stops surprising; while the robot stands still, at
-  /// once. Otherwise such frames count towards forgetting the active features (object_learner.h).
+  /// once. Off, an unchanged region is learnt from only within forget_after_frames of an added
+  /// one; later ones count towards forgetting the active features (object_learner.h).
   bool learn_unchanged_change = false;
 };
 
@@ -87,6 +86,7 @@ class ObjectAcquisition {
   ObjectAcquisitionOptions options_;
   cv::Ptr<cv::Feature2D> extractor_;
   ObjectLearner learner_;
+  int frames_since_added_ = 1 << 30;  // frames since a focus region was added (or unknown)
 };
 
 }  // namespace novelty::objects

@@ -85,7 +85,7 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
     if (by_active && learning_object_ >= 0) {
       step.recognised = LearnerStep::Recognised::kByActiveFeatures;
       step.object = learning_object_;
-    } else if (!on_surprise.empty()) {  // an unknown object (eq. 5.5): a new class
+    } else if (!on_surprise.empty() && object_in_focus) {  // an unknown object (eq. 5.5)
       step.recognised = LearnerStep::Recognised::kNewObject;
       step.object = database_.AddObject();
     } else if (by_active) {

@@ -84,7 +84,8 @@ class ObjectLearner {
   /// One frame: the focus of attention it was selected in, its selected features, and the
   /// camera and its pose. `object_in_focus` false says the focus holds no new object (its depth
   /// is the expected one): its features are still used against the active ones, but none
-  /// becomes active and the frame counts towards `forget_after_frames` like one without
+  /// becomes active, no new object class is made, and the frame counts towards
+  /// `forget_after_frames` like one without
   /// features, so that the active features of an object that has gone do not live on in
   /// whatever the focus turns to next. Throws
   /// std::invalid_argument when the features' vectors disagree.

@@ -1,6 +1,7 @@
 #include "maps/objects/ratio_matches.h"
 
 #include <algorithm>
+#include <limits>
 #include <opencv2/features2d.hpp>
 #include <stdexcept>
 #include <string>
@@ -47,7 +48,9 @@ std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& ca
   for (const auto& m : Nearest(reference, candidates, ratio, 16)) {
     if (m.size() < 2) continue;
     const cv::KeyPoint& best = candidate_keypoints[std::size_t(m[0].trainIdx)];
-    float second = m.back().distance;
+    // None of another place among all candidates: nothing to confuse it with. Among the 16
+    // nearest of more: the 16th bounds the distance of the first of another place.
+    float second = m.size() < 16 ? std::numeric_limits<float>::infinity() : m.back().distance;
     for (std::size_t i = 1; i < m.size(); ++i) {
       const cv::Point2f d = candidate_keypoints[std::size_t(m[i].trainIdx)].pt - best.pt;
       if (d.dot(d) > 0.25f * best.size * best.size) {

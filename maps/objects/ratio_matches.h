@@ -27,7 +27,8 @@ std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& ca
 /// blob at neighbouring scales or orientations, and a textured object repeats a structure a few
 /// pixels apart; compared with those, a match the object makes unique fails the ratio test
 /// (beyond the thesis, which compared with any second candidate). Among the 16 nearest, the
-/// first of another place; if none, the 16th (a lower bound, so the test only gets stricter).
+/// first of another place; if none, the 16th (a lower bound, so the test only gets stricter) —
+/// or, with fewer candidates all at one place, none: the match passes.
 /// Throws std::invalid_argument also if the keypoints are not one per candidate.
 std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& candidates,
                                      double ratio,

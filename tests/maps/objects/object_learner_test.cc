@@ -187,6 +187,15 @@ TEST(ObjectLearner, FramesWithoutANewObjectInFocusForgetTheActiveFeatures) {
   EXPECT_FALSE(learner.active().empty()) << "nine frames: still kept";
   learner.Process(Focus(shadow, 12), See({&shadow}, 12, 200), kCamera, Pose(12), false);
   EXPECT_TRUE(learner.active().empty()) << "the tenth frame drops them";
+  // A frame whose focus holds no new object makes no new class, even where the active features
+  // it has make static features on surprise.
+  {
+    ObjectLearner fresh;
+    fresh.Process(Focus(cup, 0), See({&cup}, 0, 100), kCamera, Pose(0));  // active only
+    const LearnerStep s = fresh.Process(Focus(cup, 1), See({&cup}, 1, 100), kCamera, Pose(1), false);
+    EXPECT_GT(s.static_features, 0);
+    EXPECT_EQ(fresh.database().objects(), 0);
+  }
   // The next object put down is a new one, not the cup continued.
   const Thing box = MakeThing({-0.05, 0.02, 1.0}, 0.05, 25, 9);
   for (int t = 13; t < 16; ++t)
