@@ -31,9 +31,9 @@
 #include <fstream>
 #include <map>
 #include <numeric>
-#include <optional>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -83,7 +83,10 @@ std::vector<std::string> SplitCsv(const std::string& line) {
 
 std::vector<StepRow> ReadSteps(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open (novelty-run writes it when its --config declares a CObjectDatabaseMap)");
+  if (!in)
+    throw std::runtime_error(
+        path +
+        ": cannot open (novelty-run writes it when its --config declares a CObjectDatabaseMap)");
   std::string line;
   std::getline(in, line);
   if (line.rfind("frame,box_x,box_y,box_width,box_height,change", 0) != 0)
@@ -96,14 +99,16 @@ std::vector<StepRow> ReadSteps(const std::string& path) {
       StepRow r;
       r.frame = std::stoi(c[0]);
       r.has_box = !c[1].empty();
-      if (r.has_box) r.box = cv::Rect(std::stoi(c[1]), std::stoi(c[2]), std::stoi(c[3]), std::stoi(c[4]));
+      if (r.has_box)
+        r.box = cv::Rect(std::stoi(c[1]), std::stoi(c[2]), std::stoi(c[3]), std::stoi(c[4]));
       r.change = c[5];
       r.extracted = std::stoi(c[8]);
       r.learnt = std::stoi(c[11]);
       r.object = std::stoi(c[13]);
       rows.push_back(r);
     } catch (const std::exception& e) {
-      throw std::runtime_error(path + ":" + std::to_string(n) + ": malformed row (" + e.what() + ")");
+      throw std::runtime_error(path + ":" + std::to_string(n) + ": malformed row (" + e.what() +
+                               ")");
     }
   }
   return rows;
@@ -137,8 +142,8 @@ eval::NewObjectView NewObjectAt(const sim::GroundTruthReader& truth, int frame) 
 // Learning: the focus against the new object's true box (fig. 5.3), and each db object's name:
 // the new object most often in view where it learnt.
 struct LearningEvaluation {
-  std::vector<std::string> names;  // per database object
-  std::vector<int> name_ids;       // its id in the learning ground truth, −1 unknown
+  std::vector<std::string> names;               // per database object
+  std::vector<int> name_ids;                    // its id in the learning ground truth, −1 unknown
   std::vector<std::vector<int>> learnt_frames;  // per database object
   std::vector<eval::PlotSeries> plots_x, plots_y, plots_features;
   double median_centre_error_px = NAN;
@@ -169,7 +174,9 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
     const double gx = still ? view.box.x + 0.5 * view.box.width : NAN;
     const double gy = still ? view.box.y + 0.5 * view.box.height : NAN;
     csv << r.frame << ',' << bx << ',' << by << ',' << gx << ',' << gy << ','
-        << (view.id >= 0 ? truth.ObjectNames().count(view.id) ? truth.ObjectNames().at(view.id) : "?" : "")
+        << (view.id >= 0
+                ? truth.ObjectNames().count(view.id) ? truth.ObjectNames().at(view.id) : "?"
+                : "")
         << ',' << (view.arm_pixels > 0) << ',' << r.extracted << '\n';
     mx.points.emplace_back(r.frame, bx);
     my.points.emplace_back(r.frame, by);
@@ -254,7 +261,8 @@ void DrawPanel(const core::Frame& f, const objects::FrameRecognition& r,
     const std::string text = names[std::size_t(k)] + ": " + std::to_string(e.matches) + " (" +
                              std::to_string(e.pose.verified ? e.pose.inliers : 0) + " verified)";
     cv::putText(bgr, text, cv::Point(4, y), cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(0, 0, 0), 3);
-    cv::putText(bgr, text, cv::Point(4, y), cv::FONT_HERSHEY_SIMPLEX, 0.4, cv::Scalar(255, 255, 255), 1);
+    cv::putText(bgr, text, cv::Point(4, y), cv::FONT_HERSHEY_SIMPLEX, 0.4,
+                cv::Scalar(255, 255, 255), 1);
     y += 14;
   }
   if (!cv::imwrite(path, bgr)) throw std::runtime_error(path + ": cannot write the panel");
@@ -290,7 +298,8 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
     cv::cvtColor(frame.rgb, grey, cv::COLOR_RGB2GRAY);
     const objects::FrameFeatures features = objects::ExtractFrameFeatures(grey, extractor);
     const objects::FrameRecognition r = objects::MatchObjects(features, db, frame.camera, thesis);
-    const objects::FrameRecognition rd = objects::MatchObjects(features, db, frame.camera, distinct);
+    const objects::FrameRecognition rd =
+        objects::MatchObjects(features, db, frame.camera, distinct);
     const cv::Mat ids = truth.Ids(frame.index);
     if (ids.empty())
       throw std::runtime_error(a.truth + ": no ids image for frame " + std::to_string(frame.index));
@@ -300,7 +309,9 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
         for (int i : id->second) visible += eval::VisiblePixels(ids, i);
       const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
       const objects::ObjectEvidence& ed = rd.per_object[std::size_t(k)];
-      run.rows.push_back({frame.index, k, visible,
+      run.rows.push_back({frame.index,
+                          k,
+                          visible,
                           {e.matches, e.pose.verified ? e.pose.inliers : 0, ed.matches,
                            ed.pose.verified ? ed.pose.inliers : 0}});
       csv << frame.index << ',' << k << ',' << names[std::size_t(k)] << ',' << visible << ','
@@ -321,8 +332,9 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
   for (const RecognitionRow& r : run.rows) visible.push_back(r.visible_pixels >= a.min_visible);
   const long shown = std::count(visible.begin(), visible.end(), true);
   if (shown == 0 || shown == long(visible.size()))
-    throw std::runtime_error(csv_path + ": in " + std::to_string(run.frames) + " frames the learnt objects are " +
-                             (shown ? "always" : "never") + " visible (>= " + std::to_string(a.min_visible) +
+    throw std::runtime_error(csv_path + ": in " + std::to_string(run.frames) +
+                             " frames the learnt objects are " + (shown ? "always" : "never") +
+                             " visible (>= " + std::to_string(a.min_visible) +
                              " px): a ROC needs frames with and without them");
   for (int i = 0; i < kScores; ++i) {
     std::vector<double> scores;
@@ -345,7 +357,8 @@ struct Baseline {
   double mean_iou = 0.0;  // segmentation against the object's true pixels
 };
 
-Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth, cv::Feature2D& extractor) {
+Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth,
+                       cv::Feature2D& extractor) {
   mrpt_plugins::CAppearanceMap i1;
   i1.LoadFromFile(a.baseline_map);
   const appearance::ViewBasedMap& vm = i1.map().view_map();
@@ -371,7 +384,8 @@ Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth, cv::F
     const auto distance = [&](int j) {
       return (vm.anchors()[std::size_t(j)].translation() - pose->second.translation()).norm();
     };
-    std::sort(nearest.begin(), nearest.end(), [&](int i, int j) { return distance(i) < distance(j); });
+    std::sort(nearest.begin(), nearest.end(),
+              [&](int i, int j) { return distance(i) < distance(j); });
     nearest.resize(std::min<std::size_t>(nearest.size(), 7));
     std::vector<cv::Mat> backgrounds;
     for (int j : nearest) {
@@ -385,7 +399,8 @@ Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth, cv::F
     if (backgrounds.size() < 2) continue;
     cv::Mat y;
     cv::extractChannel(color::RgbToYCbCr(frame.rgb), y, 0);
-    const cv::Mat object = objects::LargestRegion(objects::EigenbackgroundForeground(backgrounds, y));
+    const cv::Mat object =
+        objects::LargestRegion(objects::EigenbackgroundForeground(backgrounds, y));
     const cv::Mat truth_mask = ids == view.id;
     b.mean_iou += double(cv::countNonZero(object & truth_mask)) /
                   std::max(1, cv::countNonZero(object | truth_mask));
@@ -396,15 +411,18 @@ Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth, cv::F
     std::vector<cv::KeyPoint> keypoints;
     cv::Mat descriptors, learnt;
     extractor.detectAndCompute(grey, cv::noArray(), keypoints, descriptors);
-    if (!keypoints.empty() && descriptors.type() != CV_32F) descriptors.convertTo(descriptors, CV_32F);
+    if (!keypoints.empty() && descriptors.type() != CV_32F)
+      descriptors.convertTo(descriptors, CV_32F);
     std::vector<Eigen::Vector3d> places;
     for (std::size_t i = 0; i < keypoints.size(); ++i) {
       const cv::Point p(int(keypoints[i].pt.x), int(keypoints[i].pt.y));
       if (!object.at<uchar>(p)) continue;
       learnt.push_back(descriptors.row(int(i)));
       const float z = frame.depth.at<float>(p);
-      places.push_back(z > 0.0f ? Eigen::Vector3d(pose->second * frame.camera.Unproject(keypoints[i].pt.x, keypoints[i].pt.y, z))
-                                : Eigen::Vector3d::Constant(std::nan("")));
+      places.push_back(
+          z > 0.0f ? Eigen::Vector3d(pose->second * frame.camera.Unproject(keypoints[i].pt.x,
+                                                                           keypoints[i].pt.y, z))
+                   : Eigen::Vector3d::Constant(std::nan("")));
     }
     if (learnt.empty()) continue;
     if (!class_of_id.count(view.id)) {
@@ -413,7 +431,8 @@ Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth, cv::F
     }
     b.db.AddFeatures(learnt, class_of_id[view.id], places);
     if (b.frames % 25 == 0)
-      std::fprintf(stderr, "[novelty-objects] baseline frame %d, %d features\n", frame.index, b.db.features());
+      std::fprintf(stderr, "[novelty-objects] baseline frame %d, %d features\n", frame.index,
+                   b.db.features());
   }
   if (b.frames > 0) b.mean_iou /= b.frames;
   return b;
@@ -422,22 +441,44 @@ Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth, cv::F
 Args Parse(int argc, char** argv) {
   apps::CommandLine cmd(
       "Thesis 5.2: recognition, in another room, of the objects a CObjectDatabaseMap learnt where "
-      "surprise pointed; the ROC over (frame, object) decisions.", "0.1");
-  TCLAP::ValueArg<std::string> learnt("", "learnt", "novelty-run's output folder of the learning run (objects.csv, map.object_database)", true, "", "DIR", cmd);
-  TCLAP::ValueArg<std::string> learn_truth("", "learn-groundtruth", "Ground truth of the learning run", true, "", "DIR", cmd);
-  TCLAP::ValueArg<std::string> rawlog("", "rawlog", "The recognition run (I3), an RGB-D rawlog", true, "", "R.rawlog", cmd);
-  TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground truth of the recognition run", true, "", "DIR", cmd);
+      "surprise pointed; the ROC over (frame, object) decisions.",
+      "0.1");
+  TCLAP::ValueArg<std::string> learnt(
+      "", "learnt",
+      "novelty-run's output folder of the learning run (objects.csv, map.object_database)", true,
+      "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> learn_truth(
+      "", "learn-groundtruth", "Ground truth of the learning run", true, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> rawlog("", "rawlog", "The recognition run (I3), an RGB-D rawlog",
+                                      true, "", "R.rawlog", cmd);
+  TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground truth of the recognition run", true,
+                                     "", "DIR", cmd);
   TCLAP::ValueArg<std::string> out("", "out", "Output folder", true, "", "OUT", cmd);
-  TCLAP::ValueArg<int> min_visible("", "min-visible-pixels", "An object counts as visible in a frame from this many pixels on (default 400, 0.5 % of 320x240)", false, 400, "N", cmd);
-  TCLAP::ValueArg<int> frames("", "frames", "Only the first N recognition frames", false, 0, "N", cmd);
-  TCLAP::ValueArg<int> panels("", "panels-every", "Write every K-th recognition panel (default 20; 0 none)", false, 20, "K", cmd);
-  TCLAP::ValueArg<std::string> baseline_map("", "baseline-map", "The baseline (eigenbackground, [WIS+10]): the appearance map after I1 (novelty-run --frames 360 --map-out)", false, "", "M", cmd);
-  TCLAP::ValueArg<std::string> learn_rawlog("", "learn-rawlog", "The baseline: the learning rawlog (I1 + I2)", false, "", "R.rawlog", cmd);
-  TCLAP::ValueArg<int> baseline_from("", "baseline-from", "The baseline learns from this frame on (default 361, I2)", false, 361, "N", cmd);
+  TCLAP::ValueArg<int> min_visible("", "min-visible-pixels",
+                                   "An object counts as visible in a frame from this many pixels "
+                                   "on (default 400, 0.5 % of 320x240)",
+                                   false, 400, "N", cmd);
+  TCLAP::ValueArg<int> frames("", "frames", "Only the first N recognition frames", false, 0, "N",
+                              cmd);
+  TCLAP::ValueArg<int> panels("", "panels-every",
+                              "Write every K-th recognition panel (default 20; 0 none)", false, 20,
+                              "K", cmd);
+  TCLAP::ValueArg<std::string> baseline_map(
+      "", "baseline-map",
+      "The baseline (eigenbackground, [WIS+10]): the appearance map after I1 (novelty-run --frames "
+      "360 --map-out)",
+      false, "", "M", cmd);
+  TCLAP::ValueArg<std::string> learn_rawlog("", "learn-rawlog",
+                                            "The baseline: the learning rawlog (I1 + I2)", false,
+                                            "", "R.rawlog", cmd);
+  TCLAP::ValueArg<int> baseline_from("", "baseline-from",
+                                     "The baseline learns from this frame on (default 361, I2)",
+                                     false, 361, "N", cmd);
   cmd.Parse(argc, argv);
-  Args a{learnt.getValue(), learn_truth.getValue(), rawlog.getValue(), truth.getValue(),
-         out.getValue(), min_visible.getValue(), frames.getValue(), panels.getValue(),
-         baseline_map.getValue(), learn_rawlog.getValue(), baseline_from.getValue()};
+  Args a{learnt.getValue(),       learn_truth.getValue(),  rawlog.getValue(),
+         truth.getValue(),        out.getValue(),          min_visible.getValue(),
+         frames.getValue(),       panels.getValue(),       baseline_map.getValue(),
+         learn_rawlog.getValue(), baseline_from.getValue()};
   if (a.baseline_map.empty() != a.learn_rawlog.empty())
     throw std::invalid_argument("--baseline-map and --learn-rawlog go together");
   if (a.min_visible < 1) throw std::invalid_argument("--min-visible-pixels must be >= 1");
@@ -455,7 +496,8 @@ int main(int argc, char** argv) {
     map.LoadFromFile(a.learnt + "/map.object_database");
     const objects::FeatureDatabase& db = map.database();
     if (db.objects() == 0)
-      throw std::runtime_error(a.learnt + "/map.object_database: no object was learnt; nothing to recognise");
+      throw std::runtime_error(a.learnt +
+                               "/map.object_database: no object was learnt; nothing to recognise");
     const objects::ObjectAcquisitionOptions& options = map.config().map;
     const std::vector<StepRow> steps = ReadSteps(a.learnt + "/objects.csv");
     const sim::GroundTruthReader learn_truth(a.learn_truth), truth(a.truth);
@@ -509,36 +551,49 @@ int main(int argc, char** argv) {
     std::vector<std::vector<std::string>> table;
     const auto finding = [&](const std::string& what, const std::string& value,
                              const std::string& target, int holds) {
-      findings << what << ',' << value << ',' << target << ',' << (holds < 0 ? "" : holds ? "yes" : "no") << '\n';
+      findings << what << ',' << value << ',' << target << ','
+               << (holds < 0 ? ""
+                   : holds   ? "yes"
+                             : "no")
+               << '\n';
       table.push_back({what, value, target, holds < 0 ? "" : holds ? "yes" : "no"});
       std::printf("  %-58s %10s  (target %s)\n", what.c_str(), value.c_str(), target.c_str());
     };
-    std::printf("novelty-objects: %d objects, %d features learnt; %d recognition frames, %d (frame, object) decisions (%d visible)\n",
-                db.objects(), db.features(), n, roc.positives + roc.negatives, roc.positives);
+    std::printf(
+        "novelty-objects: %d objects, %d features learnt; %d recognition frames, %d (frame, "
+        "object) decisions (%d visible)\n",
+        db.objects(), db.features(), n, roc.positives + roc.negatives, roc.positives);
     finding("objects learnt", std::to_string(db.objects()), "3 (thesis)", db.objects() == 3);
     finding("features in the database", std::to_string(db.features()), "88 (thesis)", -1);
     finding("learnt features on their object", judged ? Percent(double(on_object) / judged) : "-",
             "100 % (none from background)", judged ? on_object == judged : -1);
     finding("focus box centre inside the new object's true box",
-            learning.compared_frames ? Percent(double(learning.centre_inside) / learning.compared_frames) : "-",
+            learning.compared_frames
+                ? Percent(double(learning.centre_inside) / learning.compared_frames)
+                : "-",
             "(reported)", -1);
-    finding("median focus box centre error (px)", Num(learning.median_centre_error_px, "%.1f"), "(reported)", -1);
+    finding("median focus box centre error (px)", Num(learning.median_centre_error_px, "%.1f"),
+            "(reported)", -1);
     for (int i = 0; i < kScores; ++i) {
       const std::string what = kScoreNames[i];
       const eval::Roc& r = rocs[std::size_t(i)];
-      finding("TPR at FPR <= 0.3 %, " + what, Percent(r.TprAtFpr(0.003)), ">= 90 % (thesis 81.5 %)", r.TprAtFpr(0.003) >= 0.9);
+      finding("TPR at FPR <= 0.3 %, " + what, Percent(r.TprAtFpr(0.003)), ">= 90 % (thesis 81.5 %)",
+              r.TprAtFpr(0.003) >= 0.9);
       finding("TPR at FPR <= 1 %, " + what, Percent(r.TprAtFpr(0.01)), "(reported)", -1);
       finding("TPR at FPR <= 5 %, " + what, Percent(r.TprAtFpr(0.05)), "(reported)", -1);
       finding("AUC, " + what, Num(r.auc), "(reported)", -1);
     }
     if (baseline) {
       const eval::Roc& b = baseline_run->rocs[0];
-      finding("baseline: features in the database", std::to_string(baseline->db.features()), "5531 (thesis)", -1);
-      finding("baseline: segmentation IoU with the object, mean over " + std::to_string(baseline->frames) + " frames",
+      finding("baseline: features in the database", std::to_string(baseline->db.features()),
+              "5531 (thesis)", -1);
+      finding("baseline: segmentation IoU with the object, mean over " +
+                  std::to_string(baseline->frames) + " frames",
               Num(baseline->mean_iou), "(reported)", -1);
       finding("baseline: TPR at FPR <= 0.3 %", Percent(b.TprAtFpr(0.003)), "(reported)", -1);
       finding("baseline: TPR at FPR <= 1 %", Percent(b.TprAtFpr(0.01)), "(reported)", -1);
-      finding("baseline: TPR at FPR <= 5 %", Percent(b.TprAtFpr(0.05)), "(thesis: 81.5 % at 7.2 %)", -1);
+      finding("baseline: TPR at FPR <= 5 %", Percent(b.TprAtFpr(0.05)), "(thesis: 81.5 % at 7.2 %)",
+              -1);
       finding("baseline: AUC", Num(b.auc), "(reported)", -1);
       // The thesis's claim: the surprise-driven database ahead at every FPR up to 5 %.
       bool never_behind = true, ever_ahead = false;
@@ -548,8 +603,10 @@ int main(int argc, char** argv) {
         ever_ahead = ever_ahead || roc.TprAtFpr(fpr) > b.TprAtFpr(fpr);
       }
       const bool ahead = never_behind && ever_ahead;
-      finding("surprise-driven TPR never below the baseline's at FPR <= 5 % (0.1 % steps), above somewhere",
-              ahead ? "yes" : "no", "yes (thesis)", ahead);
+      finding(
+          "surprise-driven TPR never below the baseline's at FPR <= 5 % (0.1 % steps), above "
+          "somewhere",
+          ahead ? "yes" : "no", "yes (thesis)", ahead);
     }
     findings.close();
 
@@ -560,14 +617,16 @@ int main(int argc, char** argv) {
       for (int k = 0; k < db.objects(); ++k) {
         int count = 0;
         for (int h = 0; h < db.features(); ++h) count += db.MostProbableObject(h) == k;
-        s += (k ? ", " : "") + learning.names[std::size_t(k)] + " (" + std::to_string(count) + " features)";
+        s += (k ? ", " : "") + learning.names[std::size_t(k)] + " (" + std::to_string(count) +
+             " features)";
       }
       return s;
     }());
     report.Heading("Learning: focus of attention (fig. 5.3)");
     report.Raw(eval::SvgLinePlot("Focus box centre x", "frame", "x (px)", learning.plots_x));
     report.Raw(eval::SvgLinePlot("Focus box centre y", "frame", "y (px)", learning.plots_y));
-    report.Raw(eval::SvgLinePlot("Features selected in the box", "frame", "features", learning.plots_features));
+    report.Raw(eval::SvgLinePlot("Features selected in the box", "frame", "features",
+                                 learning.plots_features));
     report.Heading("Recognition in another room (fig. 5.5)");
     std::vector<eval::PlotSeries> per_object, shown;
     const char* colours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9"};
@@ -583,7 +642,8 @@ int main(int argc, char** argv) {
       shown.push_back(v);
     }
     report.Raw(eval::SvgLinePlot("Matches per frame per object", "frame", "matches", per_object));
-    report.Raw(eval::SvgLinePlot("Visible (ground truth), one line per object", "frame", "object", shown));
+    report.Raw(
+        eval::SvgLinePlot("Visible (ground truth), one line per object", "frame", "object", shown));
     std::vector<eval::PlotSeries> curves, zoom;
     for (int i = 0; i < kScores; ++i) {
       eval::PlotSeries c{kScoreNames[i], kScoreColours[i], {}, 0}, z = c;
@@ -603,7 +663,9 @@ int main(int argc, char** argv) {
       curves.push_back(c);
       zoom.push_back(z);
     }
-    report.Raw(eval::SvgLinePlot("ROC over (frame, object) decisions, sweeping the matches required", "FPR (%)", "TPR (%)", curves));
+    report.Raw(
+        eval::SvgLinePlot("ROC over (frame, object) decisions, sweeping the matches required",
+                          "FPR (%)", "TPR (%)", curves));
     report.Raw(eval::SvgLinePlot("ROC up to FPR 5 %", "FPR (%)", "TPR (%)", zoom));
     if (a.panels_every > 0) {
       report.Heading("Panels (matches in cyan, as fig. 5.4)");
@@ -611,8 +673,10 @@ int main(int argc, char** argv) {
         report.Image("panels/" + core::FrameStem(f) + ".png", "frame " + std::to_string(f));
     }
     report.Save(a.out + "/report.html");
-    std::printf("  %s/findings.csv, recognition.csv, features.csv, focus.csv, report.html (%d frames skipped)\n",
-                a.out.c_str(), run.skipped);
+    std::printf(
+        "  %s/findings.csv, recognition.csv, features.csv, focus.csv, report.html (%d frames "
+        "skipped)\n",
+        a.out.c_str(), run.skipped);
     return 0;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-objects: %s (%s)\n", e.error().c_str(), e.argId().c_str());

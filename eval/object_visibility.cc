@@ -23,8 +23,10 @@ NewObjectView NewObjectInView(const cv::Mat& ids, const cv::Mat& novelty, int ar
   for (int v = 0; v < ids.rows; ++v)
     for (int u = 0; u < ids.cols; ++u) {
       const int id = ids.at<int>(v, u);
-      if (id == arm_id) ++view.arm_pixels;
-      else if (novelty.at<uchar>(v, u) == added_code && id >= 0) ++pixels[id];
+      if (id == arm_id)
+        ++view.arm_pixels;
+      else if (novelty.at<uchar>(v, u) == added_code && id >= 0)
+        ++pixels[id];
     }
   for (const auto& [id, n] : pixels)
     if (n > view.pixels) view.id = id, view.pixels = n;

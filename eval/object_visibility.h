@@ -11,9 +11,9 @@ namespace novelty::eval {
 int VisiblePixels(const cv::Mat& ids, int id);
 
 struct NewObjectView {
-  int id = -1;       ///< the added object seen most; −1 if none
-  int pixels = 0;    ///< its pixels
-  cv::Rect box;      ///< their bounding box
+  int id = -1;         ///< the added object seen most; −1 if none
+  int pixels = 0;      ///< its pixels
+  cv::Rect box;        ///< their bounding box
   int arm_pixels = 0;  ///< the person's arm in view (the object may be moving)
 };
 

@@ -29,7 +29,8 @@ Roc ComputeRoc(const std::vector<double>& scores, const std::vector<bool>& posit
                                 std::to_string(positive.size()) + " labels");
   Roc roc;
   for (std::size_t i = 0; i < scores.size(); ++i) {
-    if (std::isnan(scores[i])) throw std::invalid_argument("ComputeRoc: score " + std::to_string(i) + " is NaN");
+    if (std::isnan(scores[i]))
+      throw std::invalid_argument("ComputeRoc: score " + std::to_string(i) + " is NaN");
     (positive[i] ? roc.positives : roc.negatives)++;
   }
   if (roc.positives == 0 || roc.negatives == 0)
@@ -37,7 +38,8 @@ Roc ComputeRoc(const std::vector<double>& scores, const std::vector<bool>& posit
                                 std::to_string(roc.negatives) + " negatives; both are needed");
   std::vector<std::size_t> order(scores.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
   roc.points.push_back({std::numeric_limits<double>::infinity(), 0.0, 0.0});
   int tp = 0, fp = 0;
   for (std::size_t i = 0; i < order.size();) {

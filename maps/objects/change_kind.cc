@@ -6,7 +6,9 @@
 namespace novelty::objects {
 
 namespace {
-bool Known(float d) { return d > 0.0f && std::isfinite(d); }
+bool Known(float d) {
+  return d > 0.0f && std::isfinite(d);
+}
 }  // namespace
 
 ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observed_depth,
@@ -14,11 +16,12 @@ ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observ
                                     const ChangeKindOptions& options) {
   const int span = predicted_depth.type() == CV_32FC2 ? 2 : 1;
   if (region.type() != CV_8UC1 || observed_depth.type() != CV_32FC1 ||
-      (predicted_depth.type() != CV_32FC1 && span == 1) ||
-      observed_depth.size() != region.size() || predicted_depth.size() != region.size())
-    throw std::invalid_argument("ClassifyChange: region CV_8U, observed depth CV_32F and the "
-                                "predicted depth CV_32F or CV_32FC2 (nearest, farthest), of one "
-                                "size");
+      (predicted_depth.type() != CV_32FC1 && span == 1) || observed_depth.size() != region.size() ||
+      predicted_depth.size() != region.size())
+    throw std::invalid_argument(
+        "ClassifyChange: region CV_8U, observed depth CV_32F and the "
+        "predicted depth CV_32F or CV_32FC2 (nearest, farthest), of one "
+        "size");
   ChangeClassification c;
   double observed = 0.0, nearest = 0.0, farthest = 0.0;
   long inside = 0, known = 0, nearer_pixels = 0, farther_pixels = 0;

@@ -10,14 +10,18 @@ namespace novelty::objects {
 cv::Mat EigenbackgroundForeground(const std::vector<cv::Mat>& backgrounds, const cv::Mat& image,
                                   const EigenbackgroundOptions& options) {
   const int n = int(backgrounds.size());
-  if (n < 2) throw std::invalid_argument("Eigenbackground: needs at least 2 background images, got " + std::to_string(n));
+  if (n < 2)
+    throw std::invalid_argument("Eigenbackground: needs at least 2 background images, got " +
+                                std::to_string(n));
   if (options.components < 1 || !(options.threshold > 0.0) || options.morphology_size < 0)
-    throw std::invalid_argument("Eigenbackground: components >= 1, threshold > 0, morphology_size >= 0");
+    throw std::invalid_argument(
+        "Eigenbackground: components >= 1, threshold > 0, morphology_size >= 0");
   if (image.type() != CV_32FC1)
     throw std::invalid_argument("Eigenbackground: the image must be CV_32FC1");
   for (const cv::Mat& b : backgrounds)
     if (b.type() != CV_32FC1 || b.size() != image.size())
-      throw std::invalid_argument("Eigenbackground: backgrounds must be CV_32FC1 of the image's size");
+      throw std::invalid_argument(
+          "Eigenbackground: backgrounds must be CV_32FC1 of the image's size");
   // Pixels every background covers.
   cv::Mat covered(image.size(), CV_8UC1, cv::Scalar(255));
   for (const cv::Mat& b : backgrounds) covered &= (b == b);  // NaN != NaN
@@ -31,7 +35,8 @@ cv::Mat EigenbackgroundForeground(const std::vector<cv::Mat>& backgrounds, const
     int c = 0;
     for (int v = 0; v < image.rows; ++v)
       for (int u = 0; u < image.cols; ++u)
-        if (covered.at<uchar>(v, u)) data.at<float>(i, c++) = backgrounds[std::size_t(i)].at<float>(v, u);
+        if (covered.at<uchar>(v, u))
+          data.at<float>(i, c++) = backgrounds[std::size_t(i)].at<float>(v, u);
   }
   {
     int c = 0;
@@ -64,7 +69,8 @@ cv::Mat LargestRegion(const cv::Mat& mask) {
   const int count = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
   int best = 0, area = 0;
   for (int i = 1; i < count; ++i)
-    if (stats.at<int>(i, cv::CC_STAT_AREA) > area) best = i, area = stats.at<int>(i, cv::CC_STAT_AREA);
+    if (stats.at<int>(i, cv::CC_STAT_AREA) > area)
+      best = i, area = stats.at<int>(i, cv::CC_STAT_AREA);
   cv::Mat out = cv::Mat::zeros(mask.size(), CV_8UC1);
   if (best > 0) out.setTo(255, labels == best);
   return out;

@@ -36,8 +36,7 @@ FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDataba
   const bool any = !r.keypoints.empty();
   if (any && database.features() > 0 && features.descriptors.cols != database.descriptors().cols)
     throw std::invalid_argument("MatchObjects: the frame's descriptors have width " +
-                                std::to_string(features.descriptors.cols) +
-                                ", the database's " +
+                                std::to_string(features.descriptors.cols) + ", the database's " +
                                 std::to_string(database.descriptors().cols));
   const FeatureDatabase::Recognition m =
       database.Match(any ? features.descriptors : cv::Mat(), options.match_ratio,
@@ -48,8 +47,8 @@ FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDataba
     ObjectEvidence& e = r.per_object[std::size_t(k)];
     e.matches = m.matches_per_object[std::size_t(k)];
     if (options.verify && e.matches > 0)
-      e.pose = VerifyObjectMatches(database, r.matches, r.keypoints, k, camera,
-                                   options.verification);
+      e.pose =
+          VerifyObjectMatches(database, r.matches, r.keypoints, k, camera, options.verification);
   }
   return r;
 }

@@ -18,14 +18,14 @@
 namespace novelty::objects {
 
 struct ObjectEvidence {
-  int matches = 0;      ///< N_k: matched database features whose most probable object is k
-  VerifiedPose pose;    ///< set when verification was asked for and k has matches
+  int matches = 0;    ///< N_k: matched database features whose most probable object is k
+  VerifiedPose pose;  ///< set when verification was asked for and k has matches
 };
 
 struct FrameRecognition {
-  std::vector<cv::KeyPoint> keypoints;       ///< the frame's features
-  std::vector<RatioMatch> matches;           ///< reference = database feature, candidate = keypoint
-  std::vector<ObjectEvidence> per_object;    ///< one per database object
+  std::vector<cv::KeyPoint> keypoints;     ///< the frame's features
+  std::vector<RatioMatch> matches;         ///< reference = database feature, candidate = keypoint
+  std::vector<ObjectEvidence> per_object;  ///< one per database object
 };
 
 /// The matches of `object` among `matches` as 2-D–3-D pairs (the database features' learnt
@@ -37,10 +37,10 @@ VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
                                  const PoseVerificationOptions& options);
 
 struct ObjectRecognitionOptions {
-  double match_ratio = 0.65;     ///< the ratio test's bound (thesis 5.1: 0.65)
+  double match_ratio = 0.65;  ///< the ratio test's bound (thesis 5.1: 0.65)
   /// The ratio test's second candidate of another place (ratio_matches.h); false: the thesis's.
   bool distinct_second = false;
-  bool verify = false;           ///< verify each object with matches (object_pose_verification.h)
+  bool verify = false;  ///< verify each object with matches (object_pose_verification.h)
   PoseVerificationOptions verification;
 };
 

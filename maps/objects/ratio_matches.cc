@@ -58,7 +58,8 @@ std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& ca
         break;
       }
     }
-    if (m[0].distance <= ratio * second) out.push_back({m[0].queryIdx, m[0].trainIdx, m[0].distance});
+    if (m[0].distance <= ratio * second)
+      out.push_back({m[0].queryIdx, m[0].trainIdx, m[0].distance});
   }
   return out;
 }

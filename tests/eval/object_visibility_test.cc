@@ -7,12 +7,12 @@ namespace {
 
 TEST(ObjectVisibility, CountsPixelsAndFindsTheAddedObjectsBox) {
   cv::Mat ids(60, 80, CV_32SC1, cv::Scalar(0)), novelty(60, 80, CV_8UC1, cv::Scalar(0));
-  ids(cv::Rect(10, 5, 20, 10)).setTo(3);       // object 3, 200 px, added
+  ids(cv::Rect(10, 5, 20, 10)).setTo(3);  // object 3, 200 px, added
   novelty(cv::Rect(10, 5, 20, 10)).setTo(255);
-  ids(cv::Rect(50, 30, 5, 4)).setTo(4);        // object 4, 20 px, added
+  ids(cv::Rect(50, 30, 5, 4)).setTo(4);  // object 4, 20 px, added
   novelty(cv::Rect(50, 30, 5, 4)).setTo(255);
-  ids(cv::Rect(0, 40, 30, 20)).setTo(7);       // object 7, 600 px, there from the start
-  ids(cv::Rect(60, 0, 10, 10)).setTo(1000);    // the arm, 100 px (novelty 255 too)
+  ids(cv::Rect(0, 40, 30, 20)).setTo(7);     // object 7, 600 px, there from the start
+  ids(cv::Rect(60, 0, 10, 10)).setTo(1000);  // the arm, 100 px (novelty 255 too)
   novelty(cv::Rect(60, 0, 10, 10)).setTo(255);
   EXPECT_EQ(VisiblePixels(ids, 3), 200);
   EXPECT_EQ(VisiblePixels(ids, 7), 600);

@@ -33,7 +33,8 @@ double IoU(const cv::Mat& a, const cv::Mat& b) {
 TEST(Eigenbackground, ExplainsTheLightAndFindsWhatStandsInFront) {
   const cv::Mat wall = Wall();
   std::vector<cv::Mat> backgrounds;
-  const double gains[] = {0.6, 0.8, 1.0, 1.2, 0.7, 1.1, 0.9}, offsets[] = {10, -5, 0, 8, 20, -10, 3};
+  const double gains[] = {0.6, 0.8, 1.0, 1.2, 0.7, 1.1, 0.9},
+               offsets[] = {10, -5, 0, 8, 20, -10, 3};
   for (int i = 0; i < 7; ++i) backgrounds.push_back(Lit(wall, gains[i], offsets[i], i));
   // A light between the known ones: no foreground (plain differencing with the mean would see it).
   const cv::Mat relit = Lit(wall, 1.15, -8, 11);
@@ -54,7 +55,8 @@ TEST(Eigenbackground, ExplainsTheLightAndFindsWhatStandsInFront) {
 
 TEST(Eigenbackground, UncoveredPixelsAreNeverForegroundAndBadInputIsRejected) {
   const cv::Mat wall = Wall();
-  std::vector<cv::Mat> backgrounds = {Lit(wall, 1.0, 0, 1), Lit(wall, 0.8, 5, 2), Lit(wall, 1.1, 0, 3)};
+  std::vector<cv::Mat> backgrounds = {Lit(wall, 1.0, 0, 1), Lit(wall, 0.8, 5, 2),
+                                      Lit(wall, 1.1, 0, 3)};
   backgrounds[1](cv::Rect(0, 0, 40, 120)).setTo(std::nan(""));
   cv::Mat image = Lit(wall, 1.0, 0, 4);
   image(cv::Rect(0, 0, 80, 120)).setTo(255.0f);  // bright, half of it where a view had nothing
@@ -62,7 +64,8 @@ TEST(Eigenbackground, UncoveredPixelsAreNeverForegroundAndBadInputIsRejected) {
   EXPECT_EQ(cv::countNonZero(f(cv::Rect(0, 0, 40, 120))), 0);
   EXPECT_GT(cv::countNonZero(f(cv::Rect(40, 0, 40, 120))), 40 * 120 * 8 / 10);
   EXPECT_THROW(EigenbackgroundForeground({wall}, image), std::invalid_argument);
-  EXPECT_THROW(EigenbackgroundForeground(backgrounds, cv::Mat(10, 10, CV_32F)), std::invalid_argument);
+  EXPECT_THROW(EigenbackgroundForeground(backgrounds, cv::Mat(10, 10, CV_32F)),
+               std::invalid_argument);
   EigenbackgroundOptions o;
   o.components = 0;
   EXPECT_THROW(EigenbackgroundForeground(backgrounds, image, o), std::invalid_argument);

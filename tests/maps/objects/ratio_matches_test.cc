@@ -8,7 +8,8 @@ namespace {
 cv::Mat Descriptor(int seed, float noise = 0.0f, const cv::Mat& base = cv::Mat()) {
   cv::Mat d(1, 64, CV_32F);
   cv::RNG rng(seed);
-  if (base.empty()) rng.fill(d, cv::RNG::NORMAL, 0.0, 1.0);
+  if (base.empty())
+    rng.fill(d, cv::RNG::NORMAL, 0.0, 1.0);
   else {
     rng.fill(d, cv::RNG::NORMAL, 0.0, noise);
     d += base;
@@ -16,7 +17,9 @@ cv::Mat Descriptor(int seed, float noise = 0.0f, const cv::Mat& base = cv::Mat()
   return d;
 }
 
-cv::KeyPoint At(float x, float y) { return cv::KeyPoint(cv::Point2f(x, y), 20.0f); }
+cv::KeyPoint At(float x, float y) {
+  return cv::KeyPoint(cv::Point2f(x, y), 20.0f);
+}
 
 TEST(RatioMatches, TheSecondOfAnotherPlaceIgnoresDuplicatesOfTheNearestsBlob) {
   const cv::Mat reference = Descriptor(1);
