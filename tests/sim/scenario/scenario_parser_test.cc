@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace novelty::sim {
@@ -141,12 +144,25 @@ TEST(ScenarioParser, MissingFileIsNamed) {
   }
 }
 
+// The object scenarios print photographs from ../shared/data/textures beside the checkout; where
+// the shared data is absent they are left out (as every test on real data skips).
+bool NeedsAbsentSharedData(const std::filesystem::path& scenario) {
+  std::ifstream in(scenario);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return text.find("../shared/data/") != std::string::npos &&
+         !std::filesystem::exists(std::string(NOVELTY_SOURCE_DIR) + "/../shared/data/textures");
+}
+
 TEST(ScenarioParser, EveryShippedScenarioParses) {
   int count = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::string(NOVELTY_SOURCE_DIR) + "/share/scenarios")) {
     if (entry.path().extension() != ".scn") continue;
     SCOPED_TRACE(entry.path().string());
+    if (NeedsAbsentSharedData(entry.path())) {
+      std::printf("skipped (../shared/data/textures absent): %s\n", entry.path().c_str());
+      continue;
+    }
     const Scenario s = LoadScenario(entry.path().string());
     EXPECT_FALSE(s.name.empty());
     EXPECT_GT(s.frames, 0);
