@@ -408,11 +408,10 @@ Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth,
     cv::Mat grey;
     cv::cvtColor(frame.rgb, grey, cv::COLOR_RGB2GRAY);
     grey.setTo(128, object == 0);
-    std::vector<cv::KeyPoint> keypoints;
-    cv::Mat descriptors, learnt;
-    extractor.detectAndCompute(grey, cv::noArray(), keypoints, descriptors);
-    if (!keypoints.empty() && descriptors.type() != CV_32F)
-      descriptors.convertTo(descriptors, CV_32F);
+    const objects::FrameFeatures features = objects::ExtractFrameFeatures(grey, extractor);
+    const std::vector<cv::KeyPoint>& keypoints = features.keypoints;
+    const cv::Mat& descriptors = features.descriptors;
+    cv::Mat learnt;
     std::vector<Eigen::Vector3d> places;
     for (std::size_t i = 0; i < keypoints.size(); ++i) {
       const cv::Point p(int(keypoints[i].pt.x), int(keypoints[i].pt.y));
