@@ -1,0 +1,260 @@
+#include "maps/illumination/invariant_image.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "maps/illumination/gradient_integration.h"
+
+namespace novelty::illumination {
+
+namespace {
+
+std::string Name(std::size_t m) {
+  return "image " + std::to_string(m);
+}
+
+void CheckInputs(const std::vector<cv::Mat>& images, const std::vector<cv::Mat>& coverage,
+                 const InvariantImageOptions& o) {
+  if (!(o.min_intensity > 0.0 && std::isfinite(o.min_intensity)) || o.min_lightings < 2)
+    throw std::invalid_argument(
+        "ComputeInvariantImage: options need min_intensity > 0 and min_lightings >= 2");
+  if (images.size() < 2)
+    throw std::invalid_argument(
+        "ComputeInvariantImage: " + std::to_string(images.size()) +
+        " image(s): a single lighting gives no invariant image (the median of one image's "
+        "gradients is that image's own); at least 2 lightings are needed");
+  if (int(images.size()) < o.min_lightings)
+    throw std::invalid_argument(
+        "ComputeInvariantImage: " + std::to_string(images.size()) +
+        " images, fewer than min_lightings = " + std::to_string(o.min_lightings));
+  if (!coverage.empty() && coverage.size() != images.size())
+    throw std::invalid_argument("ComputeInvariantImage: " + std::to_string(coverage.size()) +
+                                " coverage masks for " + std::to_string(images.size()) + " images");
+  const cv::Mat& first = images.front();
+  for (std::size_t m = 0; m < images.size(); ++m) {
+    const cv::Mat& im = images[m];
+    const int depth = im.depth(), channels = im.channels();
+    if (im.empty() || (depth != CV_8U && depth != CV_16U && depth != CV_32F) ||
+        (channels != 1 && channels != 3))
+      throw std::invalid_argument("ComputeInvariantImage: " + Name(m) +
+                                  " must be a non-empty 8-bit, 16-bit or float image with 1 or "
+                                  "3 channels");
+    if (im.size() != first.size() || im.type() != first.type())
+      throw std::invalid_argument("ComputeInvariantImage: " + Name(m) + " is " +
+                                  std::to_string(im.cols) + "x" + std::to_string(im.rows) +
+                                  " of type " + std::to_string(im.type()) + ", image 0 " +
+                                  std::to_string(first.cols) + "x" + std::to_string(first.rows) +
+                                  " of type " + std::to_string(first.type()) +
+                                  ": all lightings must be one viewpoint's images of one size");
+    if (depth == CV_32F && !cv::checkRange(im))
+      throw std::invalid_argument("ComputeInvariantImage: " + Name(m) +
+                                  " holds NaN or infinite values; mark invalid pixels in its "
+                                  "coverage mask instead");
+    if (!coverage.empty() && (coverage[m].type() != CV_8UC1 || coverage[m].size() != first.size()))
+      throw std::invalid_argument("ComputeInvariantImage: coverage mask " + std::to_string(m) +
+                                  " must be CV_8UC1 of the images' size");
+  }
+}
+
+// The images as float on the 0…255 scale.
+std::vector<cv::Mat> FloatImages(const std::vector<cv::Mat>& images) {
+  std::vector<cv::Mat> out(images.size());
+  for (std::size_t m = 0; m < images.size(); ++m) {
+    const double scale = images[m].depth() == CV_16U ? 255.0 / 65535.0 : 1.0;
+    images[m].convertTo(out[m], CV_MAKETYPE(CV_32F, images[m].channels()), scale);
+  }
+  return out;
+}
+
+// log(max(image, floor)).
+cv::Mat ClippedLog(const cv::Mat& image, double floor) {
+  cv::Mat out;
+  cv::max(image, floor, out);
+  cv::log(out, out);
+  return out;
+}
+
+// Channel c of every image, clipped, in the log domain.
+std::vector<cv::Mat> LogChannel(const std::vector<cv::Mat>& images, int c, double floor) {
+  std::vector<cv::Mat> logs(images.size());
+  for (std::size_t m = 0; m < images.size(); ++m) {
+    cv::extractChannel(images[m], logs[m], c);
+    logs[m] = ClippedLog(logs[m], floor);
+  }
+  return logs;
+}
+
+// The luminance (channel mean) of every image, clipped, in the log domain.
+std::vector<cv::Mat> LogLuminance(const std::vector<cv::Mat>& images, double floor) {
+  std::vector<cv::Mat> logs(images.size());
+  for (std::size_t m = 0; m < images.size(); ++m) {
+    cv::transform(images[m], logs[m], cv::Matx13f(1.0f / 3, 1.0f / 3, 1.0f / 3));
+    logs[m] = ClippedLog(logs[m], floor);
+  }
+  return logs;
+}
+
+// Median of v[0..n) (n ≥ 1), reordering v; the mean of the two middle values for even n.
+float Median(float* v, int n) {
+  if (n <= 16) {
+    for (int i = 1; i < n; ++i) {
+      const float key = v[i];
+      int j = i - 1;
+      for (; j >= 0 && v[j] > key; --j) v[j + 1] = v[j];
+      v[j + 1] = key;
+    }
+    return n % 2 ? v[n / 2] : 0.5f * (v[n / 2 - 1] + v[n / 2]);
+  }
+  std::nth_element(v, v + n / 2, v + n);
+  const float upper = v[n / 2];
+  if (n % 2) return upper;
+  return 0.5f * (*std::max_element(v, v + n / 2) + upper);
+}
+
+struct MedianGradients {
+  cv::Mat gx, gy;
+};
+
+// Eq. 6.8-6.9 for one channel: per pixel the median over the images that cover both pixels of
+// the difference; 0 where fewer than min_lightings do.
+MedianGradients MedianLogGradients(const std::vector<cv::Mat>& logs,
+                                   const std::vector<cv::Mat>& coverage, int min_lightings) {
+  const int rows = logs.front().rows, cols = logs.front().cols, m_count = int(logs.size());
+  MedianGradients g{cv::Mat::zeros(rows, cols, CV_32F), cv::Mat::zeros(rows, cols, CV_32F)};
+  cv::parallel_for_(cv::Range(0, rows), [&](const cv::Range& range) {
+    std::vector<const float*> row(m_count), below(m_count);
+    std::vector<const uchar*> cov(m_count), cov_below(m_count);
+    std::vector<float> vx(m_count), vy(m_count);
+    for (int y = range.start; y < range.end; ++y) {
+      const bool last_row = y + 1 == rows;
+      for (int m = 0; m < m_count; ++m) {
+        row[m] = logs[m].ptr<float>(y);
+        below[m] = last_row ? nullptr : logs[m].ptr<float>(y + 1);
+        cov[m] = coverage.empty() ? nullptr : coverage[m].ptr<uchar>(y);
+        cov_below[m] = coverage.empty() || last_row ? nullptr : coverage[m].ptr<uchar>(y + 1);
+      }
+      float* gx = g.gx.ptr<float>(y);
+      float* gy = g.gy.ptr<float>(y);
+      for (int x = 0; x < cols; ++x) {
+        int nx = 0, ny = 0;
+        for (int m = 0; m < m_count; ++m) {
+          if (cov[m] && !cov[m][x]) continue;
+          if (x + 1 < cols && (!cov[m] || cov[m][x + 1])) vx[nx++] = row[m][x + 1] - row[m][x];
+          if (!last_row && (!cov[m] || cov_below[m][x])) vy[ny++] = below[m][x] - row[m][x];
+        }
+        gx[x] = nx >= min_lightings ? Median(vx.data(), nx) : 0.0f;
+        gy[x] = ny >= min_lightings ? Median(vy.data(), ny) : 0.0f;
+      }
+    }
+  });
+  return g;
+}
+
+cv::Mat CoveredPixels(const std::vector<cv::Mat>& coverage, cv::Size size, int min_lightings) {
+  if (coverage.empty()) return cv::Mat(size, CV_8U, cv::Scalar(255));
+  cv::Mat count = cv::Mat::zeros(size, CV_16U);
+  for (const cv::Mat& c : coverage) cv::add(count, cv::Scalar(1), count, c);
+  return count >= min_lightings;
+}
+
+// r̂ of one plane (eq. 6.6-6.13) from its log images; its constant makes the illumination
+// images average 0 over the covered pixels; 0 where not covered.
+cv::Mat InvariantPlane(const std::vector<cv::Mat>& logs, const std::vector<cv::Mat>& coverage,
+                       const cv::Mat& covered, int min_lightings) {
+  const MedianGradients g = MedianLogGradients(logs, coverage, min_lightings);
+  const bool whole_image = cv::countNonZero(covered) == covered.size().area();
+  cv::Mat r = whole_image ? IntegrateGradients(g.gx, g.gy)
+                          : IntegrateGradientsInRegion(g.gx, g.gy, covered);
+  double sum = 0.0, count = 0.0;
+  for (std::size_t m = 0; m < logs.size(); ++m) {
+    cv::Mat valid = covered.clone();
+    if (!coverage.empty()) valid &= coverage[m];
+    const int n = cv::countNonZero(valid);
+    if (n > 0) sum += cv::mean(logs[m] - r, valid)[0] * n;
+    count += n;
+  }
+  if (count > 0) r += sum / count;
+  r.setTo(0.0f, covered == 0);
+  return r;
+}
+
+// Per pixel and channel the median over the covering images of the channel's share of the
+// luminance (1 for a black pixel), normalised to mean 1 over the channels; as logs, one plane per
+// channel. The shares are taken before clipping, which would whiten dark colours.
+std::vector<cv::Mat> LogChromaticity(const std::vector<cv::Mat>& images,
+                                     const std::vector<cv::Mat>& coverage, const cv::Mat& covered) {
+  const cv::Size size = covered.size();
+  std::vector<cv::Mat> out(3);
+  for (cv::Mat& o : out) o = cv::Mat::zeros(size, CV_32F);
+  cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& range) {
+    std::vector<float> v[3];
+    for (int y = range.start; y < range.end; ++y) {
+      for (int x = 0; x < size.width; ++x) {
+        if (!covered.at<uchar>(y, x)) continue;
+        for (auto& vc : v) vc.clear();
+        for (std::size_t m = 0; m < images.size(); ++m) {
+          if (!coverage.empty() && !coverage[m].at<uchar>(y, x)) continue;
+          const cv::Vec3f p = images[m].at<cv::Vec3f>(y, x);
+          const float mean = std::max(0.0f, (p[0] + p[1] + p[2]) / 3.0f);
+          for (int c = 0; c < 3; ++c)
+            v[c].push_back(mean > 0.0f ? std::max(0.0f, p[c]) / mean : 1.0f);
+        }
+        float share[3], total = 0.0f;
+        for (int c = 0; c < 3; ++c) total += share[c] = Median(v[c].data(), int(v[c].size()));
+        // A channel that is black in most images gets the share of a dark but positive one, so
+        // that its log stays finite.
+        for (int c = 0; c < 3; ++c)
+          out[c].at<float>(y, x) = std::log(std::max(3.0f * share[c] / total, 1e-3f));
+      }
+    }
+  });
+  return out;
+}
+
+}  // namespace
+
+InvariantImage ComputeInvariantImage(const std::vector<cv::Mat>& images,
+                                     const std::vector<cv::Mat>& coverage,
+                                     const InvariantImageOptions& options) {
+  CheckInputs(images, coverage, options);
+  const std::vector<cv::Mat> linear = FloatImages(images);
+  const double floor = options.min_intensity;
+  const int channels = images.front().channels(), m_count = int(images.size());
+  InvariantImage out;
+  out.covered = CoveredPixels(coverage, images.front().size(), options.min_lightings);
+  std::vector<cv::Mat> r_planes(channels);
+  if (channels == 3 && options.colour == InvariantImageOptions::Colour::kLuminanceChromaticity) {
+    const cv::Mat r_luminance =
+        InvariantPlane(LogLuminance(linear, floor), coverage, out.covered, options.min_lightings);
+    r_planes = LogChromaticity(linear, coverage, out.covered);
+    for (cv::Mat& r : r_planes) {
+      r += r_luminance;
+      r.setTo(0.0f, out.covered == 0);
+    }
+  } else {
+    for (int c = 0; c < channels; ++c)
+      r_planes[c] = InvariantPlane(LogChannel(linear, c, floor), coverage, out.covered,
+                                   options.min_lightings);
+  }
+  cv::merge(r_planes, out.log_invariant);
+  // Eq. 6.14, 0 where image m or r̂ does not cover.
+  out.log_illumination.resize(m_count);
+  for (int m = 0; m < m_count; ++m) {
+    out.log_illumination[m] = ClippedLog(linear[m], floor) - out.log_invariant;
+    cv::Mat invalid = out.covered == 0;
+    if (!coverage.empty()) invalid |= coverage[m] == 0;
+    out.log_illumination[m].setTo(cv::Scalar::all(0.0), invalid);
+  }
+  return out;
+}
+
+cv::Mat LinearImage(const cv::Mat& log_image, const cv::Mat& covered) {
+  cv::Mat linear;
+  cv::exp(log_image, linear);
+  if (!covered.empty()) linear.setTo(cv::Scalar::all(0.0), covered == 0);
+  return linear;
+}
+
+}  // namespace novelty::illumination
