@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "maps/illumination/gradient_integration.h"
+#include "maps/stats/column_medians.h"
 
 namespace novelty::illumination {
 
@@ -96,22 +98,7 @@ std::vector<cv::Mat> LogLuminance(const std::vector<cv::Mat>& images, double flo
   return logs;
 }
 
-// Median of v[0..n) (n ≥ 1), reordering v; the mean of the two middle values for even n.
-float Median(float* v, int n) {
-  if (n <= 16) {
-    for (int i = 1; i < n; ++i) {
-      const float key = v[i];
-      int j = i - 1;
-      for (; j >= 0 && v[j] > key; --j) v[j + 1] = v[j];
-      v[j + 1] = key;
-    }
-    return n % 2 ? v[n / 2] : 0.5f * (v[n / 2 - 1] + v[n / 2]);
-  }
-  std::nth_element(v, v + n / 2, v + n);
-  const float upper = v[n / 2];
-  if (n % 2) return upper;
-  return 0.5f * (*std::max_element(v, v + n / 2) + upper);
-}
+constexpr float kMissing = std::numeric_limits<float>::infinity();
 
 struct MedianGradients {
   cv::Mat gx, gy;
@@ -124,29 +111,25 @@ MedianGradients MedianLogGradients(const std::vector<cv::Mat>& logs,
   const int rows = logs.front().rows, cols = logs.front().cols, m_count = int(logs.size());
   MedianGradients g{cv::Mat::zeros(rows, cols, CV_32F), cv::Mat::zeros(rows, cols, CV_32F)};
   cv::parallel_for_(cv::Range(0, rows), [&](const cv::Range& range) {
-    std::vector<const float*> row(m_count), below(m_count);
-    std::vector<const uchar*> cov(m_count), cov_below(m_count);
-    std::vector<float> vx(m_count), vy(m_count);
+    std::vector<float> vx(size_t(m_count) * cols), vy(size_t(m_count) * cols);
     for (int y = range.start; y < range.end; ++y) {
       const bool last_row = y + 1 == rows;
       for (int m = 0; m < m_count; ++m) {
-        row[m] = logs[m].ptr<float>(y);
-        below[m] = last_row ? nullptr : logs[m].ptr<float>(y + 1);
-        cov[m] = coverage.empty() ? nullptr : coverage[m].ptr<uchar>(y);
-        cov_below[m] = coverage.empty() || last_row ? nullptr : coverage[m].ptr<uchar>(y + 1);
+        const float* row = logs[m].ptr<float>(y);
+        const float* below = last_row ? nullptr : logs[m].ptr<float>(y + 1);
+        const uchar* cov = coverage.empty() ? nullptr : coverage[m].ptr<uchar>(y);
+        const uchar* cov_below =
+            coverage.empty() || last_row ? nullptr : coverage[m].ptr<uchar>(y + 1);
+        float* dx = vx.data() + size_t(m) * cols;
+        float* dy = vy.data() + size_t(m) * cols;
+        for (int x = 0; x + 1 < cols; ++x)
+          dx[x] = !cov || (cov[x] && cov[x + 1]) ? row[x + 1] - row[x] : kMissing;
+        dx[cols - 1] = kMissing;
+        for (int x = 0; x < cols; ++x)
+          dy[x] = below && (!cov || (cov[x] && cov_below[x])) ? below[x] - row[x] : kMissing;
       }
-      float* gx = g.gx.ptr<float>(y);
-      float* gy = g.gy.ptr<float>(y);
-      for (int x = 0; x < cols; ++x) {
-        int nx = 0, ny = 0;
-        for (int m = 0; m < m_count; ++m) {
-          if (cov[m] && !cov[m][x]) continue;
-          if (x + 1 < cols && (!cov[m] || cov[m][x + 1])) vx[nx++] = row[m][x + 1] - row[m][x];
-          if (!last_row && (!cov[m] || cov_below[m][x])) vy[ny++] = below[m][x] - row[m][x];
-        }
-        gx[x] = nx >= min_lightings ? Median(vx.data(), nx) : 0.0f;
-        gy[x] = ny >= min_lightings ? Median(vy.data(), ny) : 0.0f;
-      }
+      stats::ColumnMedians(vx.data(), m_count, cols, min_lightings, 0.0f, g.gx.ptr<float>(y));
+      stats::ColumnMedians(vy.data(), m_count, cols, min_lightings, 0.0f, g.gy.ptr<float>(y));
     }
   });
   return g;
@@ -186,27 +169,38 @@ cv::Mat InvariantPlane(const std::vector<cv::Mat>& logs, const std::vector<cv::M
 std::vector<cv::Mat> LogChromaticity(const std::vector<cv::Mat>& images,
                                      const std::vector<cv::Mat>& coverage, const cv::Mat& covered) {
   const cv::Size size = covered.size();
+  const int m_count = int(images.size()), cols = size.width;
   std::vector<cv::Mat> out(3);
   for (cv::Mat& o : out) o = cv::Mat::zeros(size, CV_32F);
   cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& range) {
-    std::vector<float> v[3];
+    std::vector<float> shares(size_t(3) * m_count * cols), median(size_t(3) * cols);
     for (int y = range.start; y < range.end; ++y) {
-      for (int x = 0; x < size.width; ++x) {
-        if (!covered.at<uchar>(y, x)) continue;
-        for (auto& vc : v) vc.clear();
-        for (std::size_t m = 0; m < images.size(); ++m) {
-          if (!coverage.empty() && !coverage[m].at<uchar>(y, x)) continue;
-          const cv::Vec3f p = images[m].at<cv::Vec3f>(y, x);
-          const float mean = std::max(0.0f, (p[0] + p[1] + p[2]) / 3.0f);
-          for (int c = 0; c < 3; ++c)
-            v[c].push_back(mean > 0.0f ? std::max(0.0f, p[c]) / mean : 1.0f);
+      for (int m = 0; m < m_count; ++m) {
+        const cv::Vec3f* p = images[m].ptr<cv::Vec3f>(y);
+        const uchar* cov = coverage.empty() ? nullptr : coverage[m].ptr<uchar>(y);
+        for (int x = 0; x < cols; ++x) {
+          const float mean = std::max(0.0f, (p[x][0] + p[x][1] + p[x][2]) / 3.0f);
+          for (int c = 0; c < 3; ++c) {
+            float& share = shares[(size_t(c) * m_count + m) * cols + x];
+            if (cov && !cov[x])
+              share = kMissing;
+            else
+              share = mean > 0.0f ? std::max(0.0f, p[x][c]) / mean : 1.0f;
+          }
         }
-        float share[3], total = 0.0f;
-        for (int c = 0; c < 3; ++c) total += share[c] = Median(v[c].data(), int(v[c].size()));
+      }
+      for (int c = 0; c < 3; ++c)
+        stats::ColumnMedians(shares.data() + size_t(c) * m_count * cols, m_count, cols, 1, 1.0f,
+                             median.data() + size_t(c) * cols);
+      const uchar* inside = covered.ptr<uchar>(y);
+      for (int x = 0; x < cols; ++x) {
+        if (!inside[x]) continue;
+        const float total = median[x] + median[cols + x] + median[2 * cols + x];
         // A channel that is black in most images gets the share of a dark but positive one, so
         // that its log stays finite.
         for (int c = 0; c < 3; ++c)
-          out[c].at<float>(y, x) = std::log(std::max(3.0f * share[c] / total, 1e-3f));
+          out[c].at<float>(y, x) =
+              std::log(std::max(3.0f * median[size_t(c) * cols + x] / total, 1e-3f));
       }
     }
   });
