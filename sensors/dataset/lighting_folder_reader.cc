@@ -1,0 +1,107 @@
+#include "sensors/dataset/lighting_folder_reader.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <set>
+#include <stdexcept>
+
+namespace novelty::sensors {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+bool IsImage(const fs::path& p) {
+  static const std::set<std::string> kExtensions = {".png", ".jpg", ".jpeg", ".tif", ".tiff",
+                                                    ".bmp", ".ppm", ".pgm",  ".pnm"};
+  return kExtensions.count(Lower(p.extension().string())) > 0;
+}
+
+// R G B (or grey) as stored; throws naming the file.
+cv::Mat ReadImage(const fs::path& path) {
+  const cv::Mat raw = cv::imread(path.string(), cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR);
+  if (raw.empty()) throw std::runtime_error(path.string() + ": cannot be read as an image");
+  if (raw.depth() != CV_8U && raw.depth() != CV_16U)
+    throw std::runtime_error(path.string() + ": only 8- and 16-bit images are supported");
+  cv::Mat out;
+  if (raw.channels() == 3)
+    cv::cvtColor(raw, out, cv::COLOR_BGR2RGB);
+  else if (raw.channels() == 4)
+    cv::cvtColor(raw, out, cv::COLOR_BGRA2RGB);
+  else
+    out = raw;
+  return out;
+}
+
+cv::Mat AsFloat(const cv::Mat& image) {
+  cv::Mat f;
+  image.convertTo(f, CV_MAKETYPE(CV_32F, image.channels()),
+                  image.depth() == CV_16U ? 255.0 / 65535.0 : 1.0);
+  return f;
+}
+
+std::string Describe(const cv::Mat& m) {
+  return std::to_string(m.cols) + "x" + std::to_string(m.rows) + " with " +
+         std::to_string(m.channels()) + " channel(s)";
+}
+
+}  // namespace
+
+LightingFolder ReadLightingFolder(const std::string& folder) {
+  if (!fs::is_directory(folder)) throw std::runtime_error(folder + ": no such folder of lightings");
+  std::vector<fs::path> lightings;
+  LightingFolder out;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const fs::path p = entry.path();
+    if (!entry.is_regular_file() || !IsImage(p) || p.filename().string().front() == '.') continue;
+    const std::string stem = Lower(p.stem().string());
+    if (stem == "mask") {
+      cv::Mat m = ReadImage(p);
+      if (m.channels() == 3) cv::cvtColor(m, m, cv::COLOR_RGB2GRAY);
+      out.mask = m > 0;
+    } else if (stem == "reflectance") {
+      out.reflectance = AsFloat(ReadImage(p));
+    } else if (stem == "shading") {
+      out.shading = AsFloat(ReadImage(p));
+    } else if (stem == "diffuse") {
+      out.diffuse = AsFloat(ReadImage(p));
+    } else {
+      lightings.push_back(p);
+    }
+  }
+  std::sort(lightings.begin(), lightings.end());
+  if (lightings.size() < 2)
+    throw std::runtime_error(folder + ": " + std::to_string(lightings.size()) +
+                             " image(s) of lightings; a single lighting gives no invariant "
+                             "image, at least 2 are needed");
+  for (const fs::path& p : lightings) {
+    out.images.push_back(ReadImage(p));
+    out.names.push_back(p.filename().string());
+    const cv::Mat& first = out.images.front();
+    const cv::Mat& last = out.images.back();
+    if (last.size() != first.size() || last.channels() != first.channels())
+      throw std::runtime_error(p.string() + " is " + Describe(last) + ", " + out.names.front() +
+                               " " + Describe(first) +
+                               ": all lightings must be images of one viewpoint and size");
+  }
+  const cv::Size size = out.images.front().size();
+  auto check = [&](const cv::Mat& m, const char* name) {
+    if (!m.empty() && m.size() != size)
+      throw std::runtime_error(folder + "/" + name + " is " + Describe(m) + ", the lightings are " +
+                               Describe(out.images.front()));
+  };
+  check(out.mask, "mask");
+  check(out.reflectance, "reflectance");
+  check(out.shading, "shading");
+  check(out.diffuse, "diffuse");
+  return out;
+}
+
+}  // namespace novelty::sensors

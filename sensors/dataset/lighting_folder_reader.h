@@ -1,0 +1,28 @@
+// Reads a folder of images of one viewpoint under different lights, the input of
+// novelty-invariant: every image file in it (PNG, JPEG, TIFF, BMP, PNM), in name order, 8 or 16
+// bits, colour or grey. Files named mask.*, reflectance.*, shading.* and diffuse.* are not
+// lightings: a mask (non-zero = the pixels to use) and, in the MIT Intrinsic Images layout, the
+// ground truth of the decomposition (true reflectance and shading, the diffuse image the
+// benchmark divides to score a shading estimate).
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+namespace novelty::sensors {
+
+struct LightingFolder {
+  std::vector<cv::Mat> images;     ///< R G B (or grey), CV_8U or CV_16U as stored
+  std::vector<std::string> names;  ///< their file names
+  cv::Mat mask;                    ///< CV_8UC1 (255 = use), empty when the folder has none
+  /// Ground truth, float on the 0…255 scale (R G B or grey), each empty when absent.
+  cv::Mat reflectance, shading, diffuse;
+};
+
+/// Throws std::runtime_error naming the folder or file: a folder that does not exist, fewer than
+/// two lightings (one image is a single lighting: no invariant image), a file that cannot be
+/// read, or images whose size or channels differ from the first one's.
+LightingFolder ReadLightingFolder(const std::string& folder);
+
+}  // namespace novelty::sensors
