@@ -244,6 +244,18 @@ InvariantImage ComputeInvariantImage(const std::vector<cv::Mat>& images,
   return out;
 }
 
+cv::Mat LogIllumination(const cv::Mat& image, const cv::Mat& log_invariant, double min_intensity) {
+  if (image.size() != log_invariant.size() || image.channels() != log_invariant.channels() ||
+      log_invariant.depth() != CV_32F ||
+      (image.depth() != CV_8U && image.depth() != CV_16U && image.depth() != CV_32F))
+    throw std::invalid_argument(
+        "LogIllumination: the image must be 8-bit, 16-bit or float with the invariant image's "
+        "size and channels");
+  if (image.depth() == CV_32F && !cv::checkRange(image))
+    throw std::invalid_argument("LogIllumination: the image holds NaN or infinite values");
+  return ClippedLog(FloatImages({image}).front(), min_intensity) - log_invariant;
+}
+
 cv::Mat LinearImage(const cv::Mat& log_image, const cv::Mat& covered) {
   cv::Mat linear;
   cv::exp(log_image, linear);

@@ -62,6 +62,11 @@ InvariantImage ComputeInvariantImage(const std::vector<cv::Mat>& images,
                                      const std::vector<cv::Mat>& coverage = {},
                                      const InvariantImageOptions& options = {});
 
+/// The log illumination image of a camera image against an invariant image (eq. 6.14; eq. 6.19
+/// for a new frame): log(max(I, min_intensity)) - r̂. `image` as ComputeInvariantImage takes
+/// (one of its types, finite), of r̂'s size and channels; throws std::invalid_argument otherwise.
+cv::Mat LogIllumination(const cv::Mat& image, const cv::Mat& log_invariant, double min_intensity);
+
 /// exp(log image) → CV_32FC(n) on the 0…255 scale, 0 where `covered` is 0 (when given).
 cv::Mat LinearImage(const cv::Mat& log_image, const cv::Mat& covered = cv::Mat());
 

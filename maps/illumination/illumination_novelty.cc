@@ -1,0 +1,112 @@
+#include "maps/illumination/illumination_novelty.h"
+
+#include <cmath>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+namespace novelty::illumination {
+
+namespace {
+
+// Connected regions of a binary image with at least `min_pixels` pixels.
+std::vector<StoredShape> Regions(const cv::Mat& binary, int min_pixels) {
+  cv::Mat labels, stats, centroids;
+  const int n = cv::connectedComponentsWithStats(binary, labels, stats, centroids, 8, CV_32S);
+  std::vector<StoredShape> out;
+  for (int i = 1; i < n; ++i) {
+    if (stats.at<int>(i, cv::CC_STAT_AREA) < min_pixels) continue;
+    const cv::Rect box(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
+                       stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
+    out.push_back({box, labels(box) == i});
+  }
+  return out;
+}
+
+// The part of `shape` inside `window` (image coordinates), as a mask of window's size.
+cv::Mat Within(const StoredShape& shape, const cv::Rect& window) {
+  cv::Mat out = cv::Mat::zeros(window.size(), CV_8U);
+  const cv::Rect common = shape.box & window;
+  if (!common.empty()) shape.mask(common - shape.box.tl()).copyTo(out(common - window.tl()));
+  return out;
+}
+
+}  // namespace
+
+ViewpointIllumination MakeViewpoint(const InvariantImage& invariant, IlluminationModel model,
+                                    int min_region_pixels) {
+  ViewpointIllumination v;
+  v.log_invariant = invariant.log_invariant;
+  v.covered = invariant.covered;
+  for (const cv::Mat& s : model.shapes) {
+    auto regions = Regions(s, min_region_pixels);
+    v.shapes.insert(v.shapes.end(), regions.begin(), regions.end());
+  }
+  v.model = std::move(model);
+  return v;
+}
+
+IlluminationNovelty DetectIlluminationNovelty(const cv::Mat& image,
+                                              const ViewpointIllumination& viewpoint,
+                                              const ZernikeMoments& zernike,
+                                              const IlluminationNoveltyOptions& options) {
+  if (viewpoint.model.luminance.alpha <= 0.0)
+    throw std::invalid_argument("DetectIlluminationNovelty: the viewpoint has no gamma model");
+  // Steps 1-2: illumination image, information, regions above T_Y.
+  const cv::Mat log_l =
+      LogIllumination(image, viewpoint.log_invariant, options.min_intensity);  // eq. 6.19
+  IlluminationModelOptions component_options;
+  component_options.grey_level = options.grey_level;
+  const IlluminationComponents c =
+      ComputeIlluminationComponents(log_l, viewpoint.log_invariant, image, component_options);
+  IlluminationNovelty out;
+  out.information_y = InformationMap(c.luminance, c.luminance_step, viewpoint.model.luminance);
+  out.information_s =
+      c.saturation.empty() || viewpoint.model.saturation.alpha <= 0.0
+          ? cv::Mat::zeros(image.size(), CV_32F)
+          : InformationMap(c.saturation, c.saturation_step, viewpoint.model.saturation);
+  out.regions = (out.information_y > viewpoint.model.threshold) & viewpoint.covered;
+  // Step 3: each region against the stored shapes whose boxes meet its own.
+  constexpr float kUnmatched = -1.0f;
+  cv::Mat e(image.size(), CV_32F, cv::Scalar(kUnmatched));
+  const std::vector<StoredShape> regions = Regions(out.regions, options.min_region_pixels);
+  out.region_count = int(regions.size());
+  float e_max = 0.0f;
+  for (const StoredShape& region : regions) {
+    // No stored shape in the window is a shape too — the empty one, whose descriptor is 0: a
+    // region unlike anything stored keeps e = |d'|.
+    const std::vector<float> own = zernike.Magnitudes(region.mask);
+    double best = DescriptorDistance(own, std::vector<float>(own.size(), 0.0f));
+    cv::Rect best_window = region.box;
+    bool matched = false;
+    for (const StoredShape& stored : viewpoint.shapes) {
+      const cv::Rect window = region.box & stored.box;  // BB_I (step 3a)
+      if (window.empty()) continue;
+      const cv::Mat mine = Within(region, window), theirs = Within(stored, window);
+      if (cv::countNonZero(mine) == 0 || cv::countNonZero(theirs) == 0) continue;
+      const double distance = DescriptorDistance(zernike.Magnitudes(mine),
+                                                 zernike.Magnitudes(theirs));  // steps 3b-c
+      if (distance < best) best = distance, best_window = window, matched = true;
+    }
+    out.matched_count += matched;
+    // Step 3d: the best distance goes to the region's pixels inside its window.
+    e(best_window).setTo(float(best), Within(region, best_window));
+    e_max = std::max(e_max, float(best));
+  }
+  out.shape_factor = cv::Mat(image.size(), CV_32F, cv::Scalar(1.0f));
+  if (e_max > 0.0f) {
+    cv::Mat matched = e != kUnmatched;
+    cv::Mat factor = e / e_max;
+    factor.copyTo(out.shape_factor, matched);
+  } else {
+    out.shape_factor.setTo(0.0f, e != kUnmatched);  // perfect matches only
+  }
+  // Step 4, eq. 6.24.
+  cv::Mat magnitude;
+  cv::magnitude(out.information_y, out.information_s, magnitude);
+  out.novelty = out.shape_factor.mul(magnitude);
+  out.novelty.setTo(0.0f, viewpoint.covered == 0);
+  return out;
+}
+
+}  // namespace novelty::illumination
