@@ -1,0 +1,78 @@
+#include "maps/illumination/gradient_correlation.h"
+
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <vector>
+
+namespace novelty::illumination {
+
+namespace {
+
+cv::Mat Grey(const cv::Mat& image) {
+  cv::Mat f, g;
+  image.convertTo(f, CV_MAKETYPE(CV_32F, image.channels()),
+                  image.depth() == CV_16U ? 255.0 / 65535.0 : 1.0);
+  if (f.channels() == 1) return f;
+  cv::transform(f, g, cv::Matx13f(1.0f / 3, 1.0f / 3, 1.0f / 3));
+  return g;
+}
+
+// 1 - ρ at one layer.
+cv::Mat LayerChange(const cv::Mat& a, const cv::Mat& b, const GradientCorrelationOptions& o) {
+  cv::Mat ax, ay, bx, by;
+  cv::Sobel(a, ax, CV_32F, 1, 0, 3, 1.0 / 8);
+  cv::Sobel(a, ay, CV_32F, 0, 1, 3, 1.0 / 8);
+  cv::Sobel(b, bx, CV_32F, 1, 0, 3, 1.0 / 8);
+  cv::Sobel(b, by, CV_32F, 0, 1, 3, 1.0 / 8);
+  cv::Mat cross = cv::abs(ax.mul(bx) + ay.mul(by)), ea = ax.mul(ax) + ay.mul(ay),
+          eb = bx.mul(bx) + by.mul(by);
+  const cv::Size block(o.block, o.block);
+  cv::boxFilter(cross, cross, CV_32F, block, {-1, -1}, false);
+  cv::boxFilter(ea, ea, CV_32F, block, {-1, -1}, false);
+  cv::boxFilter(eb, eb, CV_32F, block, {-1, -1}, false);
+  cv::Mat change(a.size(), CV_32F);
+  for (int y = 0; y < a.rows; ++y) {
+    const float *c = cross.ptr<float>(y), *p = ea.ptr<float>(y), *q = eb.ptr<float>(y);
+    float* out = change.ptr<float>(y);
+    for (int x = 0; x < a.cols; ++x) {
+      const bool flat_a = p[x] < o.flat_energy, flat_b = q[x] < o.flat_energy;
+      const float rho = flat_a && flat_b   ? 1.0f
+                        : flat_a || flat_b ? 0.0f
+                                           : std::min(1.0f, c[x] / std::sqrt(p[x] * q[x]));
+      out[x] = 1.0f - rho;
+    }
+  }
+  return change;
+}
+
+}  // namespace
+
+cv::Mat GradientCorrelationChange(const cv::Mat& observation, const cv::Mat& reference,
+                                  const GradientCorrelationOptions& options) {
+  if (observation.empty() || observation.size() != reference.size() ||
+      observation.type() != reference.type())
+    throw std::invalid_argument(
+        "GradientCorrelationChange: observation and reference must be images of one size and "
+        "type");
+  if (options.block < 1 || options.block % 2 == 0 || options.layers < 1 ||
+      !(options.flat_energy >= 0.0))
+    throw std::invalid_argument(
+        "GradientCorrelationChange: block must be odd and >= 1, layers >= 1, flat_energy >= 0");
+  cv::Mat a = Grey(observation), b = Grey(reference);
+  cv::Mat sum = cv::Mat::zeros(a.size(), CV_32F);
+  int used = 0;
+  for (int layer = 0; layer < options.layers; ++layer) {
+    if (layer > 0) {
+      if (a.cols < 2 * options.block || a.rows < 2 * options.block) break;
+      cv::pyrDown(a, a);
+      cv::pyrDown(b, b);
+    }
+    cv::Mat change = LayerChange(a, b, options), full;
+    cv::resize(change, full, sum.size(), 0, 0, cv::INTER_LINEAR);
+    sum += full;
+    ++used;
+  }
+  return sum / used;
+}
+
+}  // namespace novelty::illumination
