@@ -3,7 +3,7 @@
 // (6.2: gamma models, information maps, the shapes of highlights and strong shadows).
 //
 //   novelty-invariant DIR --out OUT [--colour per-channel|luminance-chromaticity]
-//                     [--min-intensity 3] [--min-lightings 2] [--kappa 0.5] [--grey-level 1]
+//                     [--min-intensity 3] [--min-lightings 2] [--kappa 0.5]
 //
 // DIR holds the lightings (every image file in name order; see sensors/dataset/
 // lighting_folder_reader.h) and optionally mask.png; in the MIT Intrinsic Images layout
@@ -25,6 +25,7 @@
 #include "apps/command_line.h"
 #include "core/false_color.h"
 #include "core/range_check.h"
+#include "core/same_file.h"
 #include "core/write_rgb_image.h"
 #include "eval/html_report.h"
 #include "eval/lmse.h"
@@ -142,9 +143,6 @@ int main(int argc, char** argv) {
     TCLAP::ValueArg<double> kappa("", "kappa",
                                   "kappa of T_Y (eq. 6.18): 0.5 Lambertian, 0.2 specular", false,
                                   model_defaults.kappa, "K", cmd);
-    TCLAP::ValueArg<double> grey_level("", "grey-level",
-                                       "One grey level of the camera (0..255 scale), eq. 6.17",
-                                       false, model_defaults.grey_level, "Q", cmd);
     cmd.Parse(argc, argv);
 
     illumination::InvariantImageOptions inv_options;
@@ -162,8 +160,9 @@ int main(int argc, char** argv) {
     if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
       throw std::invalid_argument("--kappa must be in [0, 1)");
     model_options.kappa = kappa.getValue();
-    core::CheckInRange(grey_level.getValue(), 1e-9, 255, "--grey-level");
-    model_options.grey_level = grey_level.getValue();
+    if (fs::exists(out.getValue()) && core::SameFile(out.getValue(), in.getValue()))
+      throw std::invalid_argument("--out " + out.getValue() + " is the folder of lightings " +
+                                  in.getValue() + ": its outputs would be read as lightings");
 
     const auto start = std::chrono::steady_clock::now();
     const sensors::LightingFolder folder = sensors::ReadLightingFolder(in.getValue());
@@ -201,10 +200,10 @@ int main(int argc, char** argv) {
     std::vector<cv::Mat> luminance, saturation, valid;
     std::vector<std::vector<std::string>> rows;
     for (int m = 0; m < m_count; ++m) {
-      const illumination::IlluminationComponents c = illumination::ComputeIlluminationComponents(
-          invariant.log_illumination[m], invariant.log_invariant, folder.images[m], model_options);
+      const illumination::IlluminationComponents c =
+          illumination::ComputeIlluminationComponents(invariant.log_illumination[m]);
       const cv::Mat information =
-          illumination::InformationMap(c.luminance, c.luminance_step, model.luminance);
+          illumination::InformationMap(c.luminance, model.luminance_step, model.luminance);
       cv::Mat ok = invariant.covered.clone();
       luminance.push_back(c.luminance);
       saturation.push_back(c.saturation);

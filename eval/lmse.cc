@@ -47,7 +47,11 @@ double LocalMse(const cv::Mat& correct, const cv::Mat& estimate, const cv::Mat& 
       total += tt;
     }
   }
-  return total > 0.0 ? ssq / total : 0.0;
+  if (!(total > 0.0))
+    throw std::invalid_argument(
+        "LocalMse: no window holds a scored pixel with a non-zero truth (empty mask, or a "
+        "window larger than the image)");
+  return ssq / total;
 }
 
 IntrinsicScore ScoreIntrinsic(const cv::Mat& true_shading, const cv::Mat& true_reflectance,

@@ -13,8 +13,9 @@ namespace novelty::eval {
 
 /// `correct`, `estimate`: one-channel images (any depth) of one size; `mask`: CV_8UC1 of that
 /// size, non-zero where scored. `window` ≥ 1 (the benchmark: 20), shifted by max(1, window/2).
-/// Windows that do not fit the image are not scored (as the reference code). Returns 0 when the
-/// truth is zero on every scored pixel. Throws std::invalid_argument for mismatched inputs.
+/// Windows that do not fit the image are not scored (as the reference code). Throws
+/// std::invalid_argument for mismatched inputs, and when no window holds a scored pixel whose
+/// truth is non-zero (the reference code's score would be NaN).
 double LocalMse(const cv::Mat& correct, const cv::Mat& estimate, const cv::Mat& mask,
                 int window = 20);
 

@@ -35,10 +35,8 @@ cv::Mat LayerChange(const cv::Mat& a, const cv::Mat& b, const GradientCorrelatio
     const float *c = cross.ptr<float>(y), *p = ea.ptr<float>(y), *q = eb.ptr<float>(y);
     float* out = change.ptr<float>(y);
     for (int x = 0; x < a.cols; ++x) {
-      const bool flat_a = p[x] < o.flat_energy, flat_b = q[x] < o.flat_energy;
-      const float rho = flat_a && flat_b   ? 1.0f
-                        : flat_a || flat_b ? 0.0f
-                                           : std::min(1.0f, c[x] / std::sqrt(p[x] * q[x]));
+      const float n = float(o.noise_energy);
+      const float rho = std::min(1.0f, (c[x] + n) / std::sqrt((p[x] + n) * (q[x] + n)));
       out[x] = 1.0f - rho;
     }
   }
@@ -55,9 +53,9 @@ cv::Mat GradientCorrelationChange(const cv::Mat& observation, const cv::Mat& ref
         "GradientCorrelationChange: observation and reference must be images of one size and "
         "type");
   if (options.block < 1 || options.block % 2 == 0 || options.layers < 1 ||
-      !(options.flat_energy >= 0.0))
+      !(options.noise_energy > 0.0))
     throw std::invalid_argument(
-        "GradientCorrelationChange: block must be odd and >= 1, layers >= 1, flat_energy >= 0");
+        "GradientCorrelationChange: block must be odd and >= 1, layers >= 1, noise_energy > 0");
   cv::Mat a = Grey(observation), b = Grey(reference);
   cv::Mat sum = cv::Mat::zeros(a.size(), CV_32F);
   int used = 0;

@@ -2,9 +2,12 @@
 // of the two baselines of 6.4: in a block around each pixel
 //   ρ = Σ |∂x I1 ∂x I2 + ∂y I1 ∂y I2| / sqrt(Σ |∇I1|² · Σ |∇I2|²),
 // unchanged by I2 = α I1 + β and by gradients whose sign shading flips (the absolute value);
-// the change measure is 1 - ρ (6.4), on three resolution layers, averaged. Where both blocks
-// are flat (no gradient energy) nothing can have changed: ρ = 1; where one is flat and the
-// other not, ρ = 0.
+// the change measure is 1 - ρ (6.4), on three resolution layers, averaged. On plain surfaces
+// the gradients are camera noise, whose correlation is random; the sums are therefore
+// regularised by the energy c noise gives a block,
+//   ρ = (Σ |∇I1·∇I2| + c) / sqrt((Σ |∇I1|² + c) (Σ |∇I2|² + c)),
+// so that two plain blocks correlate (ρ → 1), a plain and a structured one do not (ρ → 0), and
+// structure far above the noise is compared as eq. 2.36 compares it.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -16,8 +19,10 @@ struct GradientCorrelationOptions {
   int block = 5;
   /// Resolution layers (each half the previous one's size) whose 1 - ρ are averaged [OH07: 3].
   int layers = 3;
-  /// Gradient energy (Σ |∇I|² over a block, grey levels²) below which a block counts as flat.
-  double flat_energy = 1.0;
+  /// c: the gradient energy of a block of camera noise (Σ |∇I|², grey levels², Sobel gradients
+  /// / 8). Noise of σ grey levels gives 0.375 σ² a pixel: 9.4 for a 5 × 5 block at σ = 1, the
+  /// simulator's and a good camera's noise.
+  double noise_energy = 9.4;
 };
 
 /// 1 - ρ per pixel, CV_32FC1 in [0, 1], of two images of one size and type (grey or RGB, any

@@ -5,20 +5,12 @@
 #include <string>
 
 #include "maps/color/hsv.h"
+#include "maps/illumination/invariant_image.h"
 #include "maps/stats/special_functions.h"
 
 namespace novelty::illumination {
 
 namespace {
-
-// The largest channel of a float image.
-cv::Mat LargestChannel(const cv::Mat& image) {
-  std::vector<cv::Mat> planes;
-  cv::split(image, planes);
-  cv::Mat largest = planes[0].clone();
-  for (std::size_t c = 1; c < planes.size(); ++c) cv::max(largest, planes[c], largest);
-  return largest;
-}
 
 cv::Mat Valid(const InvariantImage& invariant, const std::vector<cv::Mat>& coverage,
               std::size_t m) {
@@ -27,63 +19,52 @@ cv::Mat Valid(const InvariantImage& invariant, const std::vector<cv::Mat>& cover
   return valid;
 }
 
-void AppendSamples(const cv::Mat& values, const cv::Mat& valid, std::vector<double>& samples) {
+// The valid values, no smaller than half their quantisation width.
+void AppendSamples(const cv::Mat& values, const cv::Mat& valid, double step,
+                   std::vector<double>& samples) {
   for (int y = 0; y < values.rows; ++y) {
     const float* v = values.ptr<float>(y);
     const uchar* ok = valid.ptr<uchar>(y);
     for (int x = 0; x < values.cols; ++x)
-      if (ok[x]) samples.push_back(v[x]);
+      if (ok[x]) samples.push_back(std::max<double>(v[x], 0.5 * step));
   }
 }
 
 }  // namespace
 
-IlluminationComponents ComputeIlluminationComponents(const cv::Mat& log_illumination,
-                                                     const cv::Mat& log_invariant,
-                                                     const cv::Mat& image,
-                                                     const IlluminationModelOptions& options) {
-  if (log_illumination.empty() || log_illumination.size() != log_invariant.size() ||
-      log_illumination.type() != log_invariant.type() || image.size() != log_invariant.size() ||
-      image.channels() != log_invariant.channels())
+IlluminationComponents ComputeIlluminationComponents(const cv::Mat& log_illumination) {
+  if (log_illumination.empty() || log_illumination.depth() != CV_32F ||
+      (log_illumination.channels() != 1 && log_illumination.channels() != 3))
     throw std::invalid_argument(
-        "ComputeIlluminationComponents: illumination, invariant and camera image must have one "
-        "size and one number of channels");
+        "ComputeIlluminationComponents: a CV_32FC1 or CV_32FC3 log illumination image is needed");
   IlluminationComponents out;
   const cv::Mat lighting = LinearImage(log_illumination);
-  cv::Mat camera;
-  image.convertTo(camera, CV_MAKETYPE(CV_32F, image.channels()),
-                  image.depth() == CV_16U ? 255.0 / 65535.0 : 1.0);
-  cv::Mat camera_value = LargestChannel(camera);
-  cv::max(camera_value, options.grey_level, camera_value);
-  out.luminance_step = options.grey_level / LargestChannel(LinearImage(log_invariant));
   if (lighting.channels() == 3) {
     std::vector<cv::Mat> hsv;
     cv::split(color::RgbToHsv(lighting), hsv);
     out.luminance = hsv[2];
     out.saturation = hsv[1];
-    out.saturation_step = options.grey_level / camera_value;
   } else {
     out.luminance = lighting;
   }
   return out;
 }
 
-cv::Mat InformationMap(const cv::Mat& values, const cv::Mat& steps, const stats::GammaFit& fit) {
-  if (values.type() != CV_32FC1 || steps.type() != CV_32FC1 || values.size() != steps.size())
-    throw std::invalid_argument("InformationMap: values and widths must be CV_32FC1 of one size");
+cv::Mat InformationMap(const cv::Mat& values, double step, const stats::GammaFit& fit) {
+  if (values.type() != CV_32FC1 || !(step > 0.0))
+    throw std::invalid_argument("InformationMap: CV_32FC1 values and a width > 0 are needed");
   if (!(fit.alpha > 0.0 && fit.beta > 0.0))
     throw std::invalid_argument("InformationMap: the gamma fit has no positive α and β");
   // log p(x) = a log b - log Γ(a) + (a - 1) log x - b x   (eq. 6.16)
   const double a = fit.alpha, b = fit.beta;
-  const double log_norm = a * std::log(b) - stats::LogGamma(a);
+  const double constant = a * std::log(b) - stats::LogGamma(a) + std::log(step);
   cv::Mat info(values.size(), CV_32F);
   for (int y = 0; y < values.rows; ++y) {
     const float* v = values.ptr<float>(y);
-    const float* d = steps.ptr<float>(y);
     float* out = info.ptr<float>(y);
     for (int x = 0; x < values.cols; ++x) {
-      const double step = d[x], value = std::max<double>(v[x], 0.5 * step);
-      out[x] = float(-(log_norm + (a - 1.0) * std::log(value) - b * value + std::log(step)));
+      const double value = std::max<double>(v[x], 0.5 * step);
+      out[x] = float(-(constant + (a - 1.0) * std::log(value) - b * value));
     }
   }
   return info;
@@ -93,9 +74,10 @@ IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
                                          const std::vector<cv::Mat>& images,
                                          const std::vector<cv::Mat>& coverage,
                                          const IlluminationModelOptions& options) {
-  if (!(options.kappa >= 0.0 && options.kappa < 1.0) || !(options.grey_level > 0.0))
+  if (!(options.kappa >= 0.0 && options.kappa < 1.0) || !(options.luminance_step > 0.0) ||
+      !(options.saturation_step > 0.0))
     throw std::invalid_argument(
-        "LearnIlluminationModel: kappa must be in [0, 1) and grey_level > 0");
+        "LearnIlluminationModel: kappa must be in [0, 1) and the widths > 0");
   if (images.size() != invariant.log_illumination.size() ||
       (!coverage.empty() && coverage.size() != images.size()))
     throw std::invalid_argument("LearnIlluminationModel: " + std::to_string(images.size()) +
@@ -104,28 +86,43 @@ IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
   std::vector<IlluminationComponents> components;
   std::vector<double> luminance, saturation;
   for (std::size_t m = 0; m < images.size(); ++m) {
-    components.push_back(ComputeIlluminationComponents(
-        invariant.log_illumination[m], invariant.log_invariant, images[m], options));
+    components.push_back(ComputeIlluminationComponents(invariant.log_illumination[m]));
     const cv::Mat valid = Valid(invariant, coverage, m);
-    AppendSamples(components.back().luminance, valid, luminance);
+    AppendSamples(components.back().luminance, valid, options.luminance_step, luminance);
     if (!components.back().saturation.empty())
-      AppendSamples(components.back().saturation, valid, saturation);
+      AppendSamples(components.back().saturation, valid, options.saturation_step, saturation);
   }
   if (luminance.empty()) throw std::invalid_argument("LearnIlluminationModel: no pixel is covered");
   IlluminationModel model;
+  model.luminance_step = options.luminance_step;
+  model.saturation_step = options.saturation_step;
   model.luminance = stats::FitGammaML(luminance);
-  if (!saturation.empty()) model.saturation = stats::FitGammaML(saturation);
+  if (model.luminance.status == stats::GammaFit::Status::kConstant)
+    throw std::invalid_argument(
+        "LearnIlluminationModel: the illumination images do not vary — the lightings are "
+        "identical, so nothing about lighting can be learnt");
+  // A scene without colour (grey images, or all saturation below one level) has no saturation
+  // model: its information is 0.
+  if (!saturation.empty()) {
+    const stats::GammaFit s = stats::FitGammaML(saturation);
+    if (s.status != stats::GammaFit::Status::kConstant) model.saturation = s;
+  }
   std::vector<cv::Mat> information;
   double sum = 0.0, count = 0.0;
   for (std::size_t m = 0; m < images.size(); ++m) {
     information.push_back(
-        InformationMap(components[m].luminance, components[m].luminance_step, model.luminance));
+        InformationMap(components[m].luminance, model.luminance_step, model.luminance));
     const cv::Mat valid = Valid(invariant, coverage, m);
     const int n = cv::countNonZero(valid);
     if (n > 0) sum += cv::mean(information.back(), valid)[0] * n;
     count += n;
   }
   model.mean_information = sum / count;
+  if (!(model.mean_information > 0.0))
+    throw std::invalid_argument(
+        "LearnIlluminationModel: the illumination varies by less than one quantisation level "
+        "(mean information " +
+        std::to_string(model.mean_information) + "): T_Y of eq. 6.18 would not be positive");
   model.threshold = model.mean_information / (1.0 - options.kappa);  // eq. 6.18
   for (std::size_t m = 0; m < images.size(); ++m)
     model.shapes.push_back((information[m] > model.threshold) & Valid(invariant, coverage, m));

@@ -6,12 +6,15 @@
 //
 // Luminance and saturation are HSV's V and S of the linear illumination image L = exp(l̂)
 // (color/hsv.h): V = max over the channels, S = 1 - min/max.
-// What the thesis leaves open, decided here (eq. 6.17: "the probability of a luminance value is
-// approximated by the product of the probability density ... and the width of the quantization
-// interval"): the width is how far one grey level `grey_level` of the camera moves the value at
-// that pixel — q / V_R for the luminance (L = I / R) and q / V_I for the saturation, V_R and V_I
-// the largest channel of the invariant and of the camera image. Values are taken no smaller than
-// half their width, so that an exact 0 (a grey pixel's saturation) has a finite information.
+// What the thesis leaves open, decided here (eq. 6.17: "the luminance values of the digital
+// illumination images are quantized ... the probability of a luminance value is approximated by
+// the product of the probability density ... and the width of the quantization interval"): the
+// width is one level of the stored 8-bit illumination image — 1/128 for the luminance, stored
+// with 1 at 128 (novelty-invariant writes it so), 1/255 for the saturation (0…1). One width for
+// every pixel: T_Y = mean/(1 - κ) is not shift-invariant, and a width that varied with the pixel
+// would rank pixels by their surface's brightness too. Values are taken no smaller than half
+// their width, in the fit and in the information, so that an exact 0 (a grey pixel's saturation,
+// a black shadow) counts as the lowest level.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -26,41 +29,41 @@ struct IlluminationModelOptions {
   /// κ of T_Y = mean(i_Y) / (1 - κ) (eq. 6.18): 0.5 for Lambertian scenes, 0.2 with specular
   /// surfaces (6.4). Default: the Lambertian value.
   double kappa = 0.5;
-  /// q: one grey level of the camera on the 0…255 scale, the quantisation of eq. 6.17.
-  double grey_level = 1.0;
+  /// Width of the luminance's quantisation interval (eq. 6.17): one level of an 8-bit
+  /// illumination image with 1 at 128.
+  double luminance_step = 1.0 / 128.0;
+  /// The same for the saturation (0…1 in 8 bits).
+  double saturation_step = 1.0 / 255.0;
 };
 
-/// One image's luminance and saturation with their quantisation widths (CV_32FC1 each; the
-/// saturation planes are empty for one-channel images).
+/// One image's luminance and saturation (CV_32FC1 each; the saturation is empty for one-channel
+/// images).
 struct IlluminationComponents {
-  cv::Mat luminance, luminance_step;
-  cv::Mat saturation, saturation_step;
+  cv::Mat luminance, saturation;
 };
 
 struct IlluminationModel {
-  stats::GammaFit luminance;      ///< a_Y, b_Y of eq. 6.16
-  stats::GammaFit saturation;     ///< a_S, b_S (α = β = 0 for one-channel images)
+  stats::GammaFit luminance;   ///< a_Y, b_Y of eq. 6.16
+  stats::GammaFit saturation;  ///< a_S, b_S (α = β = 0 for one-channel or colourless images)
+  double luminance_step = 1.0 / 128.0;  ///< the widths it was learnt with (eq. 6.17)
+  double saturation_step = 1.0 / 255.0;
   double mean_information = 0.0;  ///< mean of i_Y over all images' covered pixels
   double threshold = 0.0;         ///< T_Y (eq. 6.18)
   /// Per training image, CV_8UC1: 255 where i_Y > T_Y (highlights and strong shadows).
   std::vector<cv::Mat> shapes;
 };
 
-/// Luminance and saturation of illumination image m of `invariant`, with their widths; `image`
-/// is that camera image (its largest channel sets the saturation's width; any type
-/// ComputeInvariantImage takes).
-IlluminationComponents ComputeIlluminationComponents(const cv::Mat& log_illumination,
-                                                     const cv::Mat& log_invariant,
-                                                     const cv::Mat& image,
-                                                     const IlluminationModelOptions& options = {});
+/// Luminance and saturation of a log illumination image (CV_32FC1 or CV_32FC3).
+IlluminationComponents ComputeIlluminationComponents(const cv::Mat& log_illumination);
 
-/// i = -log(p(x) · Δ) per pixel (eq. 6.17) under a fitted gamma distribution; values and widths
-/// CV_32FC1 of one size. Returns CV_32FC1.
-cv::Mat InformationMap(const cv::Mat& values, const cv::Mat& steps, const stats::GammaFit& fit);
+/// i = -log(p(max(x, Δ/2)) · Δ) per pixel (eq. 6.17) under a fitted gamma distribution; values
+/// CV_32FC1, Δ > 0. Returns CV_32FC1.
+cv::Mat InformationMap(const cv::Mat& values, double step, const stats::GammaFit& fit);
 
 /// Fits the model to the illumination images of `invariant`, computed from `images` (the same
 /// images, in order; `coverage` as given to ComputeInvariantImage). Throws std::invalid_argument
-/// for κ outside [0, 1), grey_level ≤ 0, or images that do not match `invariant`.
+/// for κ outside [0, 1), widths ≤ 0, images that do not match `invariant`, or illumination
+/// images that do not vary (identical lightings: no model of lighting can be learnt).
 IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
                                          const std::vector<cv::Mat>& images,
                                          const std::vector<cv::Mat>& coverage = {},

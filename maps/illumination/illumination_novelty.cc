@@ -55,16 +55,13 @@ IlluminationNovelty DetectIlluminationNovelty(const cv::Mat& image,
   // Steps 1-2: illumination image, information, regions above T_Y.
   const cv::Mat log_l =
       LogIllumination(image, viewpoint.log_invariant, options.min_intensity);  // eq. 6.19
-  IlluminationModelOptions component_options;
-  component_options.grey_level = options.grey_level;
-  const IlluminationComponents c =
-      ComputeIlluminationComponents(log_l, viewpoint.log_invariant, image, component_options);
+  const IlluminationComponents c = ComputeIlluminationComponents(log_l);
+  const IlluminationModel& model = viewpoint.model;
   IlluminationNovelty out;
-  out.information_y = InformationMap(c.luminance, c.luminance_step, viewpoint.model.luminance);
-  out.information_s =
-      c.saturation.empty() || viewpoint.model.saturation.alpha <= 0.0
-          ? cv::Mat::zeros(image.size(), CV_32F)
-          : InformationMap(c.saturation, c.saturation_step, viewpoint.model.saturation);
+  out.information_y = InformationMap(c.luminance, model.luminance_step, model.luminance);
+  out.information_s = c.saturation.empty() || model.saturation.alpha <= 0.0
+                          ? cv::Mat::zeros(image.size(), CV_32F)
+                          : InformationMap(c.saturation, model.saturation_step, model.saturation);
   out.regions = (out.information_y > viewpoint.model.threshold) & viewpoint.covered;
   // Step 3: each region against the stored shapes whose boxes meet its own.
   constexpr float kUnmatched = -1.0f;

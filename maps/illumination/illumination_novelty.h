@@ -35,8 +35,6 @@ struct ViewpointIllumination {
 struct IlluminationNoveltyOptions {
   /// Intensities below this (0…255) are clipped, as when the invariant image was made.
   double min_intensity = 3.0;
-  /// q of eq. 6.17 (IlluminationModelOptions::grey_level).
-  double grey_level = 1.0;
   /// Regions (new or stored) of fewer pixels are not shape-matched: their shape says nothing.
   int min_region_pixels = 16;
 };

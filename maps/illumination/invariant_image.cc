@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -150,15 +151,30 @@ cv::Mat InvariantPlane(const std::vector<cv::Mat>& logs, const std::vector<cv::M
   const bool whole_image = cv::countNonZero(covered) == covered.size().area();
   cv::Mat r = whole_image ? IntegrateGradients(g.gx, g.gy)
                           : IntegrateGradientsInRegion(g.gx, g.gy, covered);
-  double sum = 0.0, count = 0.0;
+  // Each 4-connected part of the covered pixels has its own free constant (the integration
+  // ties nothing across parts): each is set so that its illumination images average 0.
+  cv::Mat parts;
+  const int part_count = whole_image ? 2 : cv::connectedComponents(covered, parts, 4, CV_32S);
+  if (whole_image) parts = cv::Mat(covered.size(), CV_32S, cv::Scalar(1));
+  std::vector<double> sum(part_count, 0.0), count(part_count, 0.0);
   for (std::size_t m = 0; m < logs.size(); ++m) {
-    cv::Mat valid = covered.clone();
-    if (!coverage.empty()) valid &= coverage[m];
-    const int n = cv::countNonZero(valid);
-    if (n > 0) sum += cv::mean(logs[m] - r, valid)[0] * n;
-    count += n;
+    for (int y = 0; y < r.rows; ++y) {
+      const float *l = logs[m].ptr<float>(y), *rr = r.ptr<float>(y);
+      const int* part = parts.ptr<int>(y);
+      const uchar* cov = coverage.empty() ? nullptr : coverage[m].ptr<uchar>(y);
+      for (int x = 0; x < r.cols; ++x) {
+        if (part[x] == 0 || (cov && !cov[x])) continue;
+        sum[part[x]] += l[x] - rr[x];
+        count[part[x]] += 1.0;
+      }
+    }
   }
-  if (count > 0) r += sum / count;
+  for (int y = 0; y < r.rows; ++y) {
+    float* rr = r.ptr<float>(y);
+    const int* part = parts.ptr<int>(y);
+    for (int x = 0; x < r.cols; ++x)
+      if (part[x] != 0 && count[part[x]] > 0) rr[x] += float(sum[part[x]] / count[part[x]]);
+  }
   r.setTo(0.0f, covered == 0);
   return r;
 }
@@ -196,6 +212,7 @@ std::vector<cv::Mat> LogChromaticity(const std::vector<cv::Mat>& images,
       for (int x = 0; x < cols; ++x) {
         if (!inside[x]) continue;
         const float total = median[x] + median[cols + x] + median[2 * cols + x];
+        if (!(total > 0.0f)) continue;  // no channel lit in most images: no colour (log 1 = 0)
         // A channel that is black in most images gets the share of a dark but positive one, so
         // that its log stays finite.
         for (int c = 0; c < 3; ++c)

@@ -10,12 +10,14 @@
 // - Small intensities are raised to `min_intensity` before the logarithm (6.1.2, "clipped"); 3
 //   on the 0…255 scale, as the reference code of the MIT benchmark [Grosse et al. 2009].
 // - An even number of images has the mean of the two middle values as median (as NumPy's).
-// - r̂ is defined up to a constant per channel; it is fixed so that the illumination images
-//   average 0 in the log domain (1 in linear terms), around which 6.2's statistics centre.
+// - r̂ is defined up to a constant per channel (and per connected part of the covered pixels);
+//   it is fixed so that the illumination images average 0 in the log domain (1 in linear
+//   terms), around which 6.2's statistics centre.
 // - Pixels that some images do not cover (virtual images, masked objects) take the median over
 //   the images that cover both pixels of a difference; a difference that fewer than
-//   `min_lightings` images cover is unknown and left out of the integration, which then runs
-//   over the covered pixels only (sparse least squares); else over the whole image (Fourier).
+//   `min_lightings` images cover is taken as 0 (flat). Where some pixel is covered by fewer
+//   than min_lightings images the integration runs over the covered pixels only (sparse least
+//   squares, slow: seconds at 640×480); else over the whole image (Fourier, milliseconds).
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -25,14 +25,15 @@ TEST(IlluminationModel, InformationIsMinusTheLogOfTheQuantisationIntervalsProbab
       double integral = pdf(lo) + pdf(lo + step);
       for (int k = 1; k < n; ++k) integral += (k % 2 ? 4.0 : 2.0) * pdf(lo + k * h);
       integral *= h / 3.0;
-      const cv::Mat value(1, 1, CV_32F, cv::Scalar(x)), width(1, 1, CV_32F, cv::Scalar(step));
-      EXPECT_NEAR(InformationMap(value, width, fit).at<float>(0, 0), -std::log(integral), 1e-3)
+      const cv::Mat value(1, 1, CV_32F, cv::Scalar(x));
+      EXPECT_NEAR(InformationMap(value, step, fit).at<float>(0, 0), -std::log(integral), 1e-3)
           << x << " " << step;
     }
   }
   // A value of 0 is taken as half its width: finite.
-  const cv::Mat zero(1, 1, CV_32F, cv::Scalar(0.0)), width(1, 1, CV_32F, cv::Scalar(0.01));
-  EXPECT_TRUE(std::isfinite(InformationMap(zero, width, fit).at<float>(0, 0)));
+  const cv::Mat zero(1, 1, CV_32F, cv::Scalar(0.0)), half(1, 1, CV_32F, cv::Scalar(0.005));
+  EXPECT_EQ(InformationMap(zero, 0.01, fit).at<float>(0, 0),
+            InformationMap(half, 0.01, fit).at<float>(0, 0));
 }
 
 // Six lightings of a textured scene: uniform light of rising strength, and in image 4 a
@@ -86,13 +87,32 @@ TEST(IlluminationModel, TheThresholdSinglesOutAHighlightAndNothingElse) {
 TEST(IlluminationModel, ComponentsAreValueAndSaturationOfTheLinearLighting) {
   // One pixel: log lighting (0.2, 0.0, -0.3) → L = e^0.2, 1, e^-0.3: V = e^0.2, S = 1 - e^-0.5.
   const cv::Mat log_l(1, 1, CV_32FC3, cv::Scalar(0.2, 0.0, -0.3));
-  const cv::Mat log_r(1, 1, CV_32FC3, cv::Scalar(std::log(50.0), std::log(100.0), 0.0));
-  const cv::Mat image(1, 1, CV_32FC3, cv::Scalar(20, 80, 40));
-  const IlluminationComponents c = ComputeIlluminationComponents(log_l, log_r, image);
+  const IlluminationComponents c = ComputeIlluminationComponents(log_l);
   EXPECT_NEAR(c.luminance.at<float>(0, 0), std::exp(0.2), 1e-5);
   EXPECT_NEAR(c.saturation.at<float>(0, 0), 1.0 - std::exp(-0.5), 1e-5);
-  EXPECT_NEAR(c.luminance_step.at<float>(0, 0), 1.0 / 100.0, 1e-7);  // q / V_R
-  EXPECT_NEAR(c.saturation_step.at<float>(0, 0), 1.0 / 80.0, 1e-7);  // q / V_I
+}
+
+TEST(IlluminationModel, IdenticalLightingsAndColourlessScenesAreNamedOrHandled) {
+  // Six identical images: nothing varies, no model (the threshold would flag everything).
+  const Scene scene = MakeScene();
+  const std::vector<cv::Mat> same(4, scene.images[0]);
+  try {
+    LearnIlluminationModel(ComputeInvariantImage(same), same);
+    FAIL() << "identical lightings accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("lightings are identical"), std::string::npos) << e.what();
+  }
+  // Grey images stored as RGB: no saturation model, the luminance's still learnt.
+  std::vector<cv::Mat> grey;
+  for (const cv::Mat& im : scene.images) {
+    cv::Mat g, rgb;
+    cv::cvtColor(im, g, cv::COLOR_RGB2GRAY);
+    cv::cvtColor(g, rgb, cv::COLOR_GRAY2RGB);
+    grey.push_back(rgb);
+  }
+  const IlluminationModel model = LearnIlluminationModel(ComputeInvariantImage(grey), grey);
+  EXPECT_EQ(model.saturation.alpha, 0.0);
+  EXPECT_GT(model.luminance.alpha, 0.0);
 }
 
 TEST(IlluminationModel, RejectsBadOptionsAndMismatchedImages) {
@@ -102,7 +122,7 @@ TEST(IlluminationModel, RejectsBadOptionsAndMismatchedImages) {
   bad.kappa = 1.0;
   EXPECT_THROW(LearnIlluminationModel(invariant, scene.images, {}, bad), std::invalid_argument);
   bad.kappa = 0.5;
-  bad.grey_level = 0.0;
+  bad.luminance_step = 0.0;
   EXPECT_THROW(LearnIlluminationModel(invariant, scene.images, {}, bad), std::invalid_argument);
   EXPECT_THROW(LearnIlluminationModel(invariant, {scene.images[0]}), std::invalid_argument);
 }

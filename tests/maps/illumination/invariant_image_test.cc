@@ -128,6 +128,40 @@ TEST(InvariantImage, PixelsThatTooFewImagesCoverAreLeftOut) {
   EXPECT_EQ(cv::norm(out.log_invariant.colRange(0, 10), cv::NORM_INF), 0.0);
 }
 
+TEST(InvariantImage, PrimaryColouredLightingsGiveNoNaN) {
+  // One pixel lit pure red, then pure green, then pure blue: no channel's share has a positive
+  // median; the colour is left neutral instead of 0/0.
+  std::vector<cv::Mat> images;
+  for (int c = 0; c < 3; ++c) {
+    cv::Mat im = cv::Mat::zeros(4, 4, CV_32FC3);
+    im.setTo(cv::Scalar(c == 0 ? 200 : 0, c == 1 ? 200 : 0, c == 2 ? 200 : 0));
+    images.push_back(im);
+  }
+  InvariantImageOptions options;
+  options.colour = InvariantImageOptions::Colour::kLuminanceChromaticity;
+  const InvariantImage out = ComputeInvariantImage(images, {}, options);
+  EXPECT_TRUE(cv::checkRange(out.log_invariant));
+  for (const cv::Mat& l : out.log_illumination) EXPECT_TRUE(cv::checkRange(l));
+}
+
+TEST(InvariantImage, EachCoveredPartHasItsOwnConstant) {
+  // Two covered squares, apart, of different reflectance under the same lightings: each
+  // part's illumination images average 0, so each square's r̂ is its own mean log intensity.
+  std::vector<cv::Mat> images;
+  for (int m = 0; m < 3; ++m) {
+    cv::Mat im(20, 40, CV_32FC1, cv::Scalar(10.0 * (m + 1)));
+    im(cv::Rect(25, 5, 10, 10)) *= 5.0;
+    images.push_back(im);
+  }
+  cv::Mat mask = cv::Mat::zeros(20, 40, CV_8U);
+  mask(cv::Rect(5, 5, 10, 10)).setTo(255);
+  mask(cv::Rect(25, 5, 10, 10)).setTo(255);
+  const InvariantImage out = ComputeInvariantImage(images, std::vector<cv::Mat>(3, mask));
+  const double mean_log = (std::log(10.0) + std::log(20.0) + std::log(30.0)) / 3.0;
+  EXPECT_NEAR(out.log_invariant.at<float>(10, 10), mean_log, 1e-5);
+  EXPECT_NEAR(out.log_invariant.at<float>(10, 30), mean_log + std::log(5.0), 1e-5);
+}
+
 TEST(InvariantImage, RejectsOneLightingMismatchedSizesAndNaN) {
   const cv::Mat a = cv::Mat::ones(8, 8, CV_8UC3);
   try {
