@@ -133,11 +133,12 @@ int main(int argc, char** argv) {
         illumination::ComputeInvariantImage(training, {}, inv_options);
     illumination::IlluminationModelOptions model_options;
     model_options.kappa = kappa.getValue();
-    const illumination::ViewpointIllumination viewpoint = illumination::MakeViewpoint(
-        invariant, illumination::LearnIlluminationModel(invariant, training, {}, model_options));
     illumination::ZernikeOptions zernike_options;
     zernike_options.max_order = max_order.getValue();
     const illumination::ZernikeMoments zernike(zernike_options);
+    const illumination::ViewpointIllumination viewpoint = illumination::MakeViewpoint(
+        invariant, illumination::LearnIlluminationModel(invariant, training, {}, model_options),
+        illumination::IlluminationNoveltyOptions{}.min_region_pixels, &zernike);
     std::fprintf(stderr,
                  "[novelty-illumination] learnt from %zu frames: T_Y %.2f, %zu stored shapes\n",
                  training.size(), viewpoint.model.threshold, viewpoint.shapes.size());

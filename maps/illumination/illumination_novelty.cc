@@ -18,7 +18,7 @@ std::vector<StoredShape> Regions(const cv::Mat& binary, int min_pixels) {
     if (stats.at<int>(i, cv::CC_STAT_AREA) < min_pixels) continue;
     const cv::Rect box(stats.at<int>(i, cv::CC_STAT_LEFT), stats.at<int>(i, cv::CC_STAT_TOP),
                        stats.at<int>(i, cv::CC_STAT_WIDTH), stats.at<int>(i, cv::CC_STAT_HEIGHT));
-    out.push_back({box, labels(box) == i});
+    out.push_back({box, labels(box) == i, {}});
   }
   return out;
 }
@@ -34,12 +34,14 @@ cv::Mat Within(const StoredShape& shape, const cv::Rect& window) {
 }  // namespace
 
 ViewpointIllumination MakeViewpoint(const InvariantImage& invariant, IlluminationModel model,
-                                    int min_region_pixels) {
+                                    int min_region_pixels, const ZernikeMoments* zernike) {
   ViewpointIllumination v;
   v.log_invariant = invariant.log_invariant;
   v.covered = invariant.covered;
   for (const cv::Mat& s : model.shapes) {
     auto regions = Regions(s, min_region_pixels);
+    if (zernike)
+      for (StoredShape& r : regions) r.descriptor = zernike->Magnitudes(r.mask);
     v.shapes.insert(v.shapes.end(), regions.begin(), regions.end());
   }
   v.model = std::move(model);
@@ -81,8 +83,12 @@ IlluminationNovelty DetectIlluminationNovelty(const cv::Mat& image,
       if (window.empty()) continue;
       const cv::Mat mine = Within(region, window), theirs = Within(stored, window);
       if (cv::countNonZero(mine) == 0 || cv::countNonZero(theirs) == 0) continue;
-      const double distance = DescriptorDistance(zernike.Magnitudes(mine),
-                                                 zernike.Magnitudes(theirs));  // steps 3b-c
+      // Steps 3b-c; a window that is either shape's own box reuses its descriptor.
+      const bool stored_whole =
+          window == stored.box && stored.descriptor.size() == size_t(zernike.size());
+      const double distance =
+          DescriptorDistance(window == region.box ? own : zernike.Magnitudes(mine),
+                             stored_whole ? stored.descriptor : zernike.Magnitudes(theirs));
       if (distance < best) best = distance, best_window = window, matched = true;
     }
     out.matched_count += matched;

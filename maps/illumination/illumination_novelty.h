@@ -22,6 +22,9 @@ namespace novelty::illumination {
 struct StoredShape {
   cv::Rect box;
   cv::Mat mask;  ///< CV_8UC1 of box's size, 255 inside the region
+  /// Its Zernike descriptor over its own box — the descriptor steps 3b-c need whenever the
+  /// new region's box holds this one's — or empty (computed when needed).
+  std::vector<float> descriptor;
 };
 
 /// What the illumination-invariant map keeps at one viewpoint.
@@ -40,9 +43,11 @@ struct IlluminationNoveltyOptions {
 };
 
 /// Builds a viewpoint from an invariant image and its model; splits the shapes into connected
-/// regions of at least min_region_pixels (8-connected).
+/// regions of at least min_region_pixels (8-connected), with their descriptors when `zernike`
+/// is given (pass the one detection will use).
 ViewpointIllumination MakeViewpoint(const InvariantImage& invariant, IlluminationModel model,
-                                    int min_region_pixels = 16);
+                                    int min_region_pixels = 16,
+                                    const ZernikeMoments* zernike = nullptr);
 
 struct IlluminationNovelty {
   cv::Mat information_y, information_s;  ///< eq. 6.17, CV_32FC1 (i_S 0 for grey images)
