@@ -28,6 +28,7 @@
 
 #include "apps/command_line.h"
 #include "core/false_color.h"
+#include "core/float_image.h"
 #include "core/range_check.h"
 #include "core/write_rgb_image.h"
 #include "eval/html_report.h"
@@ -60,13 +61,6 @@ const sim::GroundTruthReader::Phase& FindPhase(const sim::GroundTruthReader& tru
   for (const auto& p : truth.Phases()) known += (known.empty() ? "" : ", ") + p.name;
   throw std::invalid_argument("no phase '" + name + "' in " + truth.dir() +
                               "/events.csv (phases: " + (known.empty() ? "none" : known) + ")");
-}
-
-cv::Mat Grey(const cv::Mat& rgb) {
-  cv::Mat f, g;
-  rgb.convertTo(f, CV_32FC3);
-  cv::transform(f, g, cv::Matx13f(1.0f / 3, 1.0f / 3, 1.0f / 3));
-  return g;
 }
 
 std::string Percent(double v) {
@@ -168,7 +162,8 @@ int main(int argc, char** argv) {
                                illumination::GradientCorrelationChange(frames[i], reference),
                                illumination::SphericalColorChange(frames[i], reference)};
       cv::Mat relative;
-      cv::Mat grey_obs = Grey(frames[i]), grey_ref = Grey(reference) + 1.0f;
+      cv::Mat grey_obs = core::ChannelMean(frames[i]),
+              grey_ref = core::ChannelMean(reference) + 1.0f;
       cv::divide(cv::abs(grey_obs - grey_ref + 1.0f), grey_ref, relative);
       for (int y = 0; y < reference.rows; ++y)
         for (int x = 0; x < reference.cols; ++x) {

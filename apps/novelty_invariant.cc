@@ -24,6 +24,7 @@
 
 #include "apps/command_line.h"
 #include "core/false_color.h"
+#include "core/float_image.h"
 #include "core/range_check.h"
 #include "core/same_file.h"
 #include "core/write_rgb_image.h"
@@ -38,13 +39,6 @@ using namespace novelty;
 namespace fs = std::filesystem;
 
 namespace {
-
-cv::Mat AsFloat(const cv::Mat& image) {
-  cv::Mat f;
-  image.convertTo(f, CV_MAKETYPE(CV_32F, image.channels()),
-                  image.depth() == CV_16U ? 255.0 / 65535.0 : 1.0);
-  return f;
-}
 
 cv::Mat ToRgb(const cv::Mat& image) {
   if (image.channels() == 3) return image;
@@ -189,7 +183,8 @@ int main(int argc, char** argv) {
         illumination::LinearImage(invariant.log_invariant, invariant.covered);
     WriteLinear((dir / "invariant.png").string(), reflectance, folder.images[0].depth());
     double white = 0.0;
-    for (const cv::Mat& im : folder.images) white = std::max(white, Percentile99(AsFloat(im)));
+    for (const cv::Mat& im : folder.images)
+      white = std::max(white, Percentile99(core::ToFloat255(im)));
 
     eval::HtmlReport report("novelty-invariant: " + in.getValue());
     report.Heading("Invariant image");
@@ -226,8 +221,8 @@ int main(int argc, char** argv) {
       core::WriteRgbImage(
           (dir / panel).string(),
           eval::SideBySide(
-              {Display(AsFloat(folder.images[m]), white), lighting8, info_rgb, shape_rgb}, 4,
-              {folder.names[m], "illumination (1 = 128)", "information i_Y", "i_Y > T_Y"}));
+              {Display(core::ToFloat255(folder.images[m]), white), lighting8, info_rgb, shape_rgb},
+              4, {folder.names[m], "illumination (1 = 128)", "information i_Y", "i_Y > T_Y"}));
       report.Image(panel, folder.names[m]);
       const double share =
           100.0 * cv::countNonZero(model.shapes[m]) / std::max(1, cv::countNonZero(ok));
@@ -267,9 +262,8 @@ int main(int argc, char** argv) {
       cv::Mat shading, grey_shading, true_shading = folder.shading;
       cv::divide(ToRgb(folder.diffuse), ToRgb(reflectance), shading);
       shading.setTo(cv::Scalar::all(0), folder.mask == 0);
-      cv::transform(shading, grey_shading, cv::Matx13f(1.0f / 3, 1.0f / 3, 1.0f / 3));
-      if (true_shading.channels() == 3)
-        cv::transform(true_shading, true_shading, cv::Matx13f(1.0f / 3, 1.0f / 3, 1.0f / 3));
+      grey_shading = core::ChannelMean(shading);
+      true_shading = core::ChannelMean(true_shading);
       const eval::IntrinsicScore s = eval::ScoreIntrinsic(true_shading, folder.reflectance,
                                                           grey_shading, reflectance, folder.mask);
       findings << "LMSE," << s.lmse << ",(reported; MIT grey reference 0.0127 mean of 4),\n"

@@ -1,5 +1,7 @@
 #include "maps/illumination/gradient_correlation.h"
 
+#include "core/float_image.h"
+
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <vector>
@@ -7,15 +9,6 @@
 namespace novelty::illumination {
 
 namespace {
-
-cv::Mat Grey(const cv::Mat& image) {
-  cv::Mat f, g;
-  image.convertTo(f, CV_MAKETYPE(CV_32F, image.channels()),
-                  image.depth() == CV_16U ? 255.0 / 65535.0 : 1.0);
-  if (f.channels() == 1) return f;
-  cv::transform(f, g, cv::Matx13f(1.0f / 3, 1.0f / 3, 1.0f / 3));
-  return g;
-}
 
 // 1 - ρ at one layer.
 cv::Mat LayerChange(const cv::Mat& a, const cv::Mat& b, const GradientCorrelationOptions& o) {
@@ -56,7 +49,7 @@ cv::Mat GradientCorrelationChange(const cv::Mat& observation, const cv::Mat& ref
       !(options.noise_energy > 0.0))
     throw std::invalid_argument(
         "GradientCorrelationChange: block must be odd and >= 1, layers >= 1, noise_energy > 0");
-  cv::Mat a = Grey(observation), b = Grey(reference);
+  cv::Mat a = core::ChannelMean(observation), b = core::ChannelMean(reference);
   cv::Mat sum = cv::Mat::zeros(a.size(), CV_32F);
   int used = 0;
   for (int layer = 0; layer < options.layers; ++layer) {

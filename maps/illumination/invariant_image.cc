@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/float_image.h"
 #include "maps/illumination/gradient_integration.h"
 #include "maps/stats/column_medians.h"
 
@@ -63,11 +64,8 @@ void CheckInputs(const std::vector<cv::Mat>& images, const std::vector<cv::Mat>&
 
 // The images as float on the 0…255 scale.
 std::vector<cv::Mat> FloatImages(const std::vector<cv::Mat>& images) {
-  std::vector<cv::Mat> out(images.size());
-  for (std::size_t m = 0; m < images.size(); ++m) {
-    const double scale = images[m].depth() == CV_16U ? 255.0 / 65535.0 : 1.0;
-    images[m].convertTo(out[m], CV_MAKETYPE(CV_32F, images[m].channels()), scale);
-  }
+  std::vector<cv::Mat> out;
+  for (const cv::Mat& im : images) out.push_back(core::ToFloat255(im));
   return out;
 }
 
@@ -93,8 +91,7 @@ std::vector<cv::Mat> LogChannel(const std::vector<cv::Mat>& images, int c, doubl
 std::vector<cv::Mat> LogLuminance(const std::vector<cv::Mat>& images, double floor) {
   std::vector<cv::Mat> logs(images.size());
   for (std::size_t m = 0; m < images.size(); ++m) {
-    cv::transform(images[m], logs[m], cv::Matx13f(1.0f / 3, 1.0f / 3, 1.0f / 3));
-    logs[m] = ClippedLog(logs[m], floor);
+    logs[m] = ClippedLog(core::ChannelMean(images[m]), floor);
   }
   return logs;
 }

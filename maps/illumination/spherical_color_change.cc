@@ -3,15 +3,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/float_image.h"
+
 namespace novelty::illumination {
 
 namespace {
-
-cv::Mat AsFloat(const cv::Mat& image) {
-  cv::Mat f;
-  image.convertTo(f, CV_32FC3, image.depth() == CV_16U ? 255.0 / 65535.0 : 1.0);
-  return f;
-}
 
 // (φ, θ) of eq. 2.33-2.34; false for a black pixel.
 bool Angles(const cv::Vec3f& rgb, float& phi, float& theta) {
@@ -33,7 +29,7 @@ cv::Mat SphericalColorChange(const cv::Mat& observation, const cv::Mat& referenc
     throw std::invalid_argument(
         "SphericalColorChange: observation and reference must be RGB images of one size and "
         "type");
-  const cv::Mat a = AsFloat(observation), b = AsFloat(reference);
+  const cv::Mat a = core::ToFloat255(observation), b = core::ToFloat255(reference);
   cv::Mat d(a.size(), CV_32F);
   for (int y = 0; y < a.rows; ++y) {
     const cv::Vec3f *p = a.ptr<cv::Vec3f>(y), *q = b.ptr<cv::Vec3f>(y);

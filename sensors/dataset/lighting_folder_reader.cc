@@ -7,6 +7,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "core/float_image.h"
+
 namespace novelty::sensors {
 
 namespace {
@@ -40,13 +42,6 @@ cv::Mat ReadImage(const fs::path& path) {
   return out;
 }
 
-cv::Mat AsFloat(const cv::Mat& image) {
-  cv::Mat f;
-  image.convertTo(f, CV_MAKETYPE(CV_32F, image.channels()),
-                  image.depth() == CV_16U ? 255.0 / 65535.0 : 1.0);
-  return f;
-}
-
 std::string Describe(const cv::Mat& m) {
   return std::to_string(m.cols) + "x" + std::to_string(m.rows) + " with " +
          std::to_string(m.channels()) + " channel(s)";
@@ -67,11 +62,11 @@ LightingFolder ReadLightingFolder(const std::string& folder) {
       if (m.channels() == 3) cv::cvtColor(m, m, cv::COLOR_RGB2GRAY);
       out.mask = m > 0;
     } else if (stem == "reflectance") {
-      out.reflectance = AsFloat(ReadImage(p));
+      out.reflectance = core::ToFloat255(ReadImage(p));
     } else if (stem == "shading") {
-      out.shading = AsFloat(ReadImage(p));
+      out.shading = core::ToFloat255(ReadImage(p));
     } else if (stem == "diffuse") {
-      out.diffuse = AsFloat(ReadImage(p));
+      out.diffuse = core::ToFloat255(ReadImage(p));
     } else {
       lightings.push_back(p);
     }

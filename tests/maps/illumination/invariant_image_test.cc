@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "core/float_image.h"
 #include "eval/lmse.h"
 
 namespace novelty::illumination {
@@ -193,23 +194,19 @@ std::string SharedData(const std::string& name) {
   return shared && std::filesystem::exists(path) ? path : "";
 }
 
+// R G B (or grey) as float on the 0…255 scale.
 cv::Mat ReadRgb(const std::string& path) {
-  cv::Mat bgr = cv::imread(path, cv::IMREAD_UNCHANGED);
+  cv::Mat bgr = cv::imread(path, cv::IMREAD_UNCHANGED), rgb;
   if (bgr.empty()) throw std::runtime_error("cannot read " + path);
-  cv::Mat rgb, f;
   if (bgr.channels() == 3)
     cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
   else
     rgb = bgr;
-  rgb.convertTo(f, CV_32F, bgr.depth() == CV_16U ? 255.0 / 65535.0 : 1.0);
-  return f;
+  return core::ToFloat255(rgb);
 }
 
 cv::Mat Grey(const cv::Mat& rgb) {
-  if (rgb.channels() == 1) return rgb;
-  cv::Mat g;
-  cv::transform(rgb, g, cv::Matx13f(1.0f / 3, 1.0f / 3, 1.0f / 3));
-  return g;
+  return core::ChannelMean(rgb);
 }
 
 struct MitScores {
