@@ -25,12 +25,14 @@ const ObjectAcquisitionOptions& Checked(const ObjectAcquisitionOptions& o) {
   if (!(o.relative_descriptor_change > 0.0))
     throw std::invalid_argument("ObjectAcquisitionOptions: relative_descriptor_change must be > 0");
   if (!(o.focus.xi >= 0.0 && std::isfinite(o.focus.xi)) || o.focus.morphology_size < 0)
-    throw std::invalid_argument("ObjectAcquisitionOptions: xi must be finite and >= 0, "
-                                "morphology_size >= 0");
+    throw std::invalid_argument(
+        "ObjectAcquisitionOptions: xi must be finite and >= 0, "
+        "morphology_size >= 0");
   if (!(o.change.min_relative_difference >= 0.0) ||
       !(o.change.min_known_share >= 0.0 && o.change.min_known_share <= 1.0))
-    throw std::invalid_argument("ObjectAcquisitionOptions: min_relative_difference must be >= 0, "
-                                "min_known_share in [0, 1]");
+    throw std::invalid_argument(
+        "ObjectAcquisitionOptions: min_relative_difference must be >= 0, "
+        "min_known_share in [0, 1]");
   DescriptorWidth(o.extractor);  // throws for a value that names no extractor
   return o;
 }
@@ -40,11 +42,13 @@ void CheckPlane(const cv::Mat& m, int type, const core::PinholeCamera& camera, c
   if (may_be_empty && m.empty()) return;
   if (m.type() != type || m.cols != camera.width || m.rows != camera.height)
     throw std::invalid_argument(std::string("ObjectAcquisition::Process: ") + name + " must be " +
-                                (type == CV_8UC3 ? "CV_8UC3" : type == CV_32FC2 ? "CV_32FC2" : "CV_32FC1") + " of " +
-                                std::to_string(camera.width) + "x" +
-                                std::to_string(camera.height) + ", is " +
-                                std::to_string(m.cols) + "x" + std::to_string(m.rows) +
-                                " of type " + std::to_string(m.type()));
+                                (type == CV_8UC3    ? "CV_8UC3"
+                                 : type == CV_32FC2 ? "CV_32FC2"
+                                                    : "CV_32FC1") +
+                                " of " + std::to_string(camera.width) + "x" +
+                                std::to_string(camera.height) + ", is " + std::to_string(m.cols) +
+                                "x" + std::to_string(m.rows) + " of type " +
+                                std::to_string(m.type()));
 }
 
 }  // namespace
@@ -74,24 +78,23 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
   // holds that object: the appearance map takes each frame's depth into a view, so the frames
   // after an object appears soon predict it there (a static camera's at once).
   const ChangeKind kind = step.change.kind;
-  const bool added = !step.focus.box.empty() &&
-                     (kind == ChangeKind::kAdded ||
-                      (kind == ChangeKind::kUnknown && options_.learn_unknown_change));
+  const bool added =
+      !step.focus.box.empty() && (kind == ChangeKind::kAdded ||
+                                  (kind == ChangeKind::kUnknown && options_.learn_unknown_change));
   frames_since_added_ = added ? 0 : std::min(frames_since_added_ + 1, 1 << 30);
-  const bool unchanged_object =
-      kind == ChangeKind::kUnchanged &&
-      (frames_since_added_ <= options_.learner.forget_after_frames ||
-       options_.learn_unchanged_change);
+  const bool unchanged_object = kind == ChangeKind::kUnchanged &&
+                                (frames_since_added_ <= options_.learner.forget_after_frames ||
+                                 options_.learn_unchanged_change);
   step.learning = !step.focus.box.empty() && (added || unchanged_object);
   SelectedFeatures features;
   if (step.learning) features = Extract(rgb, depth, step.focus.box, camera, step);
-  step.learner = learner_.Process(step.focus, features, camera, T_world_cam, step.learning);
+  // A frame that is not learnt from has no features: it counts towards forgetting.
+  step.learner = learner_.Process(step.focus, features, camera, T_world_cam);
   return step;
 }
 
 SelectedFeatures ObjectAcquisition::Extract(const cv::Mat& rgb, const cv::Mat& depth,
-                                            const cv::Rect& box,
-                                            const core::PinholeCamera& camera,
+                                            const cv::Rect& box, const core::PinholeCamera& camera,
                                             AcquisitionStep& step) {
   // The whole frame with the box as mask: keypoints near the box's border keep the support
   // their descriptor windows need outside it.

@@ -11,21 +11,21 @@
 namespace novelty::objects {
 
 ObjectLearner::ObjectLearner(const ObjectLearnerOptions& options) : options_(options) {
-  if (!(options.static_distance_px > 0.0) || !(options.match_ratio > 0.0 && options.match_ratio <= 1.0) ||
+  if (!(options.static_distance_px > 0.0) ||
+      !(options.match_ratio > 0.0 && options.match_ratio <= 1.0) ||
       !(options.min_surprising_share >= 0.0 && options.min_surprising_share <= 1.0) ||
       !(options.window_per_scale > 0.0) || !(options.size_per_scale > 0.0) ||
       options.forget_after_frames < 1 ||
       (options.window_angle_sign != 1 && options.window_angle_sign != -1))
-    throw std::invalid_argument("ObjectLearnerOptions: static_distance_px > 0, match_ratio in "
-                                "(0, 1], min_surprising_share in [0, 1], window_per_scale > 0, "
-                                "size_per_scale > 0, forget_after_frames >= 1, window_angle_sign ±1");
+    throw std::invalid_argument(
+        "ObjectLearnerOptions: static_distance_px > 0, match_ratio in "
+        "(0, 1], min_surprising_share in [0, 1], window_per_scale > 0, "
+        "size_per_scale > 0, forget_after_frames >= 1, window_angle_sign ±1");
 }
 
-LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
-                                   const SelectedFeatures& f,
+LearnerStep ObjectLearner::Process(const FocusOfAttention& focus, const SelectedFeatures& f,
                                    const core::PinholeCamera& camera,
-                                   const Eigen::Isometry3d& T_world_cam,
-                                   bool object_in_focus) {
+                                   const Eigen::Isometry3d& T_world_cam) {
   const std::size_t n = f.keypoints.size();
   if (int(n) != f.descriptors.rows || f.p_cam.size() != n || f.max_descriptor_change.size() != n)
     throw std::invalid_argument("ObjectLearner::Process: " + std::to_string(n) + " keypoints, " +
@@ -34,7 +34,7 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
                                 std::to_string(f.max_descriptor_change.size()) + " bounds");
   LearnerStep step;
   step.selected = int(n);
-  if (n == 0 || !object_in_focus) {  // the object may have gone
+  if (n == 0) {  // the object may have gone
     if (++frames_without_features_ >= options_.forget_after_frames) {
       active_.clear();
       learning_object_ = -1;
@@ -57,15 +57,13 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
     const cv::KeyPoint& k = f.keypoints[std::size_t(i)];
     const float window = float(options_.window_per_scale * k.size / options_.size_per_scale);
     const float angle = float(options_.window_angle_sign * k.angle * M_PI / 180.0);
-    if (SurprisingShare(focus, k.pt, window, angle) >
-        options_.min_surprising_share)
+    if (SurprisingShare(focus, k.pt, window, angle) > options_.min_surprising_share)
       on_surprise.push_back(i);
   }
 
   // 2. Recognition: the database first (eq. 5.4), then the active features.
   const FeatureDatabase::Recognition r = database_.Recognize(
-      f.descriptors, options_.match_ratio,
-      options_.distinct_second_match ? &f.keypoints : nullptr);
+      f.descriptors, options_.match_ratio, options_.distinct_second_match ? &f.keypoints : nullptr);
   step.matches_per_object = r.matches_per_object;
   std::vector<bool> in_database(n, false);
   for (const RatioMatch& m : r.matches) in_database[std::size_t(m.candidate)] = true;
@@ -85,7 +83,7 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
     if (by_active && learning_object_ >= 0) {
       step.recognised = LearnerStep::Recognised::kByActiveFeatures;
       step.object = learning_object_;
-    } else if (!on_surprise.empty() && object_in_focus) {  // an unknown object (eq. 5.5)
+    } else if (!on_surprise.empty()) {  // an unknown object (eq. 5.5)
       step.recognised = LearnerStep::Recognised::kNewObject;
       step.object = database_.AddObject();
     } else if (by_active) {
@@ -119,16 +117,13 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus,
       ProjectActiveFeatures(active_, camera, T_world_cam);
   const auto is_held = [&](const cv::Point2f& pt) {
     for (const ProjectedActiveFeature& g : held)
-      if ((g.pixel - Eigen::Vector2d(pt.x, pt.y)).norm() < options_.static_distance_px)
-        return true;
+      if ((g.pixel - Eigen::Vector2d(pt.x, pt.y)).norm() < options_.static_distance_px) return true;
     return false;
   };
-  // Where the focus holds no new object, no place starts being held: only the active features of
-  // the object being learnt can make static features there.
-  for (std::size_t i = 0; i < n && object_in_focus; ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     if (is_static[i] || in_database[i] || !f.p_cam[i] || is_held(f.keypoints[i].pt)) continue;
-    active_.push_back({T_world_cam * *f.p_cam[i], f.descriptors.row(int(i)).clone(),
-                       f.max_descriptor_change[i]});
+    active_.push_back(
+        {T_world_cam * *f.p_cam[i], f.descriptors.row(int(i)).clone(), f.max_descriptor_change[i]});
     ++step.new_active;
   }
   step.active = int(active_.size());

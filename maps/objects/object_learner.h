@@ -18,8 +18,8 @@
 #pragma once
 
 #include <Eigen/Geometry>
-#include <optional>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "core/eigen_abi.h"
@@ -32,8 +32,8 @@
 namespace novelty::objects {
 
 struct ObjectLearnerOptions {
-  double static_distance_px = 2.0;  ///< δ of eq. 5.1 (the thesis: 2 px)
-  double match_ratio = 0.65;        ///< the ratio test of 5.1 (the thesis: 0.65)
+  double static_distance_px = 2.0;    ///< δ of eq. 5.1 (the thesis: 2 px)
+  double match_ratio = 0.65;          ///< the ratio test of 5.1 (the thesis: 0.65)
   double min_surprising_share = 0.8;  ///< T of eq. 5.5 (the thesis: 0.8)
   /// Side of a descriptor's window in units of its scale s, over which ρ_S is measured (M-SURF:
   /// 24s; keypoint size = 10·s, msurf.h).
@@ -68,7 +68,7 @@ struct SelectedFeatures {
 struct LearnerStep {
   enum class Recognised { kNothing, kByDatabase, kByActiveFeatures, kNewObject };
   Recognised recognised = Recognised::kNothing;
-  int object = -1;  ///< the recognised or new object, −1 if none
+  int object = -1;                      ///< the recognised or new object, −1 if none
   std::vector<int> matches_per_object;  ///< N_k of eq. 5.4
   int selected = 0, static_features = 0, learnt = 0, new_active = 0, active = 0;
   /// With verify_pose, for the object the database's matches name: whether a pose verified it
@@ -82,16 +82,12 @@ class ObjectLearner {
   explicit ObjectLearner(const ObjectLearnerOptions& options = {});
 
   /// One frame: the focus of attention it was selected in, its selected features, and the
-  /// camera and its pose. `object_in_focus` false says the focus holds no new object (its depth
-  /// is the expected one): its features are still used against the active ones, but none
-  /// becomes active, no new object class is made, and the frame counts towards
-  /// `forget_after_frames` like one without
-  /// features, so that the active features of an object that has gone do not live on in
-  /// whatever the focus turns to next. Throws
-  /// std::invalid_argument when the features' vectors disagree.
+  /// camera and its pose. A frame without features counts towards `forget_after_frames`; the
+  /// acquisition (object_acquisition.h) gives none where the focus holds no new object, so that
+  /// the active features of an object that has gone do not live on in whatever the focus turns
+  /// to next. Throws std::invalid_argument when the features' vectors disagree.
   LearnerStep Process(const FocusOfAttention& focus, const SelectedFeatures& features,
-                      const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
-                      bool object_in_focus = true);
+                      const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam);
 
   const FeatureDatabase& database() const { return database_; }
   FeatureDatabase& database() { return database_; }

@@ -149,6 +149,32 @@ TEST(ObjectAcquisition, AnObjectTheMapAlreadyExpectsIsLearntOnceItWasAdded) {
   EXPECT_GE(acquisition.learner().database().features(), 10);
 }
 
+// The face learnt, then taken away: the map still expects it, the wall shows (removed). Such
+// frames are not learnt from and count towards forgetting the face's active features, which
+// after forget_after_frames are gone — else they would name whatever is put down next.
+TEST(ObjectAcquisition, FramesWithoutANewObjectForgetTheActiveFeatures) {
+  ObjectAcquisition acquisition;
+  const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  for (int t = 0; t < 3; ++t) {
+    const Rendered r = Render(t, true);
+    acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), wall_depth, kCamera, Pose(t));
+  }
+  ASSERT_FALSE(acquisition.learner().active().empty());
+  const int forget = ObjectLearnerOptions{}.forget_after_frames;
+  for (int t = 3; t < 3 + forget; ++t) {
+    const Rendered with = Render(t, true), without = Render(t, false);
+    const AcquisitionStep s = acquisition.Process(
+        without.rgb, without.depth, Surprise(with.face, t), with.depth, kCamera, Pose(t));
+    EXPECT_EQ(s.change.kind, ChangeKind::kRemoved) << t;
+    EXPECT_FALSE(s.learning) << t;
+    if (t + 1 < 3 + forget) {
+      EXPECT_FALSE(acquisition.learner().active().empty()) << t;
+    }
+  }
+  EXPECT_TRUE(acquisition.learner().active().empty());
+  EXPECT_EQ(acquisition.learner().database().objects(), 1);
+}
+
 // A surprise where the map expects the depth the frame has (a new print on a known surface, a
 // shadow, sensor noise): no object to learn.
 TEST(ObjectAcquisition, NeverLearnsWhereOnlyTheLookChanged) {
