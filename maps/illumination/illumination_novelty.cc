@@ -31,6 +31,35 @@ cv::Mat Within(const StoredShape& shape, const cv::Rect& window) {
   return out;
 }
 
+struct ShapeMatch {
+  double distance = 0.0;  // e of steps 3c-d
+  cv::Rect window;        // BB_I of the best match
+  bool matched = false;   // a stored shape explains the region better than none
+};
+
+// Steps 3a-c for one region: the stored shape whose descriptor inside the intersection of the
+// two boxes is nearest the region's there. No stored shape in the window is a shape too — the
+// empty one, whose descriptor is 0: a region unlike anything stored keeps e = |d'|.
+ShapeMatch BestMatch(const StoredShape& region, const std::vector<StoredShape>& stored_shapes,
+                     const ZernikeMoments& zernike) {
+  const std::vector<float> own = zernike.Magnitudes(region.mask);
+  ShapeMatch best{DescriptorDistance(own, std::vector<float>(own.size(), 0.0f)), region.box, false};
+  for (const StoredShape& stored : stored_shapes) {
+    const cv::Rect window = region.box & stored.box;  // BB_I (step 3a)
+    if (window.empty()) continue;
+    const cv::Mat mine = Within(region, window), theirs = Within(stored, window);
+    if (cv::countNonZero(mine) == 0 || cv::countNonZero(theirs) == 0) continue;
+    // Steps 3b-c; a window that is either shape's own box reuses its descriptor.
+    const bool stored_whole =
+        window == stored.box && stored.descriptor.size() == size_t(zernike.size());
+    const double distance =
+        DescriptorDistance(window == region.box ? own : zernike.Magnitudes(mine),
+                           stored_whole ? stored.descriptor : zernike.Magnitudes(theirs));
+    if (distance < best.distance) best = {distance, window, true};
+  }
+  return best;
+}
+
 }  // namespace
 
 ViewpointIllumination MakeViewpoint(const InvariantImage& invariant, IlluminationModel model,
@@ -70,31 +99,18 @@ IlluminationNovelty DetectIlluminationNovelty(const cv::Mat& image,
   cv::Mat e(image.size(), CV_32F, cv::Scalar(kUnmatched));
   const std::vector<StoredShape> regions = Regions(out.regions, options.min_region_pixels);
   out.region_count = int(regions.size());
+  // Regions are matched independently (in parallel); each writes only its own pixels after.
+  std::vector<ShapeMatch> matches(regions.size());
+  cv::parallel_for_(cv::Range(0, int(regions.size())), [&](const cv::Range& range) {
+    for (int k = range.start; k < range.end; ++k)
+      matches[k] = BestMatch(regions[k], viewpoint.shapes, zernike);
+  });
   float e_max = 0.0f;
-  for (const StoredShape& region : regions) {
-    // No stored shape in the window is a shape too — the empty one, whose descriptor is 0: a
-    // region unlike anything stored keeps e = |d'|.
-    const std::vector<float> own = zernike.Magnitudes(region.mask);
-    double best = DescriptorDistance(own, std::vector<float>(own.size(), 0.0f));
-    cv::Rect best_window = region.box;
-    bool matched = false;
-    for (const StoredShape& stored : viewpoint.shapes) {
-      const cv::Rect window = region.box & stored.box;  // BB_I (step 3a)
-      if (window.empty()) continue;
-      const cv::Mat mine = Within(region, window), theirs = Within(stored, window);
-      if (cv::countNonZero(mine) == 0 || cv::countNonZero(theirs) == 0) continue;
-      // Steps 3b-c; a window that is either shape's own box reuses its descriptor.
-      const bool stored_whole =
-          window == stored.box && stored.descriptor.size() == size_t(zernike.size());
-      const double distance =
-          DescriptorDistance(window == region.box ? own : zernike.Magnitudes(mine),
-                             stored_whole ? stored.descriptor : zernike.Magnitudes(theirs));
-      if (distance < best) best = distance, best_window = window, matched = true;
-    }
-    out.matched_count += matched;
+  for (size_t k = 0; k < regions.size(); ++k) {
+    out.matched_count += matches[k].matched;
     // Step 3d: the best distance goes to the region's pixels inside its window.
-    e(best_window).setTo(float(best), Within(region, best_window));
-    e_max = std::max(e_max, float(best));
+    e(matches[k].window).setTo(float(matches[k].distance), Within(regions[k], matches[k].window));
+    e_max = std::max(e_max, float(matches[k].distance));
   }
   out.shape_factor = cv::Mat(image.size(), CV_32F, cv::Scalar(1.0f));
   if (e_max > 0.0f) {
