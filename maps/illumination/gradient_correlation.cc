@@ -50,6 +50,9 @@ cv::Mat GradientCorrelationChange(const cv::Mat& observation, const cv::Mat& ref
     throw std::invalid_argument(
         "GradientCorrelationChange: block must be odd and >= 1, layers >= 1, noise_energy > 0");
   cv::Mat a = core::ChannelMean(observation), b = core::ChannelMean(reference);
+  if (!cv::checkRange(a) || !cv::checkRange(b))
+    throw std::invalid_argument(
+        "GradientCorrelationChange: the images hold NaN or infinite values");
   cv::Mat sum = cv::Mat::zeros(a.size(), CV_32F);
   int used = 0;
   for (int layer = 0; layer < options.layers; ++layer) {

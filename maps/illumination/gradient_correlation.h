@@ -20,9 +20,10 @@ struct GradientCorrelationOptions {
   /// Resolution layers (each half the previous one's size) whose 1 - ρ are averaged [OH07: 3].
   int layers = 3;
   /// c: the gradient energy of a block of camera noise (Σ |∇I|², grey levels², Sobel gradients
-  /// / 8). Noise of σ grey levels gives 0.375 σ² a pixel: 9.4 for a 5 × 5 block at σ = 1, the
-  /// simulator's and a good camera's noise.
-  double noise_energy = 9.4;
+  /// / 8, of the channel mean). Noise of σ grey levels a channel gives 0.375 σ²/3 a pixel of the
+  /// mean of three channels: 3.1 for a 5 × 5 block at σ = 1, the simulator's and a good camera's
+  /// noise.
+  double noise_energy = 3.1;
 };
 
 /// 1 - ρ per pixel, CV_32FC1 in [0, 1], of two images of one size and type (grey or RGB, any

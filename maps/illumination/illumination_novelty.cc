@@ -33,6 +33,7 @@ cv::Mat Within(const StoredShape& shape, const cv::Rect& window) {
 
 struct ShapeMatch {
   double distance = 0.0;  // e of steps 3c-d
+  double empty = 0.0;     // the region's distance to the empty shape, |d'|
   cv::Rect window;        // BB_I of the best match
   bool matched = false;   // a stored shape explains the region better than none
 };
@@ -41,21 +42,25 @@ struct ShapeMatch {
 // two boxes is nearest the region's there. No stored shape in the window is a shape too — the
 // empty one, whose descriptor is 0: a region unlike anything stored keeps e = |d'|.
 ShapeMatch BestMatch(const StoredShape& region, const std::vector<StoredShape>& stored_shapes,
-                     const ZernikeMoments& zernike) {
+                     const ZernikeMoments& zernike, double min_share) {
   const std::vector<float> own = zernike.Magnitudes(region.mask);
-  ShapeMatch best{DescriptorDistance(own, std::vector<float>(own.size(), 0.0f)), region.box, false};
+  const double empty = DescriptorDistance(own, std::vector<float>(own.size(), 0.0f));
+  ShapeMatch best{empty, empty, region.box, false};
+  const int region_pixels = cv::countNonZero(region.mask);
   for (const StoredShape& stored : stored_shapes) {
     const cv::Rect window = region.box & stored.box;  // BB_I (step 3a)
     if (window.empty()) continue;
     const cv::Mat mine = Within(region, window), theirs = Within(stored, window);
-    if (cv::countNonZero(mine) == 0 || cv::countNonZero(theirs) == 0) continue;
+    if (cv::countNonZero(mine) < std::max(1.0, min_share * region_pixels) ||
+        cv::countNonZero(theirs) < std::max(1.0, min_share * cv::countNonZero(stored.mask)))
+      continue;
     // Steps 3b-c; a window that is either shape's own box reuses its descriptor.
     const bool stored_whole =
         window == stored.box && stored.descriptor.size() == size_t(zernike.size());
     const double distance =
         DescriptorDistance(window == region.box ? own : zernike.Magnitudes(mine),
                            stored_whole ? stored.descriptor : zernike.Magnitudes(theirs));
-    if (distance < best.distance) best = {distance, window, true};
+    if (distance < best.distance) best = {distance, empty, window, true};
   }
   return best;
 }
@@ -95,30 +100,26 @@ IlluminationNovelty DetectIlluminationNovelty(const cv::Mat& image,
                           : InformationMap(c.saturation, model.saturation_step, model.saturation);
   out.regions = (out.information_y > viewpoint.model.threshold) & viewpoint.covered;
   // Step 3: each region against the stored shapes whose boxes meet its own.
-  constexpr float kUnmatched = -1.0f;
-  cv::Mat e(image.size(), CV_32F, cv::Scalar(kUnmatched));
   const std::vector<StoredShape> regions = Regions(out.regions, options.min_region_pixels);
   out.region_count = int(regions.size());
   // Regions are matched independently (in parallel); each writes only its own pixels after.
   std::vector<ShapeMatch> matches(regions.size());
   cv::parallel_for_(cv::Range(0, int(regions.size())), [&](const cv::Range& range) {
     for (int k = range.start; k < range.end; ++k)
-      matches[k] = BestMatch(regions[k], viewpoint.shapes, zernike);
+      matches[k] = BestMatch(regions[k], viewpoint.shapes, zernike, options.min_window_share);
   });
-  float e_max = 0.0f;
-  for (size_t k = 0; k < regions.size(); ++k) {
-    out.matched_count += matches[k].matched;
-    // Step 3d: the best distance goes to the region's pixels inside its window.
-    e(matches[k].window).setTo(float(matches[k].distance), Within(regions[k], matches[k].window));
-    e_max = std::max(e_max, float(matches[k].distance));
-  }
+  // Step 3d: e/ê goes to the region's pixels inside its window; elsewhere 1.
+  double e_max = 0.0;
+  for (const ShapeMatch& m : matches) e_max = std::max(e_max, m.distance);
   out.shape_factor = cv::Mat(image.size(), CV_32F, cv::Scalar(1.0f));
-  if (e_max > 0.0f) {
-    cv::Mat matched = e != kUnmatched;
-    cv::Mat factor = e / e_max;
-    factor.copyTo(out.shape_factor, matched);
-  } else {
-    out.shape_factor.setTo(0.0f, e != kUnmatched);  // perfect matches only
+  for (size_t k = 0; k < regions.size(); ++k) {
+    const ShapeMatch& m = matches[k];
+    out.matched_count += m.matched;
+    const double scale =
+        options.shape_scale == IlluminationNoveltyOptions::ShapeScale::kFrameMaximum ? e_max
+                                                                                     : m.empty;
+    const float factor = scale > 0.0 ? float(m.distance / scale) : 0.0f;
+    out.shape_factor(m.window).setTo(factor, Within(regions[k], m.window));
   }
   // Step 4, eq. 6.24.
   cv::Mat magnitude;

@@ -40,6 +40,19 @@ struct IlluminationNoveltyOptions {
   double min_intensity = 3.0;
   /// Regions (new or stored) of fewer pixels are not shape-matched: their shape says nothing.
   int min_region_pixels = 16;
+  /// A window BB_I must hold at least this share of the new region's pixels and of the stored
+  /// shape's (the thesis: any non-empty window). Each part is scaled to the unit disc, so a
+  /// sliver holding a pixel of each would match perfectly and say nothing.
+  double min_window_share = 0.5;
+  /// ê of eq. 6.24.
+  enum class ShapeScale {
+    kFrameMaximum,  ///< the largest e of the frame (the thesis)
+    /// per region its own distance to the empty shape, |d'|: e/|d'| in [0, 1] says how much
+    /// better than nothing the best stored shape explains it, whatever else the frame holds
+    /// (with the frame's maximum a frame with one region is never damped).
+    kEmptyShape,
+  };
+  ShapeScale shape_scale = ShapeScale::kFrameMaximum;
 };
 
 /// Builds a viewpoint from an invariant image and its model; splits the shapes into connected

@@ -30,6 +30,8 @@ cv::Mat SphericalColorChange(const cv::Mat& observation, const cv::Mat& referenc
         "SphericalColorChange: observation and reference must be RGB images of one size and "
         "type");
   const cv::Mat a = core::ToFloat255(observation), b = core::ToFloat255(reference);
+  if (!cv::checkRange(a) || !cv::checkRange(b))
+    throw std::invalid_argument("SphericalColorChange: the images hold NaN or infinite values");
   cv::Mat d(a.size(), CV_32F);
   for (int y = 0; y < a.rows; ++y) {
     const cv::Vec3f *p = a.ptr<cv::Vec3f>(y), *q = b.ptr<cv::Vec3f>(y);

@@ -61,8 +61,9 @@ ZernikeMoments::ZernikeMoments(const ZernikeOptions& options) : options_(options
   const int g = options.grid, order = options.max_order;
   for (int n = 0; n <= order; ++n)
     for (int m = n % 2; m <= n; m += 2) orders_.push_back({n, m});
-  // Cell centres in the square inscribed in the unit disc: half-side 1/√2.
-  const double half = 1.0 / std::sqrt(2.0), step = 2.0 * half / g, area = step * step;
+  // Cell centres on [-1, 1]², the square around the unit disc; cells outside the disc are
+  // left out (ring -1).
+  const double step = 2.0 / g, area = step * step;
   std::map<long, int> ring_of_key;  // integer key of ρ² on the cell lattice
   std::vector<double> ring_rho;
   ring_of_cell_.resize(size_t(g) * g);
@@ -71,6 +72,10 @@ ZernikeMoments::ZernikeMoments(const ZernikeOptions& options) : options_(options
     for (int x = 0; x < g; ++x) {
       const int ix = 2 * x + 1 - g, iy = 2 * y + 1 - g;  // centre in half-cells, exact
       const long key = long(ix) * ix + long(iy) * iy;
+      if (key > long(g) * g) {  // ρ > 1
+        ring_of_cell_[size_t(y) * g + x] = -1;
+        continue;
+      }
       auto [it, inserted] = ring_of_key.emplace(key, int(ring_rho.size()));
       if (inserted) ring_rho.push_back(std::sqrt(double(key)) * step / 2.0);
       ring_of_cell_[size_t(y) * g + x] = it->second;
@@ -93,22 +98,50 @@ std::vector<std::complex<double>> ZernikeMoments::Moments(const cv::Mat& shape) 
   if (shape.empty() || shape.channels() != 1)
     throw std::invalid_argument("ZernikeMoments: the shape must be a non-empty one-channel image");
   const int g = options_.grid, order = options_.max_order;
-  cv::Mat f, cells;
-  shape.convertTo(f, CV_64F, shape.depth() == CV_8U ? 1.0 / 255.0 : 1.0);
-  cv::resize(f, cells, {g, g}, 0, 0, cv::INTER_AREA);
+  cv::Mat f;
+  shape.convertTo(f, CV_64F,
+                  shape.depth() == CV_8U    ? 1.0 / 255.0
+                  : shape.depth() == CV_16U ? 1.0 / 65535.0
+                                            : 1.0);
+  std::vector<std::complex<double>> moments(orders_.size());
+  // [KH90]: the shape's centroid at the disc's centre, its farthest pixel corner on the rim —
+  // translation and scale drop out, and the magnitudes are left unchanged by a rotation.
+  const cv::Moments mo = cv::moments(f);
+  if (!(mo.m00 > 0.0)) return moments;  // empty: all 0
+  const double cx = mo.m10 / mo.m00, cy = mo.m01 / mo.m00;
+  double radius = 0.0;
+  for (int y = 0; y < f.rows; ++y)
+    for (int x = 0; x < f.cols; ++x)
+      if (f.at<double>(y, x) != 0.0) radius = std::max(radius, std::hypot(x - cx, y - cy));
+  radius += M_SQRT1_2;  // to the pixel's far corner
+  // Resample the disc's square onto the cells: area-averaged first where a cell spans several
+  // pixels, then an exact affine map of cell centres to pixel positions.
+  double scale = 1.0;                           // pixels of `f` per original pixel
+  const double cell_pixels = 2.0 * radius / g;  // original pixels per cell
+  if (cell_pixels > 1.0) {
+    scale = 1.0 / cell_pixels;
+    cv::resize(f, f, cv::Size(), scale, scale, cv::INTER_AREA);
+  }
+  // Cell (x, y) centre → pixel of f: (cx + (-1 + (x + 0.5) 2/g) R) · scale, likewise y.
+  const double pitch = 2.0 * radius / g * scale;
+  const double offset = 0.5 * pitch - 0.5 * (1.0 - scale);
+  const cv::Matx23d cell_to_pixel(pitch, 0.0, (cx - radius) * scale + offset, 0.0, pitch,
+                                  (cy - radius) * scale + offset);
+  cv::Mat cells;
+  cv::warpAffine(f, cells, cell_to_pixel, {g, g}, cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
+                 cv::BORDER_CONSTANT, cv::Scalar(0.0));
   // Per ring and m: Σ f e^{-imθ} ΔA.
   std::vector<std::complex<double>> ring_sums(size_t(rings_) * (order + 1));
   for (int y = 0; y < g; ++y) {
     const double* row = cells.ptr<double>(y);
     for (int x = 0; x < g; ++x) {
-      if (row[x] == 0.0) continue;
       const size_t cell = size_t(y) * g + x;
+      if (row[x] == 0.0 || ring_of_cell_[cell] < 0) continue;
       const std::complex<double>* phase = &phase_[cell * (order + 1)];
       std::complex<double>* sum = &ring_sums[size_t(ring_of_cell_[cell]) * (order + 1)];
       for (int m = 0; m <= order; ++m) sum[m] += row[x] * phase[m];
     }
   }
-  std::vector<std::complex<double>> moments(orders_.size());
   for (size_t k = 0; k < orders_.size(); ++k) {
     const auto [n, m] = orders_[k];
     const double* radial = &radial_[k * rings_];

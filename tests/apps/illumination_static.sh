@@ -3,10 +3,12 @@
 # scenario, novelty-illumination learns from its first phase and scores its second):
 # - washing_machine.scn (6.4.1, fig. 6.8-6.10 b; κ = 0.5): the issue's targets, AUC ≥ 0.95 and a
 #   TPR above NGC's and SCT's at every FPR ≤ 10 % (the thesis: "almost ideal").
-# - plate_sixteen_lights.scn (6.4.2, fig. 6.13; κ = 0.2): the thesis's claim, "below a FPR of
-#   7 % the method in Section 6.3 again outperforms the NGC algorithm" — at FPR 1 % and 5 % the
-#   novelty's TPR above NGC's and SCT's.
-#   illumination_static.sh BIN_DIR SOURCE_DIR
+# - plate_sixteen_lights.scn (6.4.2, fig. 6.13; κ = 0.2): the issue's lead (a TPR above both at
+#   every FPR ≤ 10 %, which contains the thesis's "below a FPR of 7 % the method ... outperforms
+#   the NGC algorithm"), also against NGC's and SCT's best training frame as the reference at
+#   FPR 1 % and 5 %. With --plate-auc, the issue's AUC ≥ 0.95 on the plate instead (not met:
+#   ctest illumination_plate_auc is disabled; docs/experiments.md says why).
+#   illumination_static.sh BIN_DIR SOURCE_DIR [--plate-auc]
 set -euo pipefail
 BIN=$(cd "$1" && pwd)
 SRC=$(cd "$2" && pwd)
@@ -29,6 +31,13 @@ value() {  # findings.csv, finding → value without " %"
 }
 above() { awk -v a="$1" -v b="$2" -v c="$3" 'BEGIN { exit !(a > b && a > c) }'; }
 
+if [ "${3:-}" = --plate-auc ]; then
+  run plate_sixteen_lights "$W/plate"
+  auc=$(value "$W/plate/findings.csv" "novelty: AUC")
+  awk -v a="$auc" 'BEGIN { exit !(a >= 0.95) }' || fail "plate: AUC $auc < 0.95"
+  exit $status
+fi
+
 run washing_machine "$W/wm" --train-phase lightings --test-phase observation --kappa 0.5
 auc=$(value "$W/wm/findings.csv" "novelty: AUC")
 awk -v a="$auc" 'BEGIN { exit !(a >= 0.95) }' || fail "washing machine: AUC $auc < 0.95"
@@ -36,11 +45,13 @@ ahead=$(value "$W/wm/findings.csv" "novelty TPR above NGC and SCT at every FPR <
 [ "$ahead" = yes ] || fail "washing machine: novelty not ahead at every FPR <= 10 % ($ahead)"
 
 run plate_sixteen_lights "$W/plate"
-for fpr in 1 5; do
-  mine=$(value "$W/plate/findings.csv" "novelty: TPR at FPR <= $fpr %")
-  ngc=$(value "$W/plate/findings.csv" "NGC: TPR at FPR <= $fpr %")
-  sct=$(value "$W/plate/findings.csv" "SCT: TPR at FPR <= $fpr %")
-  above "$mine" "$ngc" "$sct" ||
-    fail "plate: at FPR $fpr % novelty TPR $mine % is not above NGC $ngc % and SCT $sct %"
+ahead=$(value "$W/plate/findings.csv" "novelty TPR above NGC and SCT at every FPR <= 10 % (0.1 % steps)")
+[ "$ahead" = yes ] || fail "plate: novelty not ahead at every FPR <= 10 % ($ahead)"
+for baseline in NGC SCT; do
+  for fpr in 1 5; do
+    row="novelty TPR above $baseline's best reference at FPR <= $fpr %"
+    holds=$(awk -F, -v key="$row" '$1 == key { print $4 }' "$W/plate/findings.csv")
+    [ "$holds" = yes ] || fail "plate: $row does not hold"
+  done
 done
 exit $status

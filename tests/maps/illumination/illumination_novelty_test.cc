@@ -48,7 +48,7 @@ TEST(IlluminationNovelty, AKnownHighlightIsDampedAndANewObjectStandsOut) {
   object(cv::Rect(100, 70, 24, 24)).setTo(255);
   cv::Mat dimmed = frame.mul(cv::Mat(frame.size(), CV_32FC3, cv::Scalar(0.6, 0.2, 0.2)));
   dimmed.copyTo(frame, object);
-  const ZernikeMoments zernike({40, 32});
+  const ZernikeMoments zernike;
   const IlluminationNovelty n = DetectIlluminationNovelty(frame, viewpoint, zernike);
   EXPECT_GE(n.region_count, 1);
   EXPECT_GE(n.matched_count, 1);
@@ -73,6 +73,42 @@ TEST(IlluminationNovelty, WithoutTheShapeMemoryTheHighlightIsAsNovelAsTheObject)
       DetectIlluminationNovelty(frame, viewpoint, ZernikeMoments({40, 32}));
   EXPECT_EQ(n.matched_count, 0);
   EXPECT_GT(MeanIn(n.shape_factor, scene.highlight), 0.9);
+}
+
+TEST(IlluminationNovelty, AloneInItsFrameAKnownHighlightIsDampedOnlyAgainstTheEmptyShape) {
+  // The frame holds the highlight, a little larger than stored (the lamp moved), and nothing
+  // else new. With ê the frame's largest e (the thesis) its own e is ê: e/ê = 1, no damping at
+  // all. Against its distance to the empty shape, the stored shape explains it far better than
+  // nothing: damped.
+  Scene scene = MakeScene();
+  const InvariantImage invariant = ComputeInvariantImage(scene.training);
+  const ZernikeMoments zernike;
+  const ViewpointIllumination viewpoint =
+      MakeViewpoint(invariant, LearnIlluminationModel(invariant, scene.training), 16, &zernike);
+  cv::ellipse(scene.highlight, {50, 40}, {20, 10}, 25.0, 0, 360, cv::Scalar(255), cv::FILLED);
+  const cv::Mat frame = scene.Lit(0.9, true);
+  IlluminationNoveltyOptions options;
+  const IlluminationNovelty thesis = DetectIlluminationNovelty(frame, viewpoint, zernike, options);
+  ASSERT_GE(thesis.matched_count, 1);
+  options.shape_scale = IlluminationNoveltyOptions::ShapeScale::kEmptyShape;
+  const IlluminationNovelty empty = DetectIlluminationNovelty(frame, viewpoint, zernike, options);
+  EXPECT_GT(MeanIn(thesis.shape_factor, scene.highlight), 0.9);
+  EXPECT_LT(MeanIn(empty.shape_factor, scene.highlight), 0.5);
+}
+
+TEST(IlluminationNovelty, ASliverOfOverlapIsNoMatch) {
+  // A stored shape that meets the new region in a corner only (a few percent of either): scaled
+  // to the unit disc the two slivers would look alike, but they say nothing about the shapes.
+  const Scene scene = MakeScene();
+  const InvariantImage invariant = ComputeInvariantImage(scene.training);
+  ViewpointIllumination viewpoint =
+      MakeViewpoint(invariant, LearnIlluminationModel(invariant, scene.training));
+  cv::Mat corner = cv::Mat::zeros(scene.highlight.size(), CV_8U);
+  cv::circle(corner, {72, 52}, 12, cv::Scalar(255), cv::FILLED);  // touches the ellipse's end
+  viewpoint.shapes = {{cv::boundingRect(corner), corner(cv::boundingRect(corner)).clone(), {}}};
+  const IlluminationNovelty n =
+      DetectIlluminationNovelty(scene.Lit(0.9, true), viewpoint, ZernikeMoments());
+  EXPECT_EQ(n.matched_count, 0);
 }
 
 TEST(IlluminationNovelty, RejectsAFrameOfAnotherSize) {
