@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
     zernike_options.grid = grid.getValue();
     const illumination::ZernikeMoments zernike(zernike_options);
     const illumination::ViewpointIllumination viewpoint = illumination::MakeViewpoint(
-        invariant, illumination::LearnIlluminationModel(invariant, training, {}, model_options),
+        invariant, illumination::LearnIlluminationModel(invariant, {}, model_options),
         novelty_options.min_region_pixels, &zernike);
     std::fprintf(stderr,
                  "[novelty-illumination] learnt from %zu frames: T_Y %.2f, %zu stored shapes\n",

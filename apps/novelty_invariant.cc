@@ -172,7 +172,7 @@ int main(int argc, char** argv) {
     const illumination::InvariantImage invariant =
         illumination::ComputeInvariantImage(folder.images, coverage, inv_options);
     const illumination::IlluminationModel model =
-        illumination::LearnIlluminationModel(invariant, folder.images, coverage, model_options);
+        illumination::LearnIlluminationModel(invariant, coverage, model_options);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -71,26 +71,26 @@ cv::Mat InformationMap(const cv::Mat& values, double step, const stats::GammaFit
 }
 
 IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
-                                         const std::vector<cv::Mat>& images,
                                          const std::vector<cv::Mat>& coverage,
                                          const IlluminationModelOptions& options) {
   if (!(options.kappa >= 0.0 && options.kappa < 1.0) || !(options.luminance_step > 0.0) ||
       !(options.saturation_step > 0.0))
     throw std::invalid_argument(
         "LearnIlluminationModel: kappa must be in [0, 1) and the widths > 0");
-  if (images.size() != invariant.log_illumination.size() ||
-      (!coverage.empty() && coverage.size() != images.size()))
-    throw std::invalid_argument("LearnIlluminationModel: " + std::to_string(images.size()) +
-                                " images for " + std::to_string(invariant.log_illumination.size()) +
+  const std::size_t m_count = invariant.log_illumination.size();
+  if (!coverage.empty() && coverage.size() != m_count)
+    throw std::invalid_argument("LearnIlluminationModel: " + std::to_string(coverage.size()) +
+                                " coverage masks for " + std::to_string(m_count) +
                                 " illumination images");
   std::vector<IlluminationComponents> components;
+  std::vector<cv::Mat> valid;  // per image: covered by the invariant image and by the image
   std::vector<double> luminance, saturation;
-  for (std::size_t m = 0; m < images.size(); ++m) {
+  for (std::size_t m = 0; m < m_count; ++m) {
     components.push_back(ComputeIlluminationComponents(invariant.log_illumination[m]));
-    const cv::Mat valid = Valid(invariant, coverage, m);
-    AppendSamples(components.back().luminance, valid, options.luminance_step, luminance);
+    valid.push_back(Valid(invariant, coverage, m));
+    AppendSamples(components.back().luminance, valid[m], options.luminance_step, luminance);
     if (!components.back().saturation.empty())
-      AppendSamples(components.back().saturation, valid, options.saturation_step, saturation);
+      AppendSamples(components.back().saturation, valid[m], options.saturation_step, saturation);
   }
   if (luminance.empty()) throw std::invalid_argument("LearnIlluminationModel: no pixel is covered");
   IlluminationModel model;
@@ -109,12 +109,11 @@ IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
   }
   std::vector<cv::Mat> information;
   double sum = 0.0, count = 0.0;
-  for (std::size_t m = 0; m < images.size(); ++m) {
+  for (std::size_t m = 0; m < m_count; ++m) {
     information.push_back(
         InformationMap(components[m].luminance, model.luminance_step, model.luminance));
-    const cv::Mat valid = Valid(invariant, coverage, m);
-    const int n = cv::countNonZero(valid);
-    if (n > 0) sum += cv::mean(information.back(), valid)[0] * n;
+    const int n = cv::countNonZero(valid[m]);
+    if (n > 0) sum += cv::mean(information.back(), valid[m])[0] * n;
     count += n;
   }
   model.mean_information = sum / count;
@@ -124,8 +123,8 @@ IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
         "(mean information " +
         std::to_string(model.mean_information) + "): T_Y of eq. 6.18 would not be positive");
   model.threshold = model.mean_information / (1.0 - options.kappa);  // eq. 6.18
-  for (std::size_t m = 0; m < images.size(); ++m)
-    model.shapes.push_back((information[m] > model.threshold) & Valid(invariant, coverage, m));
+  for (std::size_t m = 0; m < m_count; ++m)
+    model.shapes.push_back((information[m] > model.threshold) & valid[m]);
   return model;
 }
 

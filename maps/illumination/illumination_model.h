@@ -60,12 +60,11 @@ IlluminationComponents ComputeIlluminationComponents(const cv::Mat& log_illumina
 /// CV_32FC1, Δ > 0. Returns CV_32FC1.
 cv::Mat InformationMap(const cv::Mat& values, double step, const stats::GammaFit& fit);
 
-/// Fits the model to the illumination images of `invariant`, computed from `images` (the same
-/// images, in order; `coverage` as given to ComputeInvariantImage). Throws std::invalid_argument
-/// for κ outside [0, 1), widths ≤ 0, images that do not match `invariant`, or illumination
-/// images that do not vary (identical lightings: no model of lighting can be learnt).
+/// Fits the model to the illumination images of `invariant` (`coverage` as given to
+/// ComputeInvariantImage). Throws std::invalid_argument for κ outside [0, 1), widths ≤ 0,
+/// coverage masks that do not match the illumination images, or illumination images that do
+/// not vary (identical lightings: no model of lighting can be learnt).
 IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
-                                         const std::vector<cv::Mat>& images,
                                          const std::vector<cv::Mat>& coverage = {},
                                          const IlluminationModelOptions& options = {});
 

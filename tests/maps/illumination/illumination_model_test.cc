@@ -69,7 +69,7 @@ double IoU(const cv::Mat& a, const cv::Mat& b) {
 TEST(IlluminationModel, TheThresholdSinglesOutAHighlightAndNothingElse) {
   const Scene scene = MakeScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.images);
-  const IlluminationModel model = LearnIlluminationModel(invariant, scene.images);
+  const IlluminationModel model = LearnIlluminationModel(invariant);
   EXPECT_NEAR(model.threshold, model.mean_information / (1.0 - 0.5), 1e-12);  // eq. 6.18
   EXPECT_GT(model.luminance.alpha, 0.0);
   EXPECT_GT(model.saturation.alpha, 0.0);
@@ -80,8 +80,7 @@ TEST(IlluminationModel, TheThresholdSinglesOutAHighlightAndNothingElse) {
   // A smaller κ (specular scenes) lowers T_Y.
   IlluminationModelOptions specular;
   specular.kappa = 0.2;
-  EXPECT_LT(LearnIlluminationModel(invariant, scene.images, {}, specular).threshold,
-            model.threshold);
+  EXPECT_LT(LearnIlluminationModel(invariant, {}, specular).threshold, model.threshold);
 }
 
 TEST(IlluminationModel, ComponentsAreValueAndSaturationOfTheLinearLighting) {
@@ -97,7 +96,7 @@ TEST(IlluminationModel, IdenticalLightingsAndColourlessScenesAreNamedOrHandled) 
   const Scene scene = MakeScene();
   const std::vector<cv::Mat> same(4, scene.images[0]);
   try {
-    LearnIlluminationModel(ComputeInvariantImage(same), same);
+    LearnIlluminationModel(ComputeInvariantImage(same));
     FAIL() << "identical lightings accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("lightings are identical"), std::string::npos) << e.what();
@@ -110,21 +109,22 @@ TEST(IlluminationModel, IdenticalLightingsAndColourlessScenesAreNamedOrHandled) 
     cv::cvtColor(g, rgb, cv::COLOR_GRAY2RGB);
     grey.push_back(rgb);
   }
-  const IlluminationModel model = LearnIlluminationModel(ComputeInvariantImage(grey), grey);
+  const IlluminationModel model = LearnIlluminationModel(ComputeInvariantImage(grey));
   EXPECT_EQ(model.saturation.alpha, 0.0);
   EXPECT_GT(model.luminance.alpha, 0.0);
 }
 
-TEST(IlluminationModel, RejectsBadOptionsAndMismatchedImages) {
+TEST(IlluminationModel, RejectsBadOptionsAndMismatchedCoverage) {
   const Scene scene = MakeScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.images);
   IlluminationModelOptions bad;
   bad.kappa = 1.0;
-  EXPECT_THROW(LearnIlluminationModel(invariant, scene.images, {}, bad), std::invalid_argument);
+  EXPECT_THROW(LearnIlluminationModel(invariant, {}, bad), std::invalid_argument);
   bad.kappa = 0.5;
   bad.luminance_step = 0.0;
-  EXPECT_THROW(LearnIlluminationModel(invariant, scene.images, {}, bad), std::invalid_argument);
-  EXPECT_THROW(LearnIlluminationModel(invariant, {scene.images[0]}), std::invalid_argument);
+  EXPECT_THROW(LearnIlluminationModel(invariant, {}, bad), std::invalid_argument);
+  EXPECT_THROW(LearnIlluminationModel(invariant, {cv::Mat(invariant.covered)}),
+               std::invalid_argument);  // 1 mask, 6 images
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ void BM_DetectIlluminationNovelty(benchmark::State& state) {
   const ZernikeMoments zernike;
   const InvariantImage invariant = ComputeInvariantImage(training);
   const ViewpointIllumination viewpoint =
-      MakeViewpoint(invariant, LearnIlluminationModel(invariant, training), 16, &zernike);
+      MakeViewpoint(invariant, LearnIlluminationModel(invariant), 16, &zernike);
   cv::Mat frame = Lit(reflectance, highlight, 4, true);
   frame(cv::Rect(220, 60, 40, 50)).setTo(cv::Scalar(20, 15, 60));  // a new dark object
   int regions = 0;

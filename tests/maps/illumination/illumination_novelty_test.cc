@@ -40,7 +40,7 @@ TEST(IlluminationNovelty, AKnownHighlightIsDampedAndANewObjectStandsOut) {
   const Scene scene = MakeScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
   const ViewpointIllumination viewpoint =
-      MakeViewpoint(invariant, LearnIlluminationModel(invariant, scene.training));
+      MakeViewpoint(invariant, LearnIlluminationModel(invariant));
   ASSERT_GE(viewpoint.shapes.size(), 1u);  // the highlight was stored
   // A new frame: the highlight again, and a new dark-red object (reflectance × (0.6, 0.2, 0.2)).
   cv::Mat frame = scene.Lit(0.9, true);
@@ -65,8 +65,7 @@ TEST(IlluminationNovelty, WithoutTheShapeMemoryTheHighlightIsAsNovelAsTheObject)
   // which is the contrast the shape memory exists for.
   const Scene scene = MakeScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
-  ViewpointIllumination viewpoint =
-      MakeViewpoint(invariant, LearnIlluminationModel(invariant, scene.training));
+  ViewpointIllumination viewpoint = MakeViewpoint(invariant, LearnIlluminationModel(invariant));
   viewpoint.shapes.clear();
   const cv::Mat frame = scene.Lit(0.9, true);
   const IlluminationNovelty n =
@@ -84,7 +83,7 @@ TEST(IlluminationNovelty, AloneInItsFrameAKnownHighlightIsDampedOnlyAgainstTheEm
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
   const ZernikeMoments zernike;
   const ViewpointIllumination viewpoint =
-      MakeViewpoint(invariant, LearnIlluminationModel(invariant, scene.training), 16, &zernike);
+      MakeViewpoint(invariant, LearnIlluminationModel(invariant), 16, &zernike);
   cv::ellipse(scene.highlight, {50, 40}, {20, 10}, 25.0, 0, 360, cv::Scalar(255), cv::FILLED);
   const cv::Mat frame = scene.Lit(0.9, true);
   IlluminationNoveltyOptions options;
@@ -101,8 +100,7 @@ TEST(IlluminationNovelty, ASliverOfOverlapIsNoMatch) {
   // to the unit disc the two slivers would look alike, but they say nothing about the shapes.
   const Scene scene = MakeScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
-  ViewpointIllumination viewpoint =
-      MakeViewpoint(invariant, LearnIlluminationModel(invariant, scene.training));
+  ViewpointIllumination viewpoint = MakeViewpoint(invariant, LearnIlluminationModel(invariant));
   cv::Mat corner = cv::Mat::zeros(scene.highlight.size(), CV_8U);
   cv::circle(corner, {72, 52}, 12, cv::Scalar(255), cv::FILLED);  // touches the ellipse's end
   viewpoint.shapes = {{cv::boundingRect(corner), corner(cv::boundingRect(corner)).clone(), {}}};
@@ -115,7 +113,7 @@ TEST(IlluminationNovelty, RejectsAFrameOfAnotherSize) {
   const Scene scene = MakeScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
   const ViewpointIllumination viewpoint =
-      MakeViewpoint(invariant, LearnIlluminationModel(invariant, scene.training));
+      MakeViewpoint(invariant, LearnIlluminationModel(invariant));
   EXPECT_THROW(DetectIlluminationNovelty(cv::Mat::zeros(10, 10, CV_32FC3), viewpoint,
                                          ZernikeMoments({8, 16})),
                std::invalid_argument);
