@@ -1,0 +1,197 @@
+#include "maps/illumination/illumination_map.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace novelty::illumination {
+namespace {
+
+// A textured wall 2 m in front of a camera that slides sideways, seen under several lightings:
+// each lighting scales the light and throws a disc-shaped shadow (×0.4) at a place of its own,
+// so that at every pixel the shadow's edges are a minority and the median of the gradients is
+// the reflectance's (6.1.2). Everything is analytic in wall coordinates, so any viewpoint's true
+// log reflectance is known.
+constexpr double kWall = 2.0;
+
+core::PinholeCamera Camera() {
+  core::PinholeCamera c;
+  c.width = 160;
+  c.height = 120;
+  c.fx = c.fy = 150.0;
+  c.cx = 79.5;
+  c.cy = 59.5;
+  return c;
+}
+
+struct Lighting {
+  double scale = 1.0;
+  cv::Point2d shadow{100, 100};  // wall coordinates of the shadow's centre (far away: none)
+  double shadow_radius = 0.15;
+};
+
+struct NewObject {
+  cv::Rect2d box;  // wall coordinates
+  cv::Vec3d factor{1, 1, 1};
+};
+
+cv::Vec3d Reflectance(double X, double Y) {
+  return {60 + 35 * std::sin(9 * X) * std::cos(6 * Y), 70 + 30 * std::cos(7 * X + 1),
+          55 + 30 * std::sin(8 * Y + 2 * X)};
+}
+
+core::Frame Render(double x, const Lighting& light, int index, const NewObject* object = nullptr,
+                   cv::Mat* truth = nullptr, cv::Mat* log_reflectance = nullptr,
+                   cv::Mat* shadow = nullptr) {
+  core::Frame f;
+  f.index = index;
+  f.camera = Camera();
+  f.T_world_cam = Eigen::Isometry3d(Eigen::Translation3d(x, 0, 0));
+  f.rgb.create(f.camera.height, f.camera.width, CV_8UC3);
+  f.depth = cv::Mat(f.rgb.size(), CV_32F, cv::Scalar(kWall));
+  if (truth) *truth = cv::Mat::zeros(f.rgb.size(), CV_8U);
+  if (log_reflectance) log_reflectance->create(f.rgb.size(), CV_32FC3);
+  if (shadow) *shadow = cv::Mat::zeros(f.rgb.size(), CV_8U);
+  cv::RNG rng(uint64_t(index) * 7919u + 1u);
+  for (int v = 0; v < f.rgb.rows; ++v)
+    for (int u = 0; u < f.rgb.cols; ++u) {
+      const double X = x + (u - f.camera.cx) / f.camera.fx * kWall;
+      const double Y = (v - f.camera.cy) / f.camera.fy * kWall;
+      cv::Vec3d r = Reflectance(X, Y);
+      if (log_reflectance)
+        for (int c = 0; c < 3; ++c) log_reflectance->at<cv::Vec3f>(v, u)[c] = float(std::log(r[c]));
+      if (object && object->box.contains({X, Y})) {
+        for (int c = 0; c < 3; ++c) r[c] *= object->factor[c];
+        if (truth) truth->at<uchar>(v, u) = 255;
+      }
+      double l = light.scale;
+      if (std::hypot(X - light.shadow.x, Y - light.shadow.y) < light.shadow_radius) {
+        l *= 0.4;
+        if (shadow) shadow->at<uchar>(v, u) = 255;
+      }
+      for (int c = 0; c < 3; ++c)
+        f.rgb.at<cv::Vec3b>(v, u)[c] = cv::saturate_cast<uchar>(r[c] * l + rng.uniform(-1.0, 1.0));
+    }
+  return f;
+}
+
+const std::vector<Lighting> kLightings = {{0.8, {0.10, 0.30}},
+                                          {1.2, {0.35, -0.25}},
+                                          {1.0, {-0.20, -0.05}},
+                                          {0.9, {0.55, 0.20}},
+                                          {1.3, {0.00, 0.40}}};
+
+IlluminationMap Learnt(const IlluminationMapOptions& options = {}) {
+  IlluminationMap map(options);
+  int index = 0;
+  for (const Lighting& light : kLightings) {
+    map.BeginLighting();
+    for (int k = 0; k <= 15; ++k) map.AddTrainingFrame(Render(0.02 * k, light, ++index));
+  }
+  map.Build();
+  return map;
+}
+
+double Rms(const cv::Mat& a, const cv::Mat& mask) {
+  cv::Mat d;
+  cv::multiply(a, a, d);
+  return std::sqrt(cv::mean(d, mask)[0]);
+}
+
+TEST(IlluminationMap, ViewpointsAlongTheFirstLightingsPath) {
+  const IlluminationMap map = Learnt();
+  EXPECT_EQ(map.lightings(), 5);
+  // 0 … 0.30 m in 2 cm steps, a viewpoint every 5 cm or more: 0, 0.06, 0.12, 0.18, 0.24, 0.30.
+  EXPECT_EQ(map.size(), 6);
+  EXPECT_EQ(map.dropped_viewpoints(), 0);
+  for (int i = 0; i < map.size(); ++i) {
+    EXPECT_GT(map.model(i).coverage, 0.95) << "viewpoint " << i;
+    EXPECT_EQ(map.view(i).planes.at("shapes").channels(), 5);
+  }
+}
+
+TEST(IlluminationMap, InterpolatedInvariantImageIsTheLogReflectance) {
+  // Between viewpoints, the interpolated r̂ equals log R up to a constant per channel (6.1.2:
+  // r̂ is defined up to one), so after removing each channel's mean the error is the noise's.
+  const IlluminationMap map = Learnt();
+  cv::Mat log_r;
+  const core::Frame frame =
+      Render(0.16, {1.05, {100, 100}}, 1000, nullptr, nullptr, &log_r, nullptr);
+  const IlluminationMapResult r = map.Detect(frame);
+  EXPECT_GT(r.coverage, 0.9);
+  ASSERT_GE(r.viewpoints.size(), 1u);
+  std::vector<cv::Mat> est, tru;
+  cv::split(r.viewpoint.log_invariant, est);
+  cv::split(log_r, tru);
+  for (int c = 0; c < 3; ++c) {
+    cv::Mat d = est[c] - tru[c];
+    d -= cv::mean(d, r.viewpoint.covered)[0];
+    // Noise ±1 on values 30…130 is at most 0.03 in log; the reflectance varies by ±0.5.
+    EXPECT_LT(Rms(d, r.viewpoint.covered), 0.03) << "channel " << c;
+  }
+}
+
+TEST(IlluminationMap, ANewObjectStandsOutAndANewShadowDoesNot) {
+  const IlluminationMap map = Learnt();
+  const NewObject object{{0.25, -0.15, 0.15, 0.15}, {0.6, 0.2, 0.2}};
+  cv::Mat truth, shadow;
+  const core::Frame frame =
+      Render(0.11, {1.1, {-0.05, 0.25}, 0.15}, 2000, &object, &truth, nullptr, &shadow);
+  const IlluminationMapResult r = map.Detect(frame);
+  ASSERT_GT(r.coverage, 0.9);
+  const cv::Mat background = ~truth & ~shadow & r.viewpoint.covered;
+  const double on_object = cv::mean(r.novelty.novelty, truth & r.viewpoint.covered)[0];
+  const double on_shadow = cv::mean(r.novelty.novelty, shadow & r.viewpoint.covered)[0];
+  const double elsewhere = cv::mean(r.novelty.novelty, background)[0];
+  EXPECT_GT(on_object, 3.0 * elsewhere) << on_object << " vs " << elsewhere;
+  EXPECT_GT(on_object, on_shadow) << on_object << " vs shadow " << on_shadow;
+  EXPECT_TRUE(cv::checkRange(r.novelty.novelty));
+}
+
+TEST(IlluminationMap, AFrameNoViewpointFacesHasNoCoverage) {
+  const IlluminationMap map = Learnt();
+  core::Frame frame = Render(0.1, kLightings[0], 3000);
+  frame.T_world_cam = Eigen::Isometry3d(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitY()));
+  const IlluminationMapResult r = map.Detect(frame);
+  EXPECT_EQ(r.coverage, 0.0);
+  EXPECT_TRUE(r.viewpoints.empty());
+  EXPECT_TRUE(r.novelty.novelty.empty());
+}
+
+TEST(IlluminationMap, BadInputIsAClearError) {
+  IlluminationMap one;
+  one.BeginLighting();
+  for (int k = 0; k < 3; ++k) one.AddTrainingFrame(Render(0.02 * k, kLightings[0], k + 1));
+  EXPECT_THROW(one.Build(), std::invalid_argument);  // a single lighting
+
+  IlluminationMap map;
+  EXPECT_THROW(map.Detect(Render(0, kLightings[0], 1)), std::logic_error);  // before Build
+  core::Frame no_pose = Render(0, kLightings[0], 7);
+  no_pose.T_world_cam.reset();
+  try {
+    map.AddTrainingFrame(no_pose);
+    FAIL() << "a frame without pose was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("frame 7"), std::string::npos) << e.what();
+  }
+  core::Frame no_depth = Render(0, kLightings[0], 8);
+  no_depth.depth.release();
+  EXPECT_THROW(map.AddTrainingFrame(no_depth), std::invalid_argument);
+  map.AddTrainingFrame(Render(0, kLightings[0], 9));
+  core::Frame small = Render(0, kLightings[0], 10);
+  small.camera.width = 80;
+  cv::resize(small.rgb, small.rgb, {80, 120});
+  cv::resize(small.depth, small.depth, {80, 120});
+  EXPECT_THROW(map.AddTrainingFrame(small), std::invalid_argument);
+  map.BeginLighting();
+  EXPECT_THROW(map.BeginLighting(), std::invalid_argument);  // lighting 1 had no frames
+
+  const IlluminationMap built = Learnt();
+  core::Frame wrong_size = Render(0, kLightings[0], 11);
+  cv::resize(wrong_size.rgb, wrong_size.rgb, {80, 60});
+  EXPECT_THROW(built.Detect(wrong_size), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace novelty::illumination
