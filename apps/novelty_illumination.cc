@@ -1,20 +1,31 @@
-// novelty-illumination: the experiments of thesis 6.4 at a static viewpoint — learn the
-// illumination-invariant image and the illumination statistics from the training frames
-// (6.1.2, 6.2), then measure novelty in the test frames (6.3) against the two baselines,
-// normalised gradient correlation and the spherical coordinate transform (2.4, 6.4), each against
-// one reference image from the training frames, as the thesis compares them.
+// novelty-illumination: the experiments of thesis 6.4 — learn the illumination-invariant map from
+// training frames under several lightings (6.1, 6.2), then measure novelty in the test frames
+// (6.3) against the two baselines, normalised gradient correlation and the spherical coordinate
+// transform (2.4, 6.4), each against one reference image of the first lighting, as the thesis
+// compares them.
 //
 //   novelty-illumination --rawlog IN.rawlog --groundtruth DIR --out OUT
 //       [--train-phase training] [--test-phase test] [--reference-frame F] [--kappa 0.2]
-//       [--colour per-channel|luminance-chromaticity] [--max-order 120]
+//       [--colour per-channel|luminance-chromaticity] [--max-order 20] [--grid 32]
+//       [--shape-scale frame|empty] [--viewpoint-distance 0.05]
 //
+// Two kinds of experiment, told apart by --train-phase:
+// - one phase (the washing machine, the plate): a static camera, each training frame a lighting,
+//   one viewpoint; the baselines' reference is --reference-frame (default the first).
+// - several phases, comma-separated (the table scene, the specular scene: I1,I2,...): a moving
+//   camera, each phase one lighting's sequence, learnt into the illumination-invariant map at
+//   common viewpoints (maps/illumination/illumination_map.h) with the ground truth's camera poses
+//   (a tracker's: one frame for all sequences, 6.1.1) and the rawlog's depth, or the ground
+//   truth's where the rawlog has none (stereo rigs: novelty-depth makes it from the images). The
+//   baselines' reference is a virtual image of the first sequence at each test frame's pose.
 // The phases come from the ground truth (novelty-sim's scenarios name them). OUT gets panels/
-// (camera, invariant image, novelty Δ, NGC 1 - ρ, SCT distance, ground truth per test frame),
-// roc.csv, findings.csv and report.html: pixel ROC of each method over the test frames (the
-// simulator's novelty masks are the truth; pixels the invariant image does not cover are left
-// out), TPR at FPR 1 % and 5 %, AUC, and the share of the lighting-only change (pixels outside
-// the object whose intensity differs from the reference image by more than 25 %: shadows,
-// highlights) each method flags at the threshold that finds 90 % of the object.
+// (camera, reference, invariant image, novelty Δ, NGC 1 - ρ, SCT distance, ground truth per test
+// frame), roc.csv, findings.csv and report.html: pixel ROC of each method over the test frames (the
+// simulator's novelty masks are the truth; pixels the invariant image or a reference does not
+// cover are left out and counted), TPR at FPR 1 % and 5 %, AUC, and the share of the
+// lighting-only change (pixels outside the object whose intensity differs from the reference by
+// more than 25 %: shadows, highlights) each method flags at the threshold that finds 90 % of the
+// object. The baselines are also scored against every other lighting as the reference.
 #include <tclap/CmdLine.h>
 
 #include <algorithm>
@@ -25,6 +36,7 @@
 #include <fstream>
 #include <map>
 #include <opencv2/imgproc.hpp>
+#include <sstream>
 
 #include "apps/command_line.h"
 #include "core/false_color.h"
@@ -35,11 +47,14 @@
 #include "eval/roc.h"
 #include "eval/side_by_side.h"
 #include "maps/illumination/gradient_correlation.h"
+#include "maps/illumination/illumination_map.h"
 #include "maps/illumination/illumination_model.h"
 #include "maps/illumination/illumination_novelty.h"
 #include "maps/illumination/invariant_image.h"
 #include "maps/illumination/spherical_color_change.h"
+#include "maps/views/view_synthesis.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
+#include "sensors/rawlog/rig_frame_reader.h"
 #include "sim/output/ground_truth_format.h"
 #include "sim/output/ground_truth_reader.h"
 
@@ -47,11 +62,6 @@ using namespace novelty;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Method {
-  std::string name, colour;
-  std::vector<double> scores;  // per evaluated pixel of all test frames
-};
 
 const sim::GroundTruthReader::Phase& FindPhase(const sim::GroundTruthReader& truth,
                                                const std::string& name) {
@@ -63,29 +73,465 @@ const sim::GroundTruthReader::Phase& FindPhase(const sim::GroundTruthReader& tru
                               "/events.csv (phases: " + (known.empty() ? "none" : known) + ")");
 }
 
+std::vector<std::string> SplitList(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream ss(list);
+  for (std::string item; std::getline(ss, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
 std::string Percent(double v) {
   return cv::format("%.1f %%", 100.0 * v);
+}
+
+// One test frame as the evaluation sees it.
+struct TestFrame {
+  int index = 0;
+  cv::Mat image, novelty, truth;
+  cv::Mat evaluated;  // CV_8UC1: the pixels scored (covered by the invariant and every reference)
+  cv::Mat invariant;  // CV_8UC3, for the panel
+  std::vector<cv::Mat> references;  // [0] the baselines' reference; the others for comparison
+};
+
+struct Method {
+  std::string name, colour;
+  std::vector<double> scores;  // per evaluated pixel of all test frames
+};
+
+// Everything scored over the test frames.
+struct Evaluation {
+  // Names as findings.csv spells them: novelty Δ (eq. 6.24), NGC's 1 - ρ, SCT's distance.
+  std::vector<Method> methods = {
+      {"novelty", "#d62728", {}}, {"NGC", "#1f77b4", {}}, {"SCT", "#2ca02c", {}}};
+  std::vector<bool> positive, lighting_only;
+  /// alternatives[k][r]: baseline k (0 NGC, 1 SCT) against reference r, same pixels.
+  std::vector<std::vector<std::vector<double>>> alternatives{2};
+  long candidate_pixels = 0;  // pixels of the test frames, scored or not
+  int tested = 0;
+  double detect_seconds = 0.0;
+};
+
+cv::Mat Baseline(int k, const cv::Mat& image, const cv::Mat& reference) {
+  return k == 0 ? illumination::GradientCorrelationChange(image, reference)
+                : illumination::SphericalColorChange(image, reference);
+}
+
+// Scores one test frame and writes its panel.
+void Score(const TestFrame& t, Evaluation& e, eval::HtmlReport& report, const fs::path& dir) {
+  const cv::Mat& reference = t.references.front();
+  const cv::Mat maps[3] = {t.novelty, Baseline(0, t.image, reference),
+                           Baseline(1, t.image, reference)};
+  cv::Mat relative;
+  const cv::Mat grey_obs = core::ChannelMean(t.image),
+                grey_ref = core::ChannelMean(reference) + 1.0f;
+  cv::divide(cv::abs(grey_obs - grey_ref + 1.0f), grey_ref, relative);
+  e.alternatives[0].resize(t.references.size());
+  e.alternatives[1].resize(t.references.size());
+  std::vector<cv::Mat> others[2];
+  for (int k = 0; k < 2; ++k)
+    for (std::size_t r = 1; r < t.references.size(); ++r)
+      others[k].push_back(Baseline(k, t.image, t.references[r]));
+  e.candidate_pixels += long(t.image.total());
+  for (int y = 0; y < t.image.rows; ++y)
+    for (int x = 0; x < t.image.cols; ++x) {
+      if (!t.evaluated.at<uchar>(y, x)) continue;
+      // Added and removed objects are both novelty (the thesis's table scene: a roll gone).
+      const bool changed = t.truth.at<uchar>(y, x) != 0;
+      e.positive.push_back(changed);
+      e.lighting_only.push_back(!changed && relative.at<float>(y, x) > 0.25f);
+      for (int k = 0; k < 3; ++k) e.methods[k].scores.push_back(maps[k].at<float>(y, x));
+      for (int k = 0; k < 2; ++k) {
+        e.alternatives[k][0].push_back(maps[k + 1].at<float>(y, x));
+        for (std::size_t r = 1; r < t.references.size(); ++r)
+          e.alternatives[k][r].push_back(others[k][r - 1].at<float>(y, x));
+      }
+    }
+  // Δ spans decades: shown up to its 99th percentile in the frame.
+  cv::Mat sorted = t.novelty.clone().reshape(1, 1);
+  cv::sort(sorted, sorted, cv::SORT_ASCENDING);
+  const double max_novelty = sorted.at<float>(0, int(sorted.cols * 0.99));
+  cv::Mat truth_rgb;
+  cv::cvtColor(t.truth, truth_rgb, cv::COLOR_GRAY2RGB);
+  truth_rgb.setTo(cv::Scalar(90, 90, 90), ~t.evaluated & (t.truth == 0));  // the thesis's grey
+  const std::string panel = cv::format("panels/%06d.png", t.index);
+  core::WriteRgbImage(
+      (dir / panel).string(),
+      eval::SideBySide(
+          {t.image, reference, t.invariant, core::FalseColor(maps[0], std::max(1e-6, max_novelty)),
+           core::FalseColor(maps[1], 1.0), core::FalseColor(maps[2], 0.5), truth_rgb},
+          4,
+          {cv::format("frame %d", t.index), "reference", "invariant image", "novelty (6.3)",
+           "NGC 1 - rho", "SCT distance", "ground truth (grey: not scored)"}));
+  report.Image(panel, cv::format("test frame %d", t.index));
+  ++e.tested;
+}
+
+cv::Mat Panel8(const cv::Mat& log_invariant, const cv::Mat& covered) {
+  cv::Mat r8;
+  illumination::LinearImage(log_invariant, covered).convertTo(r8, CV_8UC3);
+  return r8;
+}
+
+struct Learnt {
+  std::string summary;  // for the report: what was learnt
+  std::vector<std::pair<std::string, std::string>> findings;
+};
+
+// Writes roc.csv, findings.csv and report.html; prints the table.
+void Finish(const Evaluation& e, const Learnt& learnt, const std::string& lightings_name,
+            double learn_seconds, const fs::path& dir, eval::HtmlReport& report) {
+  std::vector<eval::Roc> rocs;
+  for (const Method& m : e.methods) rocs.push_back(eval::ComputeRoc(m.scores, e.positive));
+  std::ofstream findings(dir / "findings.csv");
+  findings << "finding,value,target,holds\n";
+  std::vector<std::vector<std::string>> rows;
+  std::vector<eval::PlotSeries> curves;
+  for (size_t k = 0; k < e.methods.size(); ++k) {
+    const eval::Roc& roc = rocs[k];
+    // Lighting-only change flagged at the threshold that finds 90 % of the object.
+    double threshold = -INFINITY;
+    for (const auto& p : roc.points)
+      if (p.tpr >= 0.9) {
+        threshold = p.threshold;
+        break;
+      }
+    long flagged = 0, lighting = 0;
+    for (size_t j = 0; j < e.positive.size(); ++j)
+      if (e.lighting_only[j]) ++lighting, flagged += e.methods[k].scores[j] >= threshold;
+    const double lighting_share = lighting ? double(flagged) / lighting : 0.0;
+    const std::string& name = e.methods[k].name;
+    rows.push_back({name, Percent(roc.TprAtFpr(0.01)), Percent(roc.TprAtFpr(0.05)),
+                    Percent(roc.TprAtFpr(0.10)), cv::format("%.3f", roc.auc),
+                    Percent(lighting_share)});
+    findings << name << ": TPR at FPR <= 1 %," << Percent(roc.TprAtFpr(0.01)) << ",(reported),\n"
+             << name << ": TPR at FPR <= 5 %," << Percent(roc.TprAtFpr(0.05)) << ",(reported),\n"
+             << name << ": AUC," << roc.auc << "," << (k == 0 ? ">= 0.95," : "(reported),")
+             << (k == 0 ? (roc.auc >= 0.95 ? "yes" : "no") : "") << "\n"
+             << name << ": lighting-only change flagged at TPR 90 %," << Percent(lighting_share)
+             << ",(reported),\n";
+    eval::PlotSeries s{name, e.methods[k].colour, {}, 0.0};
+    for (const auto& p : roc.points) s.points.push_back({p.fpr, p.tpr});
+    curves.push_back(s);
+  }
+  // Ahead of both baselines at every FPR ≤ 10 % (0.1 % steps).
+  bool ahead = true;
+  double first_behind = NAN;
+  for (int step = 1; step <= 100; ++step) {
+    const double fpr = step / 1000.0;
+    const double mine = rocs[0].TprAtFpr(fpr);
+    const double best = std::max(rocs[1].TprAtFpr(fpr), rocs[2].TprAtFpr(fpr));
+    if (!(mine > best || (mine == 1.0 && best == 1.0))) {
+      ahead = false;
+      first_behind = fpr;
+      break;
+    }
+  }
+  const double scored_share = double(e.positive.size()) / double(std::max(1L, e.candidate_pixels));
+  findings << "novelty TPR above NGC and SCT at every FPR <= 10 % (0.1 % steps),"
+           << (ahead ? "yes" : cv::format("no (from FPR %.1f %%)", 100 * first_behind)) << ",yes,"
+           << (ahead ? "yes" : "no") << "\n"
+           << "test frames," << e.tested << ",,\n"
+           << "evaluated pixels," << e.positive.size() << ",,\n"
+           << "evaluated share of the test frames' pixels," << Percent(scored_share) << ",,\n"
+           << "object pixels," << rocs[0].positives << ",,\n";
+  for (const auto& [name, value] : learnt.findings) findings << name << "," << value << ",,\n";
+  findings << "learning seconds," << learn_seconds << ",,\n"
+           << "detection ms per frame," << 1000.0 * e.detect_seconds / e.tested << ",,\n";
+  // The baselines against every lighting as the reference: how much their result depends on the
+  // one reference the thesis picks, and whether the novelty leads their best.
+  const std::vector<double> lead_fprs = {0.01, 0.05};
+  for (int k = 0; k < 2; ++k) {
+    double auc_min = 1.0, auc_max = 0.0;
+    std::vector<double> best_tpr(lead_fprs.size(), 0.0);
+    for (const auto& scores : e.alternatives[k]) {
+      const eval::Roc roc = eval::ComputeRoc(scores, e.positive);
+      auc_min = std::min(auc_min, roc.auc);
+      auc_max = std::max(auc_max, roc.auc);
+      for (size_t f = 0; f < lead_fprs.size(); ++f)
+        best_tpr[f] = std::max(best_tpr[f], roc.TprAtFpr(lead_fprs[f]));
+    }
+    const std::string& name = e.methods[k + 1].name;
+    findings << name << " over the " << e.alternatives[k].size() << " " << lightings_name
+             << " as reference: AUC," << cv::format("%.3f to %.3f", auc_min, auc_max)
+             << ",(reported),\n";
+    for (size_t f = 0; f < lead_fprs.size(); ++f) {
+      const double mine = rocs[0].TprAtFpr(lead_fprs[f]);
+      findings << "novelty TPR above " << name
+               << "'s best reference at FPR <= " << 100 * lead_fprs[f] << " %," << Percent(mine)
+               << " vs " << Percent(best_tpr[f]) << ",(reported),"
+               << (mine > best_tpr[f] || (mine == 1.0 && best_tpr[f] == 1.0) ? "yes" : "no")
+               << "\n";
+    }
+  }
+  {
+    std::ofstream roc_csv(dir / "roc.csv");
+    roc_csv << "fpr,tpr_novelty,tpr_ngc,tpr_sct\n";
+    for (int step = 0; step <= 1000; ++step) {
+      const double fpr = step / 1000.0;
+      roc_csv << fpr << "," << rocs[0].TprAtFpr(fpr) << "," << rocs[1].TprAtFpr(fpr) << ","
+              << rocs[2].TprAtFpr(fpr) << "\n";
+    }
+  }
+  report.Heading("ROC over the test frames' pixels");
+  report.Raw(eval::SvgLinePlot("ROC", "FPR", "TPR", curves));
+  report.Table({"method", "TPR at FPR 1 %", "TPR at FPR 5 %", "TPR at FPR 10 %", "AUC",
+                "lighting-only change flagged at TPR 90 %"},
+               rows);
+  report.Paragraph(cv::format(
+      "%d test frames, %zu evaluated pixels (%s of the frames' pixels; %d on the object); %s; "
+      "novelty ahead of both baselines at every FPR <= 10 %%: %s.",
+      e.tested, e.positive.size(), Percent(scored_share).c_str(), rocs[0].positives,
+      learnt.summary.c_str(), ahead ? "yes" : "no"));
+  report.Save((dir / "report.html").string());
+  for (const auto& r : rows)
+    std::printf("%-24s TPR@1%% %s  TPR@5%% %s  TPR@10%% %s  AUC %s  lighting flagged %s\n",
+                r[0].c_str(), r[1].c_str(), r[2].c_str(), r[3].c_str(), r[4].c_str(), r[5].c_str());
+  std::printf(
+      "ahead of both at every FPR <= 10 %%: %s; %s of pixels scored; %.1f ms per test "
+      "frame → %s\n",
+      ahead ? "yes" : "no", Percent(scored_share).c_str(), 1000.0 * e.detect_seconds / e.tested,
+      (dir / "report.html").c_str());
+}
+
+cv::Mat NoveltyTruth(const sim::GroundTruthReader& truth, int frame, cv::Size size) {
+  cv::Mat t = truth.Novelty(frame);
+  if (t.empty() || t.size() != size)
+    throw std::invalid_argument(truth.dir() + ": frame " + std::to_string(frame) +
+                                " has no novelty mask of the images' size");
+  return t;
+}
+
+// Frames of a rawlog by index: RGB-D frames, or the reference camera of stereo and trinocular
+// rigs (no depth: the caller takes the ground truth's). Only frames `wanted` returns true for.
+template <typename Wanted>
+std::map<int, core::Frame> ReadFrames(const std::string& rawlog, Wanted wanted) {
+  std::map<int, core::Frame> frames;
+  sensors::RawlogFrameReader reader(rawlog);
+  for (core::Frame f; reader.Next(f);)
+    if (wanted(f.index)) frames[f.index] = f;
+  if (!frames.empty()) return frames;
+  sensors::RigFrameReader rigs(rawlog);
+  for (sensors::RigFrame r; rigs.Next(r, nullptr);) {
+    if (!wanted(r.index)) continue;
+    core::Frame& f = frames[r.index];
+    f.index = r.index;
+    f.time = r.time;
+    f.rgb = r.images.front();
+    f.camera = r.cameras.front();
+  }
+  return frames;
+}
+
+struct Settings {
+  illumination::InvariantImageOptions invariant;
+  illumination::IlluminationModelOptions model;
+  illumination::ZernikeOptions zernike;
+  illumination::IlluminationNoveltyOptions novelty;
+  double viewpoint_distance = 0.05;
+};
+
+// One viewpoint, each training frame a lighting (6.4.1 washing machine, 6.4.2 plate).
+double RunStatic(const std::string& rawlog, const sim::GroundTruthReader& truth,
+                 const sim::GroundTruthReader::Phase& train,
+                 const sim::GroundTruthReader::Phase& test, std::optional<int> reference_frame,
+                 const Settings& settings, const fs::path& dir, eval::HtmlReport& report,
+                 Evaluation& e, Learnt& learnt) {
+  std::map<int, core::Frame> frames = ReadFrames(rawlog, [&](int i) {
+    return (i >= train.first && i <= train.last) || (i >= test.first && i <= test.last) ||
+           (reference_frame && i == *reference_frame);
+  });
+  std::vector<cv::Mat> training;
+  for (int i = train.first; i <= train.last; ++i)
+    if (frames.count(i)) training.push_back(frames[i].rgb);
+  if (training.size() < 2)
+    throw std::invalid_argument(rawlog + ": " + std::to_string(training.size()) +
+                                " training frame(s) in phase '" + train.name +
+                                "'; a single lighting gives no invariant image");
+  const int ref_index = reference_frame.value_or(train.first);
+  if (!frames.count(ref_index))
+    throw std::invalid_argument("--reference-frame " + std::to_string(ref_index) +
+                                " is not a frame of " + rawlog);
+  const auto start = std::chrono::steady_clock::now();
+  const illumination::InvariantImage invariant =
+      illumination::ComputeInvariantImage(training, {}, settings.invariant);
+  const illumination::ZernikeMoments zernike(settings.zernike);
+  const illumination::ViewpointIllumination viewpoint = illumination::MakeViewpoint(
+      invariant, illumination::LearnIlluminationModel(invariant, {}, settings.model),
+      settings.novelty.min_region_pixels, &zernike);
+  const double learn_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::fprintf(stderr,
+               "[novelty-illumination] learnt from %zu frames: T_Y %.2f, %zu stored shapes\n",
+               training.size(), viewpoint.model.threshold, viewpoint.shapes.size());
+  // The thesis's reference first, then every training frame.
+  std::vector<cv::Mat> references = {frames[ref_index].rgb};
+  for (int i = train.first; i <= train.last; ++i)
+    if (frames.count(i) && i != ref_index) references.push_back(frames[i].rgb);
+  const cv::Mat invariant8 = Panel8(invariant.log_invariant, invariant.covered);
+  for (int i = test.first; i <= test.last; ++i) {
+    if (!frames.count(i)) continue;
+    TestFrame t;
+    t.index = i;
+    t.image = frames[i].rgb;
+    t.truth = NoveltyTruth(truth, i, t.image.size());
+    const auto t0 = std::chrono::steady_clock::now();
+    const illumination::IlluminationNovelty n =
+        illumination::DetectIlluminationNovelty(t.image, viewpoint, zernike, settings.novelty);
+    e.detect_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    t.novelty = n.novelty;
+    t.evaluated = invariant.covered;
+    t.invariant = invariant8;
+    t.references = references;
+    Score(t, e, report, dir);
+    std::fprintf(stderr, "\r[novelty-illumination] test frame %d: %d regions, %d matched   ", i,
+                 n.region_count, n.matched_count);
+  }
+  learnt.summary = cv::format("learnt from %zu frames, T_Y %.2f, %zu stored shapes",
+                              training.size(), viewpoint.model.threshold, viewpoint.shapes.size());
+  learnt.findings = {{"stored shapes", std::to_string(viewpoint.shapes.size())}};
+  return learn_seconds;
+}
+
+// A moving camera, each phase one lighting's sequence (6.4.1 table scene, 6.4.2 specular scene).
+double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
+                 const std::vector<const sim::GroundTruthReader::Phase*>& train,
+                 const sim::GroundTruthReader::Phase& test, const Settings& settings,
+                 const fs::path& dir, eval::HtmlReport& report, Evaluation& e, Learnt& learnt) {
+  auto phase_of = [&](int i) -> int {
+    for (std::size_t m = 0; m < train.size(); ++m)
+      if (i >= train[m]->first && i <= train[m]->last) return int(m);
+    return i >= test.first && i <= test.last ? int(train.size()) : -1;
+  };
+  std::map<int, core::Frame> frames = ReadFrames(rawlog, [&](int i) { return phase_of(i) >= 0; });
+  int depth_from_truth = 0;
+  for (auto& [i, f] : frames) {
+    const auto pose = truth.CameraPoses().find(i);
+    if (pose == truth.CameraPoses().end())
+      throw std::invalid_argument(truth.dir() + ": no camera pose for frame " + std::to_string(i));
+    f.T_world_cam = pose->second;
+    f.pose_source = "groundtruth";
+    if (f.depth.empty()) {
+      f.depth = truth.Depth(i);
+      ++depth_from_truth;
+      if (f.depth.size() != f.rgb.size())
+        throw std::invalid_argument(truth.dir() + ": frame " + std::to_string(i) +
+                                    " has no depth map of the image's size");
+    }
+  }
+  illumination::IlluminationMapOptions options;
+  options.invariant = settings.invariant;
+  options.model = settings.model;
+  options.zernike = settings.zernike;
+  options.novelty = settings.novelty;
+  options.viewpoint_distance = settings.viewpoint_distance;
+  illumination::IlluminationMap map(options);
+  // Each lighting's frames as reference views: the baselines' references are rendered from them.
+  std::vector<std::vector<views::ReferenceView>> sequences(train.size());
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t m = 0; m < train.size(); ++m) {
+    map.BeginLighting();
+    for (int i = train[m]->first; i <= train[m]->last; ++i) {
+      if (!frames.count(i)) continue;
+      map.AddTrainingFrame(frames[i]);
+      sequences[m].push_back(views::ReferenceViewOf(frames[i]));
+    }
+    if (sequences[m].empty())
+      throw std::invalid_argument(rawlog + ": no frame of phase '" + train[m]->name + "'");
+    std::fprintf(stderr, "\r[novelty-illumination] lighting %zu/%zu: %zu frames   ", m + 1,
+                 train.size(), sequences[m].size());
+  }
+  std::fprintf(stderr, "\n[novelty-illumination] invariant images at the viewpoints ...\n");
+  map.Build();
+  const double learn_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  double coverage = 0.0;
+  for (int v = 0; v < map.size(); ++v) coverage += map.model(v).coverage / map.size();
+  std::fprintf(stderr,
+               "[novelty-illumination] %d viewpoints (%d dropped), mean coverage %.1f %%, "
+               "%.1f MB, %.1f s\n",
+               map.size(), map.dropped_viewpoints(), 100 * coverage, map.BytesUsed() / 1e6,
+               learn_seconds);
+  std::vector<std::vector<Eigen::Isometry3d>> poses(train.size());
+  for (std::size_t m = 0; m < train.size(); ++m)
+    for (const auto& v : sequences[m]) poses[m].push_back(v.T_world_cam);
+  views::DepthMeshWarper warper(options.synthesis.warp,
+                                views::WarpOutputsFor(options.synthesis.blend));
+  double frame_coverage = 0.0;
+  for (int i = test.first; i <= test.last; ++i) {
+    if (!frames.count(i)) continue;
+    const core::Frame& f = frames[i];
+    TestFrame t;
+    t.index = i;
+    t.image = f.rgb;
+    t.truth = NoveltyTruth(truth, i, t.image.size());
+    const auto t0 = std::chrono::steady_clock::now();
+    const illumination::IlluminationMapResult r = map.Detect(f);
+    e.detect_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    frame_coverage += r.coverage;
+    t.evaluated =
+        r.coverage > 0.0 ? r.viewpoint.covered.clone() : cv::Mat::zeros(t.image.size(), CV_8UC1);
+    t.novelty = r.coverage > 0.0 ? r.novelty.novelty : cv::Mat::zeros(t.image.size(), CV_32F);
+    t.invariant = r.coverage > 0.0 ? Panel8(r.viewpoint.log_invariant, r.viewpoint.covered)
+                                   : cv::Mat::zeros(t.image.size(), CV_8UC3);
+    // Each sequence's virtual image at this pose: the first is the baselines' reference.
+    for (std::size_t m = 0; m < train.size(); ++m) {
+      const views::ViewSelection sel =
+          views::SelectViewsForRays(poses[m], f.camera, *f.T_world_cam, options.selection);
+      std::vector<const views::ReferenceView*> chosen;
+      for (int k : sel.views) chosen.push_back(&sequences[m][std::size_t(k)]);
+      if (chosen.empty()) {
+        t.references.push_back(cv::Mat::zeros(t.image.size(), CV_8UC3));
+        t.evaluated.setTo(0);
+        continue;
+      }
+      const views::SynthesisResult s =
+          views::SynthesiseView(warper, chosen, {}, sel.Weights(options.selection), f.camera,
+                                *f.T_world_cam, options.synthesis);
+      t.references.push_back(s.rgb);
+      t.evaluated &= s.valid;
+    }
+    Score(t, e, report, dir);
+    std::fprintf(stderr, "\r[novelty-illumination] test frame %d: %zu viewpoints, %.0f %% covered ",
+                 i, r.viewpoints.size(), 100 * r.coverage);
+  }
+  learnt.summary =
+      cv::format("%zu lightings, %d viewpoints (%d dropped), mean viewpoint coverage %.1f %%",
+                 train.size(), map.size(), map.dropped_viewpoints(), 100 * coverage);
+  learnt.findings = {{"lightings", std::to_string(train.size())},
+                     {"viewpoints", std::to_string(map.size())},
+                     {"viewpoints dropped", std::to_string(map.dropped_viewpoints())},
+                     {"mean viewpoint coverage", Percent(coverage)},
+                     {"mean test-frame coverage of the interpolated invariant image",
+                      Percent(frame_coverage / std::max(1, e.tested))},
+                     {"frames with the ground truth's depth", std::to_string(depth_from_truth)},
+                     {"map MB", cv::format("%.1f", map.BytesUsed() / 1e6)}};
+  return learn_seconds;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
-    apps::CommandLine cmd(
-        "Novelty under changing light at a static viewpoint (thesis 6.4) against NGC and SCT.",
-        "0.1");
-    TCLAP::ValueArg<std::string> rawlog("", "rawlog", "Rawlog of the static camera", true, "",
-                                        "IN.rawlog", cmd);
+    apps::CommandLine cmd("Novelty under changing light (thesis 6.4) against NGC and SCT.", "0.1");
+    TCLAP::ValueArg<std::string> rawlog("", "rawlog", "Rawlog of the camera (RGB-D or stereo)",
+                                        true, "", "IN.rawlog", cmd);
     TCLAP::ValueArg<std::string> truth_dir("", "groundtruth", "Ground-truth folder", true, "",
                                            "DIR", cmd);
     TCLAP::ValueArg<std::string> out("o", "out", "Output folder", true, "", "OUT", cmd);
-    TCLAP::ValueArg<std::string> train_phase("", "train-phase", "Phase of the training frames",
-                                             false, "training", "NAME", cmd);
+    TCLAP::ValueArg<std::string> train_phase(
+        "", "train-phase",
+        "Phase of the training frames (static camera), or comma-separated phases, one per "
+        "lighting (moving camera)",
+        false, "training", "NAME[,NAME...]", cmd);
     TCLAP::ValueArg<std::string> test_phase("", "test-phase", "Phase of the test frames", false,
                                             "test", "NAME", cmd);
     TCLAP::ValueArg<int> reference_frame(
-        "", "reference-frame", "The baselines' reference image (default: first training frame)",
-        false, 0, "F", cmd);
+        "", "reference-frame",
+        "Static camera: the baselines' reference image (default: first training frame)", false, 0,
+        "F", cmd);
     TCLAP::ValueArg<double> kappa("", "kappa", "kappa of eq. 6.18 (0.2: specular scenes)", false,
                                   0.2, "K", cmd);
     std::vector<std::string> colours = {"per-channel", "luminance-chromaticity"};
@@ -104,243 +550,56 @@ int main(int argc, char** argv) {
         false, "frame", &scale_names, cmd);
     TCLAP::ValueArg<int> max_order("", "max-order", "Highest Zernike order (eq. 6.21)", false,
                                    zernike_defaults.max_order, "N", cmd);
+    const illumination::IlluminationMapOptions map_defaults;
+    TCLAP::ValueArg<double> viewpoint_distance(
+        "", "viewpoint-distance",
+        "Moving camera: metres between the map's viewpoints along the first lighting's path", false,
+        map_defaults.viewpoint_distance, "M", cmd);
     cmd.Parse(argc, argv);
     if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
       throw std::invalid_argument("--kappa must be in [0, 1)");
     core::CheckInRange(max_order.getValue(), 0, 200, "--max-order");
     core::CheckInRange(grid.getValue(), 2, 512, "--grid");
-    illumination::IlluminationNoveltyOptions novelty_options;
-    novelty_options.shape_scale =
+    if (!(viewpoint_distance.getValue() >= 0.0))
+      throw std::invalid_argument("--viewpoint-distance must be >= 0");
+    Settings settings;
+    settings.novelty.shape_scale =
         shape_scale.getValue() == "frame"
             ? illumination::IlluminationNoveltyOptions::ShapeScale::kFrameMaximum
             : illumination::IlluminationNoveltyOptions::ShapeScale::kEmptyShape;
+    settings.invariant.colour =
+        colour.getValue() == "per-channel"
+            ? illumination::InvariantImageOptions::Colour::kPerChannel
+            : illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
+    settings.model.kappa = kappa.getValue();
+    settings.zernike.max_order = max_order.getValue();
+    settings.zernike.grid = grid.getValue();
+    settings.viewpoint_distance = viewpoint_distance.getValue();
 
     const sim::GroundTruthReader truth(truth_dir.getValue());
-    const auto& train = FindPhase(truth, train_phase.getValue());
+    const std::vector<std::string> train_names = SplitList(train_phase.getValue());
+    if (train_names.empty()) throw std::invalid_argument("--train-phase names no phase");
+    std::vector<const sim::GroundTruthReader::Phase*> train;
+    for (const std::string& name : train_names) train.push_back(&FindPhase(truth, name));
     const auto& test = FindPhase(truth, test_phase.getValue());
-    std::map<int, cv::Mat> frames;
-    sensors::RawlogFrameReader reader(rawlog.getValue());
-    for (core::Frame f; reader.Next(f);) frames[f.index] = f.rgb;
-    std::vector<cv::Mat> training;
-    for (int i = train.first; i <= train.last; ++i)
-      if (frames.count(i)) training.push_back(frames[i]);
-    if (training.size() < 2)
-      throw std::invalid_argument(rawlog.getValue() + ": " + std::to_string(training.size()) +
-                                  " training frame(s) in phase '" + train.name +
-                                  "'; a single lighting gives no invariant image");
-    const int ref_index = reference_frame.isSet() ? reference_frame.getValue() : train.first;
-    if (!frames.count(ref_index))
-      throw std::invalid_argument("--reference-frame " + std::to_string(ref_index) +
-                                  " is not a frame of " + rawlog.getValue());
-    const cv::Mat reference = frames[ref_index];
-
-    const auto start = std::chrono::steady_clock::now();
-    illumination::InvariantImageOptions inv_options;
-    inv_options.colour = colour.getValue() == "per-channel"
-                             ? illumination::InvariantImageOptions::Colour::kPerChannel
-                             : illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
-    const illumination::InvariantImage invariant =
-        illumination::ComputeInvariantImage(training, {}, inv_options);
-    illumination::IlluminationModelOptions model_options;
-    model_options.kappa = kappa.getValue();
-    illumination::ZernikeOptions zernike_options;
-    zernike_options.max_order = max_order.getValue();
-    zernike_options.grid = grid.getValue();
-    const illumination::ZernikeMoments zernike(zernike_options);
-    const illumination::ViewpointIllumination viewpoint = illumination::MakeViewpoint(
-        invariant, illumination::LearnIlluminationModel(invariant, {}, model_options),
-        novelty_options.min_region_pixels, &zernike);
-    std::fprintf(stderr,
-                 "[novelty-illumination] learnt from %zu frames: T_Y %.2f, %zu stored shapes\n",
-                 training.size(), viewpoint.model.threshold, viewpoint.shapes.size());
 
     const fs::path dir = out.getValue();
     fs::create_directories(dir / "panels");
-    // Names as findings.csv spells them: novelty Δ (eq. 6.24), NGC's 1 - ρ, SCT's distance.
-    std::vector<Method> methods = {
-        {"novelty", "#d62728", {}}, {"NGC", "#1f77b4", {}}, {"SCT", "#2ca02c", {}}};
-    std::vector<bool> positive, lighting_only;
-    std::vector<int> test_frames;
-    std::map<int, cv::Mat> truths;
     eval::HtmlReport report("novelty-illumination: " + rawlog.getValue());
-    double detect_seconds = 0.0;
-    int tested = 0;
-    for (int i = test.first; i <= test.last; ++i) {
-      if (!frames.count(i)) continue;
-      const cv::Mat novelty_truth = truth.Novelty(i);
-      if (novelty_truth.empty() || novelty_truth.size() != reference.size())
-        throw std::invalid_argument(truth.dir() + ": frame " + std::to_string(i) +
-                                    " has no novelty mask of the images' size");
-      const auto t0 = std::chrono::steady_clock::now();
-      const illumination::IlluminationNovelty n =
-          illumination::DetectIlluminationNovelty(frames[i], viewpoint, zernike, novelty_options);
-      detect_seconds +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      ++tested;
-      test_frames.push_back(i);
-      truths[i] = novelty_truth;
-      const cv::Mat maps[3] = {n.novelty,
-                               illumination::GradientCorrelationChange(frames[i], reference),
-                               illumination::SphericalColorChange(frames[i], reference)};
-      cv::Mat relative;
-      cv::Mat grey_obs = core::ChannelMean(frames[i]),
-              grey_ref = core::ChannelMean(reference) + 1.0f;
-      cv::divide(cv::abs(grey_obs - grey_ref + 1.0f), grey_ref, relative);
-      for (int y = 0; y < reference.rows; ++y)
-        for (int x = 0; x < reference.cols; ++x) {
-          if (!invariant.covered.at<uchar>(y, x)) continue;
-          // Added and removed objects are both novelty (the thesis's table scene: a roll gone).
-          const bool changed = novelty_truth.at<uchar>(y, x) != 0;
-          positive.push_back(changed);
-          lighting_only.push_back(!changed && relative.at<float>(y, x) > 0.25f);
-          for (int k = 0; k < 3; ++k) methods[k].scores.push_back(maps[k].at<float>(y, x));
-        }
-      // Δ spans decades: shown up to its 99th percentile in the frame.
-      cv::Mat sorted = n.novelty.clone().reshape(1, 1);
-      cv::sort(sorted, sorted, cv::SORT_ASCENDING);
-      const double max_novelty = sorted.at<float>(0, int(sorted.cols * 0.99));
-      cv::Mat truth_rgb;
-      cv::cvtColor(novelty_truth, truth_rgb, cv::COLOR_GRAY2RGB);
-      cv::Mat r8;
-      illumination::LinearImage(invariant.log_invariant, invariant.covered).convertTo(r8, CV_8UC3);
-      const std::string panel = cv::format("panels/%06d.png", i);
-      core::WriteRgbImage(
-          (dir / panel).string(),
-          eval::SideBySide(
-              {frames[i], r8, core::FalseColor(maps[0], std::max(1e-6, max_novelty)),
-               core::FalseColor(maps[1], 1.0), core::FalseColor(maps[2], 0.5), truth_rgb},
-              4,
-              {cv::format("frame %d", i), "invariant image", "novelty (6.3)", "NGC 1 - rho",
-               "SCT distance", "ground truth"}));
-      report.Image(panel, cv::format("test frame %d", i));
-      std::fprintf(stderr, "\r[novelty-illumination] test frame %d: %d regions, %d matched   ", i,
-                   n.region_count, n.matched_count);
-    }
+    Evaluation e;
+    Learnt learnt;
+    const bool moving = train.size() > 1;
+    const double learn_seconds =
+        moving ? RunMoving(rawlog.getValue(), truth, train, test, settings, dir, report, e, learnt)
+               : RunStatic(rawlog.getValue(), truth, *train.front(), test,
+                           reference_frame.isSet() ? std::optional<int>(reference_frame.getValue())
+                                                   : std::nullopt,
+                           settings, dir, report, e, learnt);
     std::fprintf(stderr, "\n");
-    if (tested == 0)
+    if (e.tested == 0)
       throw std::invalid_argument("no test frame of phase '" + test.name + "' in " +
                                   rawlog.getValue());
-    const double learn_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
-        detect_seconds;
-
-    std::vector<eval::Roc> rocs;
-    for (const Method& m : methods) rocs.push_back(eval::ComputeRoc(m.scores, positive));
-    std::ofstream findings(dir / "findings.csv");
-    findings << "finding,value,target,holds\n";
-    std::vector<std::vector<std::string>> rows;
-    std::vector<eval::PlotSeries> curves;
-    for (size_t k = 0; k < methods.size(); ++k) {
-      const eval::Roc& roc = rocs[k];
-      // Lighting-only change flagged at the threshold that finds 90 % of the object.
-      double threshold = -INFINITY;
-      for (const auto& p : roc.points)
-        if (p.tpr >= 0.9) {
-          threshold = p.threshold;
-          break;
-        }
-      long flagged = 0, lighting = 0;
-      for (size_t j = 0; j < positive.size(); ++j)
-        if (lighting_only[j]) ++lighting, flagged += methods[k].scores[j] >= threshold;
-      const double lighting_share = lighting ? double(flagged) / lighting : 0.0;
-      rows.push_back({methods[k].name, Percent(roc.TprAtFpr(0.01)), Percent(roc.TprAtFpr(0.05)),
-                      Percent(roc.TprAtFpr(0.10)), cv::format("%.3f", roc.auc),
-                      Percent(lighting_share)});
-      findings << methods[k].name << ": TPR at FPR <= 1 %," << Percent(roc.TprAtFpr(0.01))
-               << ",(reported),\n"
-               << methods[k].name << ": TPR at FPR <= 5 %," << Percent(roc.TprAtFpr(0.05))
-               << ",(reported),\n"
-               << methods[k].name << ": AUC," << roc.auc << ","
-               << (k == 0 ? ">= 0.95," : "(reported),")
-               << (k == 0 ? (roc.auc >= 0.95 ? "yes" : "no") : "") << "\n"
-               << methods[k].name << ": lighting-only change flagged at TPR 90 %,"
-               << Percent(lighting_share) << ",(reported),\n";
-      eval::PlotSeries s{methods[k].name, methods[k].colour, {}, 0.0};
-      for (const auto& p : roc.points) s.points.push_back({p.fpr, p.tpr});
-      curves.push_back(s);
-    }
-    // Ahead of both baselines at every FPR ≤ 10 % (0.1 % steps).
-    bool ahead = true;
-    double first_behind = NAN;
-    for (int step = 1; step <= 100; ++step) {
-      const double fpr = step / 1000.0;
-      const double mine = rocs[0].TprAtFpr(fpr);
-      const double best = std::max(rocs[1].TprAtFpr(fpr), rocs[2].TprAtFpr(fpr));
-      if (!(mine > best || (mine == 1.0 && best == 1.0))) {
-        ahead = false;
-        first_behind = fpr;
-        break;
-      }
-    }
-    findings << "novelty TPR above NGC and SCT at every FPR <= 10 % (0.1 % steps),"
-             << (ahead ? "yes" : cv::format("no (from FPR %.1f %%)", 100 * first_behind)) << ",yes,"
-             << (ahead ? "yes" : "no") << "\n"
-             << "test frames," << tested << ",,\n"
-             << "evaluated pixels," << positive.size() << ",,\n"
-             << "object pixels," << rocs[0].positives << ",,\n"
-             << "stored shapes," << viewpoint.shapes.size() << ",,\n"
-             << "learning seconds," << learn_seconds << ",,\n"
-             << "detection ms per frame," << 1000.0 * detect_seconds / tested << ",,\n";
-    // The baselines against every training frame as the reference: how much their result depends
-    // on the one reference the thesis picks, and whether the novelty leads their best.
-    std::vector<double> lead_fprs = {0.01, 0.05};
-    for (int k = 1; k < 3; ++k) {
-      double auc_min = 1.0, auc_max = 0.0;
-      std::vector<double> best_tpr(lead_fprs.size(), 0.0);
-      for (const cv::Mat& ref : training) {
-        std::vector<double> scores;
-        for (int i : test_frames) {
-          const cv::Mat map = k == 1 ? illumination::GradientCorrelationChange(frames[i], ref)
-                                     : illumination::SphericalColorChange(frames[i], ref);
-          for (int y = 0; y < map.rows; ++y)
-            for (int x = 0; x < map.cols; ++x)
-              if (invariant.covered.at<uchar>(y, x)) scores.push_back(map.at<float>(y, x));
-        }
-        const eval::Roc roc = eval::ComputeRoc(scores, positive);
-        auc_min = std::min(auc_min, roc.auc);
-        auc_max = std::max(auc_max, roc.auc);
-        for (size_t f = 0; f < lead_fprs.size(); ++f)
-          best_tpr[f] = std::max(best_tpr[f], roc.TprAtFpr(lead_fprs[f]));
-      }
-      findings << methods[k].name << " over the " << training.size()
-               << " training frames as reference: AUC,"
-               << cv::format("%.3f to %.3f", auc_min, auc_max) << ",(reported),\n";
-      for (size_t f = 0; f < lead_fprs.size(); ++f) {
-        const double mine = rocs[0].TprAtFpr(lead_fprs[f]);
-        findings << "novelty TPR above " << methods[k].name
-                 << "'s best reference at FPR <= " << 100 * lead_fprs[f] << " %," << Percent(mine)
-                 << " vs " << Percent(best_tpr[f]) << ",(reported),"
-                 << (mine > best_tpr[f] || (mine == 1.0 && best_tpr[f] == 1.0) ? "yes" : "no")
-                 << "\n";
-      }
-    }
-    {
-      std::ofstream roc_csv(dir / "roc.csv");
-      roc_csv << "fpr,tpr_novelty,tpr_ngc,tpr_sct\n";
-      for (int step = 0; step <= 1000; ++step) {
-        const double fpr = step / 1000.0;
-        roc_csv << fpr << "," << rocs[0].TprAtFpr(fpr) << "," << rocs[1].TprAtFpr(fpr) << ","
-                << rocs[2].TprAtFpr(fpr) << "\n";
-      }
-    }
-    report.Heading("ROC over the test frames' pixels");
-    report.Raw(eval::SvgLinePlot("ROC", "FPR", "TPR", curves));
-    report.Table({"method", "TPR at FPR 1 %", "TPR at FPR 5 %", "TPR at FPR 10 %", "AUC",
-                  "lighting-only change flagged at TPR 90 %"},
-                 rows);
-    report.Paragraph(cv::format(
-        "%d test frames, %zu evaluated pixels (%d on the object); learnt from %zu frames, "
-        "T_Y %.2f, %zu stored shapes; novelty ahead of both baselines at every FPR <= 10 %%: %s.",
-        tested, positive.size(), rocs[0].positives, training.size(), viewpoint.model.threshold,
-        viewpoint.shapes.size(), ahead ? "yes" : "no"));
-    report.Save((dir / "report.html").string());
-    for (const auto& r : rows)
-      std::printf("%-24s TPR@1%% %s  TPR@5%% %s  TPR@10%% %s  AUC %s  lighting flagged %s\n",
-                  r[0].c_str(), r[1].c_str(), r[2].c_str(), r[3].c_str(), r[4].c_str(),
-                  r[5].c_str());
-    std::printf("ahead of both at every FPR <= 10 %%: %s; %.1f ms per test frame → %s\n",
-                ahead ? "yes" : "no", 1000.0 * detect_seconds / tested,
-                (dir / "report.html").c_str());
+    Finish(e, learnt, moving ? "lightings" : "training frames", learn_seconds, dir, report);
     return 0;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-illumination: %s (%s)\n", e.error().c_str(), e.argId().c_str());
