@@ -4,8 +4,7 @@
 // configuration, an OctoMap tree, a Ceres problem, MRPT's version), so a broken install shows up
 // here first. Then it demonstrates the statistics core on one pixel (eq. 4.8-4.21).
 // `--dump-options CLASS` prints instead a CMultiMetricMap .ini declaring one map of the class with
-// every option's default and documentation (share/appearance.ini and share/differencing.ini are
-// that output).
+// every option's default and documentation (share/*.ini are that output).
 #include <ceres/ceres.h>
 #include <ceres/version.h>
 #include <embree3/rtcore.h>
@@ -26,6 +25,7 @@
 #include "maps/stats/normal_gamma_kl.h"
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/differencing_map_options.h"
+#include "mrpt_plugins/illumination_invariant_map_options.h"
 #include "mrpt_plugins/object_database_map_options.h"
 
 namespace {
@@ -94,8 +94,8 @@ void SurpriseDemo() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> classes = {"CAppearanceMap", "CDifferencingMap",
-                                      "CObjectDatabaseMap"};
+  std::vector<std::string> classes = {"CAppearanceMap", "CDifferencingMap", "CObjectDatabaseMap",
+                                      "CIlluminationInvariantMap"};
   TCLAP::ValuesConstraint<std::string> allowed(classes);
   TCLAP::ValueArg<std::string> dump_options(
       "", "dump-options",
@@ -116,8 +116,10 @@ int main(int argc, char** argv) {
       novelty::mrpt_plugins::AppearanceMapConfig().dumpAsMultiMap(std::cout);
     else if (cls == "CDifferencingMap")
       novelty::mrpt_plugins::DifferencingMapConfig().dumpAsMultiMap(std::cout);
-    else
+    else if (cls == "CObjectDatabaseMap")
       novelty::mrpt_plugins::ObjectDatabaseMapConfig().dumpAsMultiMap(std::cout);
+    else
+      novelty::mrpt_plugins::IlluminationInvariantMapConfig().dumpAsMultiMap(std::cout);
     return 0;
   }
   std::printf("NoveltyMaps %s\n\nLibraries:\n", NOVELTY_VERSION);
@@ -139,12 +141,15 @@ int main(int argc, char** argv) {
       "  maps/views       view selection, depth-mesh warping, blending (ch. 3)\n"
       "  maps/appearance  appearance map and image differencing (ch. 4)\n"
       "  maps/objects     M-SURF, focus of attention, object learner and database (ch. 5)\n"
+      "  maps/illumination invariant images, gamma models, Zernike shapes, novelty, NGC,\n"
+      "                   SCT, the illumination-invariant map (ch. 6)\n"
       "  eval             AS/PAS, findings, PSNR, depth accuracy, panels, HTML report\n"
       "  sensors          RGB-D folders, rawlog frames, tracker, stereo, localization\n"
       "  sim              ODE world, Embree cameras, scenarios, rawlogs + ground truth\n"
       "  mrpt_plugins     CAppearanceMap, CDifferencingMap, CObjectDatabaseMap,\n"
-      "                   RawlogMapPlayer\n"
-      "  apps             novelty-sim, -synth, -run, -depth, -poses, -info\n");
+      "                   CIlluminationInvariantMap, RawlogMapPlayer\n"
+      "  apps             novelty-sim, -synth, -run, -depth, -poses, -objects, -invariant,\n"
+      "                   -illumination, -soak, -info\n");
   std::printf("\nStatistics core demo (one pixel, f=%.1f, xi=%.3g):\n", 0.8, 0.01);
   SurpriseDemo();
   return 0;

@@ -254,6 +254,47 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
   map.Restore(std::move(views), std::move(anchors), std::move(encoded));
 }
 
+void WriteView(mrpt::serialization::CArchive& out, const views::ReferenceView& view) {
+  const core::PinholeCamera& c = view.camera;
+  out << int32_t(c.width) << int32_t(c.height) << c.fx << c.fy << c.cx << c.cy;
+  WritePose(out, view.T_world_cam);
+  const views::EncodedView e = views::EncodeView(view, {});
+  WriteEncoded(out, e.planes.at(""), c);
+  out << int32_t(e.planes.size() - 1);
+  for (const auto& [name, plane] : e.planes) {
+    if (name.empty()) continue;
+    out << name;
+    WriteEncoded(out, plane, c);
+  }
+}
+
+views::ReferenceView ReadView(mrpt::serialization::CArchive& in, const std::string& what) {
+  views::ReferenceView v;
+  v.camera = ReadCamera(in, what);
+  v.T_world_cam = ReadPose(in);
+  views::EncodedView e;
+  e.encoding = views::PlaneEncoding::kPredicted;
+  e.planes[""] = ReadEncoded(in, v.camera, what + " depth");
+  int32_t planes;
+  in >> planes;
+  if (planes < 0 || planes > 16)
+    throw std::runtime_error(std::string(kMapFileError) + what + ": implausible plane count");
+  for (int32_t k = 0; k < planes; ++k) {
+    const std::string name = ReadShortString(in, 64, what + " plane name");
+    if (name.empty())
+      throw std::runtime_error(std::string(kMapFileError) + what + ": a plane without a name");
+    e.planes[name] = ReadEncoded(in, v.camera, what + " plane '" + name + "'");
+  }
+  try {
+    views::DecodeInto(e, v);
+    v.Check(what);
+  } catch (const std::exception& error) {
+    throw std::runtime_error(std::string(kMapFileError) + what + " " + error.what());
+  }
+  CheckDepth(v.depth, what);
+  return v;
+}
+
 std::string StoreSummary(const views::ReferenceViewStore& store) {
   int decoded = 0;
   for (int j = 0; j < store.size(); ++j) decoded += store.decoded(j);

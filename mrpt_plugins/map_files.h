@@ -34,6 +34,13 @@ void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBase
 void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map,
                  uint8_t version = 4);
 
+/// One view alone (camera, pose, depth and planes encoded as a compact store holds them: map
+/// file version 4's encoding), for maps whose views are not a ViewBasedMap's.
+void WriteView(mrpt::serialization::CArchive& out, const views::ReferenceView& view);
+/// The view WriteView wrote; throws std::runtime_error beginning with kMapFileError and naming
+/// `what` when it is truncated, implausible or damaged.
+views::ReferenceView ReadView(mrpt::serialization::CArchive& in, const std::string& what);
+
 /// "N reference views, X MiB", and for a compact store how many are decoded and how often
 /// views were encoded and decoded: what asString says of a view-based map.
 std::string StoreSummary(const views::ReferenceViewStore& store);

@@ -8,6 +8,7 @@
 
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/differencing_map_options.h"
+#include "mrpt_plugins/illumination_invariant_map_options.h"
 #include "mrpt_plugins/object_database_map_options.h"
 #include "mrpt_plugins/option_table.h"
 #include "mrpt_plugins/register_maps.h"
@@ -75,6 +76,9 @@ std::map<std::string, int> CheckMultiMapConfig(const mrpt::config::CConfigFileBa
   for (int k = 0; k < counts["CObjectDatabaseMap"]; ++k)
     ObjectDatabaseMapConfig::FromConfig(
         ini, MapSection(section, "CObjectDatabaseMap", k, "options"), source);
+  for (int k = 0; k < counts["CIlluminationInvariantMap"]; ++k)
+    IlluminationInvariantMapConfig::FromConfig(
+        ini, MapSection(section, "CIlluminationInvariantMap", k, "options"), source);
   for (const std::string& s : sections) {
     // Only the sections named like a map's: the file may hold the program's own sections too.
     if (s.rfind(section + "_", 0) != 0) continue;

@@ -4,6 +4,7 @@
 
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/c_differencing_map.h"
+#include "mrpt_plugins/c_illumination_invariant_map.h"
 #include "mrpt_plugins/c_object_database_map.h"
 
 namespace novelty::mrpt_plugins {
@@ -12,6 +13,7 @@ void RegisterMaps() {
   mrpt::rtti::registerClass(CLASS_ID(CAppearanceMap));
   mrpt::rtti::registerClass(CLASS_ID(CDifferencingMap));
   mrpt::rtti::registerClass(CLASS_ID(CObjectDatabaseMap));
+  mrpt::rtti::registerClass(CLASS_ID(CIlluminationInvariantMap));
 }
 
 }  // namespace novelty::mrpt_plugins

@@ -65,6 +65,8 @@ IlluminationModel MeanModel(const std::vector<const IlluminationModel*>& models,
 
 IlluminationMap::IlluminationMap(const IlluminationMapOptions& options)
     : options_(options), zernike_(options.zernike) {
+  // A frame's intensities are clipped as the invariant image's were (eq. 6.19 against 6.5).
+  options_.novelty.min_intensity = options.invariant.min_intensity;
   if (!(options.viewpoint_distance >= 0.0) || !(options.viewpoint_angle_deg >= 0.0))
     throw std::invalid_argument(
         "IlluminationMap: viewpoint_distance and viewpoint_angle_deg must be >= 0");

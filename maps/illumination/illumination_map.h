@@ -56,6 +56,7 @@ struct IlluminationMapOptions {
   /// κ = 0.5: the Lambertian default (eq. 6.18).
   IlluminationModelOptions model;
   ZernikeOptions zernike;
+  /// Its min_intensity is the invariant's (a frame is clipped as the images the map was made of).
   IlluminationNoveltyOptions novelty;
 };
 
@@ -102,6 +103,8 @@ class IlluminationMap {
   const IlluminationViewpointModel& model(int i) const { return models_.at(std::size_t(i)); }
   /// Adds a built viewpoint (a loaded map's); checked like a built one.
   void AddViewpoint(views::ReferenceView view, IlluminationViewpointModel model, int lightings);
+  /// The viewpoints (their geometry: poses for drawing, selection).
+  const views::ReferenceViewStore& store() const { return store_; }
   int dropped_viewpoints() const { return dropped_; }
   const IlluminationMapOptions& options() const { return options_; }
   const ZernikeMoments& zernike() const { return zernike_; }

@@ -120,6 +120,12 @@ std::vector<std::complex<double>> ZernikeMoments::Moments(const cv::Mat& shape) 
   const double cell_pixels = 2.0 * radius / g;  // original pixels per cell
   if (cell_pixels > 1.0) {
     scale = 1.0 / cell_pixels;
+    // A thin shape (a line one pixel high, 200 long) would shrink to no row at all: zeros below
+    // and to the right change neither its moments nor its pixel positions.
+    const int min_side = int(std::ceil(cell_pixels)) + 1;
+    if (f.rows < min_side || f.cols < min_side)
+      cv::copyMakeBorder(f, f, 0, std::max(0, min_side - f.rows), 0, std::max(0, min_side - f.cols),
+                         cv::BORDER_CONSTANT, cv::Scalar(0));
     cv::resize(f, f, cv::Size(), scale, scale, cv::INTER_AREA);
   }
   // Cell (x, y) centre → pixel of f: (cx + (-1 + (x + 0.5) 2/g) R) · scale, likewise y.

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "mrpt_plugins/differencing_map_options.h"
+#include "mrpt_plugins/illumination_invariant_map_options.h"
 #include "mrpt_plugins/object_database_map_options.h"
 
 namespace novelty::mrpt_plugins {
@@ -49,6 +50,11 @@ TEST(AppearanceMapOptions, ShippedIniIsTheDumpOfTheDefaults) {
   EXPECT_EQ(Body(std::string(NOVELTY_SOURCE_DIR) + "/share/object_database.ini"),
             objects_dump.str())
       << "regenerate with: build/bin/novelty-info --dump-options CObjectDatabaseMap";
+  std::ostringstream illumination_dump;
+  IlluminationInvariantMapConfig().dumpAsMultiMap(illumination_dump);
+  EXPECT_EQ(Body(std::string(NOVELTY_SOURCE_DIR) + "/share/illumination_invariant.ini"),
+            illumination_dump.str())
+      << "regenerate with: build/bin/novelty-info --dump-options CIlluminationInvariantMap";
 }
 
 TEST(AppearanceMapOptions, ShippedIniGivesTheThesisValues) {

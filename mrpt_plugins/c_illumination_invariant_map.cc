@@ -1,0 +1,214 @@
+#include "mrpt_plugins/c_illumination_invariant_map.h"
+
+#include <mrpt/serialization/CArchive.h>
+
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/false_color.h"
+#include "mrpt_plugins/cimage_products.h"
+#include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/register_maps.h"
+
+using novelty::mrpt_plugins::CIlluminationInvariantMap;
+
+MAP_DEFINITION_REGISTER(
+    "CIlluminationInvariantMap,novelty::mrpt_plugins::CIlluminationInvariantMap",
+    novelty::mrpt_plugins::CIlluminationInvariantMap)
+
+IMPLEMENTS_SERIALIZABLE(CIlluminationInvariantMap, CMetricMap, novelty::mrpt_plugins)
+
+namespace novelty::mrpt_plugins {
+
+namespace {
+
+constexpr int32_t kMaxViewpoints = 100000, kMaxLightings = 16;
+
+[[noreturn]] void Corrupt(const std::string& what) {
+  throw std::runtime_error(std::string(kMapFileError) + what);
+}
+
+void WriteFit(mrpt::serialization::CArchive& out, const stats::GammaFit& f) {
+  out << f.alpha << f.beta;
+}
+
+stats::GammaFit ReadFit(mrpt::serialization::CArchive& in) {
+  stats::GammaFit f;
+  in >> f.alpha >> f.beta;
+  return f;
+}
+
+}  // namespace
+
+CIlluminationInvariantMap::CIlluminationInvariantMap(const IlluminationInvariantMapConfig& config)
+    : config_(config), map_(std::make_unique<illumination::IlluminationMap>(config.map)) {}
+
+bool CIlluminationInvariantMap::internal_insertObservation(
+    const mrpt::obs::CObservation& obs,
+    const std::optional<const mrpt::poses::CPose3D>& robot_pose) {
+  core::Frame f;
+  if (!DecodeObservation(obs, robot_pose, f)) return false;
+  if (!map_->built()) {
+    map_->AddTrainingFrame(f);
+    return true;
+  }
+  last_ = map_->Detect(f);
+  last_frame_ = std::move(f);
+  return true;
+}
+
+void CIlluminationInvariantMap::internal_clear() {
+  map_ = std::make_unique<illumination::IlluminationMap>(config_.map);
+  last_frame_ = {};
+  last_ = {};
+}
+
+std::string CIlluminationInvariantMap::asString() const {
+  std::ostringstream s;
+  const illumination::IlluminationMap& m = *map_;
+  s << "CIlluminationInvariantMap: " << m.lightings() << " lightings, " << m.size()
+    << " viewpoints";
+  if (!m.built()) return s.str() + " (acquiring)";
+  double coverage = 0.0, threshold = 0.0;
+  for (int i = 0; i < m.size(); ++i) {
+    coverage += m.model(i).coverage / m.size();
+    threshold += m.model(i).model.threshold / m.size();
+  }
+  s << " (" << m.dropped_viewpoints() << " dropped), mean coverage " << 100.0 * coverage
+    << " %, mean T_Y " << threshold << ", " << m.BytesUsed() / 1e6 << " MB";
+  return s.str();
+}
+
+void CIlluminationInvariantMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const {
+  if (!map_->built()) return;
+  std::vector<double> badness;
+  for (int i = 0; i < map_->size(); ++i) badness.push_back(1.0 - map_->model(i).coverage);
+  AddViewFrusta(map_->store(), badness, o);
+}
+
+mrpt::img::CImage CIlluminationInvariantMap::invariantImage() const {
+  if (last_.coverage == 0.0) return {};
+  cv::Mat r8;
+  illumination::LinearImage(last_.viewpoint.log_invariant, last_.viewpoint.covered)
+      .convertTo(r8, CV_8UC3);
+  return ToCImage(r8);
+}
+
+mrpt::img::CImage CIlluminationInvariantMap::noveltyImage(double max_novelty) const {
+  if (last_.novelty.novelty.empty()) return {};
+  return ToCImage(core::FalseColor(last_.novelty.novelty, max_novelty));
+}
+
+mrpt::img::CImage CIlluminationInvariantMap::informationImage(double max_information) const {
+  if (last_.novelty.information_y.empty()) return {};
+  return ToCImage(core::FalseColor(last_.novelty.information_y, max_information));
+}
+
+void CIlluminationInvariantMap::SaveToFile(const std::string& path) const {
+  if (!map_->built())
+    throw std::logic_error(
+        "CIlluminationInvariantMap: still acquiring; call finishAcquisition() "
+        "before saving " +
+        path);
+  SaveAtomically(*this, path);
+}
+
+void CIlluminationInvariantMap::LoadFromFile(const std::string& path) {
+  RegisterMaps();                    // the archive names the class
+  CIlluminationInvariantMap loaded;  // a fresh map: on failure this one is untouched
+  LoadInto(loaded, path, "CIlluminationInvariantMap");
+  config_ = loaded.config_;
+  map_ = std::move(loaded.map_);
+  last_frame_ = {};
+  last_ = {};
+}
+
+void CIlluminationInvariantMap::saveMetricMapRepresentationToFile(const std::string& prefix) const {
+  SaveToFile(prefix + ".illumination_invariant");
+}
+
+// Map file, version 0: every option by key (option_table.h); the lightings and viewpoint counts;
+// per viewpoint its view (map_files.h WriteView: camera, pose, depth, planes "invariant" and
+// "shapes"), its coverage and its model (gamma fits of luminance and saturation, quantisation
+// widths, mean information, T_Y).
+uint8_t CIlluminationInvariantMap::serializeGetVersion() const {
+  return 0;
+}
+
+void CIlluminationInvariantMap::serializeTo(mrpt::serialization::CArchive& out) const {
+  if (!map_->built())
+    throw std::logic_error(
+        "CIlluminationInvariantMap: still acquiring (call finishAcquisition() before saving)");
+  IlluminationInvariantMapConfig::Table().Write(out, config_);
+  out << int32_t(map_->lightings()) << int32_t(map_->size());
+  for (int i = 0; i < map_->size(); ++i) {
+    WriteView(out, map_->view(i));
+    const illumination::IlluminationViewpointModel& m = map_->model(i);
+    out << m.coverage;
+    WriteFit(out, m.model.luminance);
+    WriteFit(out, m.model.saturation);
+    out << m.model.luminance_step << m.model.saturation_step << m.model.mean_information
+        << m.model.threshold;
+  }
+}
+
+void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
+  if (version > 0)
+    Corrupt("format version " + std::to_string(version) + ", newer than this program's (0)");
+  IlluminationInvariantMapConfig config;
+  IlluminationInvariantMapConfig::Table().Read(in, config);
+  int32_t lightings = 0, viewpoints = 0;
+  in >> lightings >> viewpoints;
+  if (lightings < 2 || lightings > kMaxLightings || viewpoints < 1 || viewpoints > kMaxViewpoints)
+    Corrupt(std::to_string(lightings) + " lightings and " + std::to_string(viewpoints) +
+            " viewpoints");
+  auto map = std::make_unique<illumination::IlluminationMap>(config.map);
+  for (int32_t i = 0; i < viewpoints; ++i) {
+    const std::string what = "viewpoint " + std::to_string(i);
+    views::ReferenceView view = ReadView(in, what);
+    illumination::IlluminationViewpointModel m;
+    in >> m.coverage;
+    m.model.luminance = ReadFit(in);
+    m.model.saturation = ReadFit(in);
+    in >> m.model.luminance_step >> m.model.saturation_step >> m.model.mean_information >>
+        m.model.threshold;
+    for (double v :
+         {m.coverage, m.model.luminance_step, m.model.saturation_step, m.model.mean_information,
+          m.model.threshold, m.model.saturation.alpha, m.model.saturation.beta})
+      if (!std::isfinite(v) || v < 0) Corrupt(what + ": a model value is negative or not finite");
+    try {
+      map->AddViewpoint(std::move(view), std::move(m), lightings);
+    } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
+      Corrupt(e.what());
+    }
+  }
+  config_ = config;  // only now: a failure above leaves the map as it was
+  map_ = std::move(map);
+  last_frame_ = {};
+  last_ = {};
+}
+
+// --- CMultiMetricMap integration ---------------------------------------------------------------
+
+CIlluminationInvariantMap::TMapDefinition::TMapDefinition() = default;
+
+void CIlluminationInvariantMap::TMapDefinition::loadFromConfigFile_map_specific(
+    const mrpt::config::CConfigFileBase& source, const std::string& prefix) {
+  config = IlluminationInvariantMapConfig::FromConfig(source, prefix + "_options",
+                                                      ConfigSourceName(source));
+}
+
+void CIlluminationInvariantMap::TMapDefinition::dumpToTextStream_map_specific(
+    std::ostream& out) const {
+  config.dumpToTextStream(out);
+}
+
+mrpt::maps::CMetricMap* CIlluminationInvariantMap::internal_CreateFromMapDefinition(
+    const mrpt::maps::TMetricMapInitializer& def) {
+  return new CIlluminationInvariantMap(
+      dynamic_cast<const CIlluminationInvariantMap::TMapDefinition&>(def).config);
+}
+
+}  // namespace novelty::mrpt_plugins

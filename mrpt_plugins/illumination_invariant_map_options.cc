@@ -1,0 +1,69 @@
+#include "mrpt_plugins/illumination_invariant_map_options.h"
+
+#include "core/range_check.h"
+
+namespace novelty::mrpt_plugins {
+
+const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfig::Table() {
+  using C = IlluminationInvariantMapConfig;
+  static const OptionTable<C> table = [] {
+    OptionTable<C> t;
+    t.Add(
+         "viewpoint_distance", [](C & c) -> auto& { return c.map.viewpoint_distance; },
+         "m, a frame of the first lighting is a new viewpoint this far from the last (6.1: as "
+         "dense as the camera's frames)")
+        .Add(
+            "viewpoint_angle_deg", [](C & c) -> auto& { return c.map.viewpoint_angle_deg; },
+            "deg, ... or turned this much from it")
+        .Add(
+            "min_viewpoint_coverage", [](C & c) -> auto& { return c.map.min_viewpoint_coverage; },
+            "share of a viewpoint's pixels with an invariant value to keep it (chosen)")
+        .AddChoice(
+            "colour", [](C & c) -> auto& { return c.map.invariant.colour; },
+            {"per-channel", "luminance-chromaticity"},
+            "invariant image per RGB channel (the thesis) or luminance + chromaticity")
+        .Add(
+            "min_intensity", [](C & c) -> auto& { return c.map.invariant.min_intensity; },
+            "0..255, smaller intensities are clipped before the log (6.1.2; 3 as the MIT code)")
+        .Add(
+            "min_lightings", [](C & c) -> auto& { return c.map.invariant.min_lightings; },
+            "lightings that must cover a pixel for an invariant value there (one is no median)")
+        .Add(
+            "kappa", [](C & c) -> auto& { return c.map.model.kappa; },
+            "kappa of T_Y = mean / (1 - kappa) (eq. 6.18: 0.5 Lambertian, 0.2 specular)")
+        .Add(
+            "zernike_max_order", [](C & c) -> auto& { return c.map.zernike.max_order; },
+            "highest Zernike order (eq. 6.21; the thesis 120, see zernike_moments.h)")
+        .Add(
+            "zernike_grid", [](C & c) -> auto& { return c.map.zernike.grid; },
+            "cells per side of the disc a shape is sampled on")
+        .Add(
+            "min_region_pixels", [](C & c) -> auto& { return c.map.novelty.min_region_pixels; },
+            "regions of fewer pixels are not shape-matched (chosen)")
+        .Add(
+            "min_window_share", [](C & c) -> auto& { return c.map.novelty.min_window_share; },
+            "share of both shapes a matching window must hold (the thesis: any; chosen)")
+        .AddChoice(
+            "shape_scale", [](C & c) -> auto& { return c.map.novelty.shape_scale; },
+            {"frame", "empty"},
+            "e-hat of eq. 6.24: the frame's largest e (the thesis) or each region's distance to "
+            "the empty shape")
+        .Check([](const C& c) {
+          const illumination::IlluminationMapOptions& o = c.map;
+          CheckInRange(o.viewpoint_distance, 0, 100, "viewpoint_distance");
+          CheckInRange(o.viewpoint_angle_deg, 0, 180, "viewpoint_angle_deg");
+          CheckInRange(o.min_viewpoint_coverage, 0, 1, "min_viewpoint_coverage");
+          CheckInRange(o.invariant.min_intensity, 1e-3, 255, "min_intensity");
+          CheckInRange(o.invariant.min_lightings, 2, 1000, "min_lightings");
+          CheckInRange(o.model.kappa, 0, 0.999, "kappa");
+          CheckInRange(o.zernike.max_order, 0, 200, "zernike_max_order");
+          CheckInRange(o.zernike.grid, 2, 512, "zernike_grid");
+          CheckInRange(o.novelty.min_region_pixels, 1, 1000000, "min_region_pixels");
+          CheckInRange(o.novelty.min_window_share, 0, 1, "min_window_share");
+        });
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace novelty::mrpt_plugins

@@ -1,0 +1,21 @@
+// The options of CIlluminationInvariantMap: the illumination-invariant map's (maps/illumination/
+// illumination_map.h) in one table (option_table.h), with the thesis's values as defaults —
+// share/illumination_invariant.ini is the dump of them (tested).
+#pragma once
+
+#include "maps/illumination/illumination_map.h"
+#include "mrpt_plugins/option_table.h"
+
+namespace novelty::mrpt_plugins {
+
+struct IlluminationInvariantMapConfig : public TabledOptions<IlluminationInvariantMapConfig> {
+  illumination::IlluminationMapOptions map;
+
+  static const OptionTable<IlluminationInvariantMapConfig>& Table();
+  static constexpr const char* kClass = "CIlluminationInvariantMap";
+  /// The options section of the first CIlluminationInvariantMap of a CMultiMetricMap .ini whose
+  /// maps are declared in [map] (MRPT's naming: <section>_<Class>_<NN>_options).
+  static constexpr const char* kSection = "map_CIlluminationInvariantMap_00_options";
+};
+
+}  // namespace novelty::mrpt_plugins
