@@ -148,6 +148,51 @@ void SyncToDisk(const std::string& path) {
   if (synced != 0) throw std::runtime_error("cannot sync " + path + " to disk");
 }
 
+// A view's depth and named planes after its camera and pose: encoded (versions ≥ 3; decoded
+// into `v` here) or raw (versions 0-2). `e` keeps the encoding a compact store may hold.
+void ReadPlanes(mrpt::serialization::CArchive& in, const std::string& what, uint8_t version,
+                views::EncodedView& e, views::ReferenceView& v) {
+  e.encoding = version >= 4 ? views::PlaneEncoding::kPredicted : views::PlaneEncoding::kShuffled;
+  if (version >= 3)
+    e.planes[""] = ReadEncoded(in, v.camera, what + " depth");
+  else
+    v.depth = ReadRaw(in, v.camera, what + " depth");
+  int32_t planes;
+  in >> planes;
+  if (planes < 0 || planes > 16)
+    throw std::runtime_error(std::string(kMapFileError) + what + ": implausible plane count");
+  for (int32_t k = 0; k < planes; ++k) {
+    const std::string name = ReadShortString(in, 64, what + " plane name");
+    if (name.empty())
+      throw std::runtime_error(std::string(kMapFileError) + what + ": a plane without a name");
+    const std::string plane = what + " plane '" + name + "'";
+    if (version >= 3)
+      e.planes[name] = ReadEncoded(in, v.camera, plane);
+    else
+      v.planes[name] = ReadRaw(in, v.camera, plane);
+  }
+  if (version >= 3) {
+    try {
+      views::DecodeInto(e, v);
+    } catch (const std::runtime_error& error) {
+      throw std::runtime_error(std::string(kMapFileError) + what + " " + error.what());
+    }
+  }
+  CheckDepth(v.depth, what);
+}
+
+// The encoded depth and planes of a view (versions ≥ 3), as ReadPlanes reads them.
+void WritePlanes(mrpt::serialization::CArchive& out, const views::EncodedView& e,
+                 const core::PinholeCamera& c) {
+  WriteEncoded(out, e.planes.at(""), c);
+  out << int32_t(e.planes.size() - 1);
+  for (const auto& [name, plane] : e.planes) {
+    if (name.empty()) continue;
+    out << name;
+    WriteEncoded(out, plane, c);
+  }
+}
+
 }  // namespace
 
 bool DecodeObservation(const mrpt::obs::CObservation& obs,
@@ -181,13 +226,7 @@ void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBase
       // What a compact map holds already (version 4), else encoded now, a view at a time.
       const views::EncodedView e =
           version >= 4 ? store.Encoded(j) : views::EncodeView(store.Decoded(j), shuffled);
-      WriteEncoded(out, e.planes.at(""), c);
-      out << int32_t(e.planes.size() - 1);
-      for (const auto& [name, plane] : e.planes) {
-        if (name.empty()) continue;
-        out << name;
-        WriteEncoded(out, plane, c);
-      }
+      WritePlanes(out, e, c);
     } else {
       const views::ReferenceView v = store.Decoded(j);
       WriteRaw(out, v.depth);
@@ -217,33 +256,7 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
     v.T_world_cam = ReadPose(in);
     anchors.push_back(ReadPose(in));
     views::EncodedView e;
-    e.encoding = version >= 4 ? views::PlaneEncoding::kPredicted : views::PlaneEncoding::kShuffled;
-    if (version >= 3)
-      e.planes[""] = ReadEncoded(in, v.camera, what + " depth");
-    else
-      v.depth = ReadRaw(in, v.camera, what + " depth");
-    int32_t planes;
-    in >> planes;
-    if (planes < 0 || planes > 16)
-      throw std::runtime_error(std::string(kMapFileError) + what + ": implausible plane count");
-    for (int32_t k = 0; k < planes; ++k) {
-      const std::string name = ReadShortString(in, 64, what + " plane name");
-      if (name.empty())
-        throw std::runtime_error(std::string(kMapFileError) + what + ": a plane without a name");
-      const std::string plane = what + " plane '" + name + "'";
-      if (version >= 3)
-        e.planes[name] = ReadEncoded(in, v.camera, plane);
-      else
-        v.planes[name] = ReadRaw(in, v.camera, plane);
-    }
-    if (version >= 3) {
-      try {
-        views::DecodeInto(e, v);
-      } catch (const std::runtime_error& error) {
-        throw std::runtime_error(std::string(kMapFileError) + what + " " + error.what());
-      }
-    }
-    CheckDepth(v.depth, what);
+    ReadPlanes(in, what, version, e, v);
     if (version >= 4 && compact) {  // held as it was read: no second copy of 200 views decoded
       v.depth.release();
       v.planes.clear();
@@ -258,14 +271,7 @@ void WriteView(mrpt::serialization::CArchive& out, const views::ReferenceView& v
   const core::PinholeCamera& c = view.camera;
   out << int32_t(c.width) << int32_t(c.height) << c.fx << c.fy << c.cx << c.cy;
   WritePose(out, view.T_world_cam);
-  const views::EncodedView e = views::EncodeView(view, {});
-  WriteEncoded(out, e.planes.at(""), c);
-  out << int32_t(e.planes.size() - 1);
-  for (const auto& [name, plane] : e.planes) {
-    if (name.empty()) continue;
-    out << name;
-    WriteEncoded(out, plane, c);
-  }
+  WritePlanes(out, views::EncodeView(view, {}), c);
 }
 
 views::ReferenceView ReadView(mrpt::serialization::CArchive& in, const std::string& what) {
@@ -273,25 +279,12 @@ views::ReferenceView ReadView(mrpt::serialization::CArchive& in, const std::stri
   v.camera = ReadCamera(in, what);
   v.T_world_cam = ReadPose(in);
   views::EncodedView e;
-  e.encoding = views::PlaneEncoding::kPredicted;
-  e.planes[""] = ReadEncoded(in, v.camera, what + " depth");
-  int32_t planes;
-  in >> planes;
-  if (planes < 0 || planes > 16)
-    throw std::runtime_error(std::string(kMapFileError) + what + ": implausible plane count");
-  for (int32_t k = 0; k < planes; ++k) {
-    const std::string name = ReadShortString(in, 64, what + " plane name");
-    if (name.empty())
-      throw std::runtime_error(std::string(kMapFileError) + what + ": a plane without a name");
-    e.planes[name] = ReadEncoded(in, v.camera, what + " plane '" + name + "'");
-  }
+  ReadPlanes(in, what, 4, e, v);
   try {
-    views::DecodeInto(e, v);
     v.Check(what);
-  } catch (const std::exception& error) {
-    throw std::runtime_error(std::string(kMapFileError) + what + " " + error.what());
+  } catch (const std::invalid_argument& error) {
+    throw std::runtime_error(std::string(kMapFileError) + error.what());
   }
-  CheckDepth(v.depth, what);
   return v;
 }
 

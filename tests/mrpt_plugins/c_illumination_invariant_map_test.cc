@@ -23,46 +23,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Half a cycle (one pass along the arc and a stop) takes 2.83 s; the lamp moves in each stop and
-// the box appears in the fifth stop, so pass k (k = 0…3) is lighting k and pass 5 the test.
+// tests/data/four_lightings.scn: half a cycle (one pass along the arc and a stop) takes 2.83 s;
+// the lamp moves in each stop and the box appears in the fourth, so pass k (k = 0…3) is lighting
+// k and pass 5 the test.
 constexpr double kPass = 2.83, kChange = 2.58;
-constexpr char kClip[] = R"(
-name lights
-frames 68
-fps 4
-seed 3
-camera 320 240 60
-rig rgbd
-sensor noise 1.0 gamma 2.2
-mount 0.0 0.0 1.10 90 16
-room 6 6 2.8
-ambient 0.08 0.08 0.08
-material wood phong 0.45 0.28 0.14
-material cloth phong 0.85 0.82 0.75
-texture cloth checker 0.65 0.75 0.85 12
-material green phong 0.15 0.60 0.20 0.4 60
-material red phong 0.80 0.10 0.08
-object table box 1.2 0.8 0.72 wood at 0 0 fixed
-object cloth plane 1.3 0.9 cloth at 0 0 on table
-object can cylinder 0.05 0.15 green at -0.20 0.10 on cloth mass 0.3
-object box box 0.12 0.10 0.10 red at 0.15 -0.05 on cloth absent mass 0.3
-lamp l1 -1.0 0.8 2.0 1.8 1.7 1.5
-arc 0 0 1.0 -100 -80 0.15
-stop 0.5
-arc 0 0 1.0 -80 -100 0.15
-stop 0.5
-repeat 2
-event 2.58 lamp l1 0.2 1.3 1.9
-event 5.41 lamp l1 1.1 0.6 2.2
-event 8.24 lamp l1 -1.2 -0.2 1.7
-event 11.07 lamp l1 0.6 1.1 1.6
-event 11.07 add box
-)";
 
 const std::vector<sim::SimulatedFrame>& Frames() {
   static const std::vector<sim::SimulatedFrame> frames = [] {
-    std::istringstream in(kClip);
-    return sim::SimulateFrames(sim::ParseScenario(in, "lights.scn", ""));
+    const std::string path = std::string(NOVELTY_SOURCE_DIR) + "/tests/data/four_lightings.scn";
+    std::ifstream in(path);
+    return sim::SimulateFrames(sim::ParseScenario(in, path, ""));
   }();
   return frames;
 }
