@@ -412,7 +412,7 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
       throw std::invalid_argument(truth.dir() + ": no camera pose for frame " + std::to_string(i));
     f.T_world_cam = pose->second;
     f.pose_source = "groundtruth";
-    if (f.depth.empty()) {
+    if (f.depth.empty() && phase_of(i) < int(train.size())) {  // test frames need no depth
       f.depth = truth.Depth(i);
       ++depth_from_truth;
       if (f.depth.size() != f.rgb.size())
@@ -490,7 +490,12 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
       const views::SynthesisResult s =
           views::SynthesiseView(warper, chosen, {}, sel.Weights(options.selection), f.camera,
                                 *f.T_world_cam, options.synthesis);
-      t.references.push_back(s.rgb);
+      // Where the reference has no view, the observation stands in: the baselines' blocks
+      // (NGC's reach ~10 px on three layers) would otherwise compare against black next to
+      // holes; those pixels are not scored.
+      cv::Mat reference = s.rgb.clone();
+      t.image.copyTo(reference, ~s.valid);
+      t.references.push_back(reference);
       t.evaluated &= s.valid;
     }
     Score(t, e, report, dir);
@@ -599,6 +604,13 @@ int main(int argc, char** argv) {
     if (e.tested == 0)
       throw std::invalid_argument("no test frame of phase '" + test.name + "' in " +
                                   rawlog.getValue());
+    const long positives = std::count(e.positive.begin(), e.positive.end(), true);
+    if (positives == 0 || positives == long(e.positive.size()))
+      throw std::invalid_argument(
+          "phase '" + test.name + "': " + std::to_string(e.positive.size()) + " scored pixels, " +
+          std::to_string(positives) +
+          " of them changed; a ROC needs both (the map or the references cover too little, or "
+          "nothing changed)");
     Finish(e, learnt, moving ? "lightings" : "training frames", learn_seconds, dir, report);
     return 0;
   } catch (const TCLAP::ArgException& e) {

@@ -24,7 +24,7 @@ namespace novelty::mrpt_plugins {
 
 namespace {
 
-constexpr int32_t kMaxViewpoints = 100000, kMaxLightings = 16;
+constexpr int32_t kMaxViewpoints = 100000;
 
 [[noreturn]] void Corrupt(const std::string& what) {
   throw std::runtime_error(std::string(kMapFileError) + what);
@@ -161,7 +161,8 @@ void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in,
   IlluminationInvariantMapConfig::Table().Read(in, config);
   int32_t lightings = 0, viewpoints = 0;
   in >> lightings >> viewpoints;
-  if (lightings < 2 || lightings > kMaxLightings || viewpoints < 1 || viewpoints > kMaxViewpoints)
+  if (lightings < 2 || lightings > illumination::kMaxLightings || viewpoints < 1 ||
+      viewpoints > kMaxViewpoints)
     Corrupt(std::to_string(lightings) + " lightings and " + std::to_string(viewpoints) +
             " viewpoints");
   auto map = std::make_unique<illumination::IlluminationMap>(config.map);

@@ -67,7 +67,7 @@ int ReadImageHeader(mrpt::serialization::CArchive& in, const core::PinholeCamera
   }
   const int depth = CV_MAT_DEPTH(type), channels = CV_MAT_CN(type);
   const bool known_depth = depth == CV_8U || depth == CV_16U || depth == CV_16F || depth == CV_32F;
-  if (type < 0 || !known_depth || channels > 16) {
+  if (type < 0 || !known_depth || channels > 64) {  // 64: an illumination map's lightings
     throw std::runtime_error(std::string(kMapFileError) + what + " has an unknown type " +
                              std::to_string(type));
   }

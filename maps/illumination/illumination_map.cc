@@ -38,26 +38,34 @@ cv::Mat ShapesPlane(const std::vector<cv::Mat>& shapes) {
   return plane;
 }
 
-// Weighted mean of the gamma parameters and thresholds ("interpolated gamma parameters", 6.3).
+// Weighted mean of the gamma parameters and thresholds ("interpolated gamma parameters", 6.3);
+// the saturation's over the models that have one (colourless viewpoints have none).
 IlluminationModel MeanModel(const std::vector<const IlluminationModel*>& models,
                             const std::vector<double>& weights) {
   IlluminationModel m = *models.front();
-  double total = 0.0;
   m.luminance.alpha = m.luminance.beta = m.saturation.alpha = m.saturation.beta = 0.0;
   m.mean_information = m.threshold = 0.0;
+  double total = 0.0, saturation_total = 0.0;
   for (std::size_t k = 0; k < models.size(); ++k) {
     const double w = weights[k];
+    const IlluminationModel& o = *models[k];
     total += w;
-    m.luminance.alpha += w * models[k]->luminance.alpha;
-    m.luminance.beta += w * models[k]->luminance.beta;
-    m.saturation.alpha += w * models[k]->saturation.alpha;
-    m.saturation.beta += w * models[k]->saturation.beta;
-    m.mean_information += w * models[k]->mean_information;
-    m.threshold += w * models[k]->threshold;
+    m.luminance.alpha += w * o.luminance.alpha;
+    m.luminance.beta += w * o.luminance.beta;
+    m.mean_information += w * o.mean_information;
+    m.threshold += w * o.threshold;
+    if (o.saturation.alpha > 0.0) {
+      saturation_total += w;
+      m.saturation.alpha += w * o.saturation.alpha;
+      m.saturation.beta += w * o.saturation.beta;
+    }
   }
-  for (double* v : {&m.luminance.alpha, &m.luminance.beta, &m.saturation.alpha, &m.saturation.beta,
-                    &m.mean_information, &m.threshold})
+  for (double* v : {&m.luminance.alpha, &m.luminance.beta, &m.mean_information, &m.threshold})
     *v /= total;
+  if (saturation_total > 0.0) {
+    m.saturation.alpha /= saturation_total;
+    m.saturation.beta /= saturation_total;
+  }
   return m;
 }
 
@@ -83,33 +91,41 @@ void IlluminationMap::BeginLighting() {
   if (frames_.empty())
     throw std::invalid_argument("IlluminationMap: lighting " + std::to_string(lightings_ - 1) +
                                 " has no frames");
-  if (lightings_ == 1) PlaceViewpoints();
-  RenderLighting();
+  if (lightings_ >= kMaxLightings)
+    throw std::invalid_argument("IlluminationMap: at most " + std::to_string(kMaxLightings) +
+                                " lightings");
+  // Rendered aside and committed only when it all worked: a frame that fails leaves the map as
+  // it was.
+  views::ReferenceViewStore placed = store_.size() ? store_ : PlacedViewpoints();
+  RenderedLighting rendered = RenderLighting(placed);
+  store_ = std::move(placed);
+  Append(rendered);
+  frames_.clear();
   ++lightings_;
 }
 
 void IlluminationMap::AddTrainingFrame(const core::Frame& frame) {
   if (built_) throw std::logic_error("IlluminationMap: AddTrainingFrame after Build");
-  if (!frame.T_world_cam)
-    throw std::invalid_argument("IlluminationMap: " + FrameName(frame) + " has no pose");
+  const std::string name = "IlluminationMap: " + FrameName(frame);
+  if (!frame.T_world_cam) throw std::invalid_argument(name + " has no pose");
   if (frame.rgb.empty() || frame.depth.empty())
-    throw std::invalid_argument("IlluminationMap: " + FrameName(frame) +
-                                " needs an image and a depth map");
-  if (frame.rgb.type() != CV_8UC3 || frame.depth.size() != frame.rgb.size())
-    throw std::invalid_argument("IlluminationMap: " + FrameName(frame) +
-                                " must be 8-bit RGB with a depth map of its size");
+    throw std::invalid_argument(name + " needs an image and a depth map");
+  if (frame.rgb.type() != CV_8UC3 || frame.rgb.cols != frame.camera.width ||
+      frame.rgb.rows != frame.camera.height)
+    throw std::invalid_argument(name + " must be 8-bit RGB of its camera's size");
+  views::ReferenceViewOf(frame).Check(name);  // rigid pose, float depth of the image's size
   const core::PinholeCamera& first =
       !frames_.empty() ? frames_.front().camera : (size() ? store_.camera(0) : frame.camera);
   if (frame.camera.width != first.width || frame.camera.height != first.height)
-    throw std::invalid_argument("IlluminationMap: " + FrameName(frame) + " is " +
-                                std::to_string(frame.camera.width) + "x" +
+    throw std::invalid_argument(name + " is " + std::to_string(frame.camera.width) + "x" +
                                 std::to_string(frame.camera.height) + ", the first frame " +
                                 std::to_string(first.width) + "x" + std::to_string(first.height));
   if (lightings_ == 0) lightings_ = 1;
   frames_.push_back(frame);
 }
 
-void IlluminationMap::PlaceViewpoints() {
+views::ReferenceViewStore IlluminationMap::PlacedViewpoints() const {
+  views::ReferenceViewStore placed;
   const core::Frame* last = nullptr;
   for (const core::Frame& f : frames_) {
     if (last) {
@@ -122,14 +138,14 @@ void IlluminationMap::PlaceViewpoints() {
     v.camera = f.camera;
     v.T_world_cam = *f.T_world_cam;
     v.depth = f.depth.clone();
-    store_.Add(std::move(v));
+    placed.Add(std::move(v));
     last = &f;
   }
-  virtual_rgb_.assign(std::size_t(store_.size()), {});
-  virtual_valid_.assign(std::size_t(store_.size()), {});
+  return placed;
 }
 
-void IlluminationMap::RenderLighting() {
+IlluminationMap::RenderedLighting IlluminationMap::RenderLighting(
+    const views::ReferenceViewStore& viewpoints) const {
   std::vector<views::ReferenceView> refs;
   std::vector<Eigen::Isometry3d> poses;
   refs.reserve(frames_.size());
@@ -139,93 +155,121 @@ void IlluminationMap::RenderLighting() {
   }
   views::DepthMeshWarper warper(options_.synthesis.warp,
                                 views::WarpOutputsFor(options_.synthesis.blend));
-  for (int v = 0; v < store_.size(); ++v) {
-    const views::ViewSelection sel =
-        views::SelectViewsForRays(poses, store_.camera(v), store_.pose(v), options_.selection);
+  RenderedLighting out;
+  for (int v = 0; v < viewpoints.size(); ++v) {
+    const views::ViewSelection sel = views::SelectViewsForRays(
+        poses, viewpoints.camera(v), viewpoints.pose(v), options_.selection);
     cv::Mat rgb, valid;
     if (!sel.views.empty()) {
       std::vector<const views::ReferenceView*> chosen;
       for (int i : sel.views) chosen.push_back(&refs[std::size_t(i)]);
       const views::SynthesisResult r =
           views::SynthesiseView(warper, chosen, {}, sel.Weights(options_.selection),
-                                store_.camera(v), store_.pose(v), options_.synthesis);
+                                viewpoints.camera(v), viewpoints.pose(v), options_.synthesis);
       rgb = r.rgb;
       valid = r.valid;
     } else {
-      rgb = cv::Mat::zeros(store_.view(v).depth.size(), CV_8UC3);
+      const core::PinholeCamera& c = viewpoints.camera(v);
+      rgb = cv::Mat::zeros(c.height, c.width, CV_8UC3);
       valid = cv::Mat::zeros(rgb.size(), CV_8UC1);
     }
-    virtual_rgb_[std::size_t(v)].push_back(rgb);
-    virtual_valid_[std::size_t(v)].push_back(valid);
+    out.rgb.push_back(rgb);
+    out.valid.push_back(valid);
   }
-  frames_.clear();
+  return out;
+}
+
+void IlluminationMap::Append(const RenderedLighting& rendered) {
+  virtual_rgb_.resize(rendered.rgb.size());
+  virtual_valid_.resize(rendered.rgb.size());
+  for (std::size_t v = 0; v < rendered.rgb.size(); ++v) {
+    virtual_rgb_[v].push_back(rendered.rgb[v]);
+    virtual_valid_[v].push_back(rendered.valid[v]);
+  }
 }
 
 void IlluminationMap::Build() {
   if (built_) throw std::logic_error("IlluminationMap: Build called twice");
+  // Everything into locals first: a Build that throws leaves the map as it was.
+  views::ReferenceViewStore viewpoints = store_.size() ? store_ : PlacedViewpoints();
+  std::vector<std::vector<cv::Mat>> images = virtual_rgb_, masks = virtual_valid_;
   if (!frames_.empty()) {
-    if (lightings_ == 1) PlaceViewpoints();
-    RenderLighting();
-  } else if (lightings_ > 0) {
-    --lightings_;  // BeginLighting was called for a lighting that got no frames
+    const RenderedLighting r = RenderLighting(viewpoints);
+    images.resize(r.rgb.size());
+    masks.resize(r.rgb.size());
+    for (std::size_t v = 0; v < r.rgb.size(); ++v)
+      images[v].push_back(r.rgb[v]), masks[v].push_back(r.valid[v]);
   }
-  if (lightings_ < 2)
-    throw std::invalid_argument("IlluminationMap: " + std::to_string(lightings_) +
-                                " lighting(s); the median of one lighting is that image's "
-                                "gradient, not an invariant one — acquire at least two");
+  const int lightings = images.empty() ? 0 : int(images.front().size());
+  if (lightings < 2)
+    throw std::invalid_argument("IlluminationMap: " + std::to_string(lightings) +
+                                " lighting(s) with frames; the median of one lighting is that "
+                                "image's gradient, not an invariant one — acquire at least two");
   views::ReferenceViewStore kept;
+  std::vector<IlluminationViewpointModel> models;
+  int dropped = 0;
   std::string first_error;
-  for (int v = 0; v < store_.size(); ++v) {
-    views::ReferenceView view = store_.Decoded(v);
+  for (int v = 0; v < viewpoints.size(); ++v) {
+    views::ReferenceView view = viewpoints.Decoded(v);
     try {
-      const InvariantImage inv = ComputeInvariantImage(
-          virtual_rgb_[std::size_t(v)], virtual_valid_[std::size_t(v)], options_.invariant);
+      const InvariantImage inv =
+          ComputeInvariantImage(images[std::size_t(v)], masks[std::size_t(v)], options_.invariant);
       const double coverage = cv::countNonZero(inv.covered) / double(inv.covered.total());
       if (coverage < options_.min_viewpoint_coverage || coverage == 0.0) {
-        ++dropped_;
+        ++dropped;
         continue;
       }
       IlluminationViewpointModel m;
-      m.model = LearnIlluminationModel(inv, virtual_valid_[std::size_t(v)], options_.model);
+      m.model = LearnIlluminationModel(inv, masks[std::size_t(v)], options_.model);
       m.coverage = coverage;
       view.planes[kInvariantPlane] = InvariantPlane(inv);
       view.planes[kShapesPlane] = ShapesPlane(m.model.shapes);
       m.model.shapes.clear();
       kept.Add(std::move(view));
-      models_.push_back(std::move(m));
+      models.push_back(std::move(m));
     } catch (const std::invalid_argument& e) {
       if (first_error.empty()) first_error = "viewpoint " + std::to_string(v) + ": " + e.what();
-      ++dropped_;
+      ++dropped;
     }
   }
+  if (kept.size() == 0)
+    throw std::invalid_argument("IlluminationMap: no viewpoint has an invariant image (" +
+                                std::to_string(dropped) + " dropped" +
+                                (first_error.empty() ? "" : "; first: " + first_error) + ")");
+  store_ = std::move(kept);
+  models_ = std::move(models);
+  dropped_ = dropped;
+  lightings_ = lightings;
   virtual_rgb_.clear();
   virtual_valid_.clear();
-  store_ = std::move(kept);
-  if (store_.size() == 0)
-    throw std::invalid_argument("IlluminationMap: no viewpoint has an invariant image (" +
-                                std::to_string(dropped_) + " dropped" +
-                                (first_error.empty() ? "" : "; first: " + first_error) + ")");
+  frames_.clear();
   built_ = true;
 }
 
 void IlluminationMap::AddViewpoint(views::ReferenceView view, IlluminationViewpointModel model,
                                    int lightings) {
-  view.Check("illumination viewpoint " + std::to_string(store_.size()));
+  const std::string what = "illumination viewpoint " + std::to_string(store_.size());
+  if (!built_ && (lightings_ > 0 || !frames_.empty()))
+    throw std::logic_error("IlluminationMap: AddViewpoint while acquiring");
+  view.Check(what);
   const auto inv = view.planes.find(kInvariantPlane);
   const auto shapes = view.planes.find(kShapesPlane);
-  if (inv == view.planes.end() || shapes == view.planes.end() || inv->second.depth() != CV_32F ||
-      shapes->second.depth() != CV_8U || shapes->second.channels() != lightings ||
-      !(inv->second.channels() == 2 || inv->second.channels() == 4))
-    throw std::invalid_argument("illumination viewpoint " + std::to_string(store_.size()) +
-                                ": needs planes 'invariant' (float, 2 or 4 channels) and "
-                                "'shapes' (8-bit, one channel per lighting)");
-  if (!(model.model.luminance.alpha > 0.0 && model.model.luminance.beta > 0.0))
-    throw std::invalid_argument("illumination viewpoint " + std::to_string(store_.size()) +
-                                ": no luminance gamma model");
-  if (lightings_ != 0 && lightings != lightings_)
-    throw std::invalid_argument("illumination viewpoint " + std::to_string(store_.size()) + ": " +
-                                std::to_string(lightings) + " lightings, the map " +
-                                std::to_string(lightings_));
+  if (inv == view.planes.end() || shapes == view.planes.end() || inv->second.type() != CV_32FC4 ||
+      shapes->second.depth() != CV_8U || shapes->second.channels() != lightings)
+    throw std::invalid_argument(what +
+                                ": needs planes 'invariant' (float, r̂ of three channels and the "
+                                "coverage) and 'shapes' (8-bit, one channel per lighting)");
+  if (size() && (view.camera.width != store_.camera(0).width ||
+                 view.camera.height != store_.camera(0).height))
+    throw std::invalid_argument(what + ": another image size than viewpoint 0's");
+  const IlluminationModel& m = model.model;
+  if (!(m.luminance.alpha > 0.0 && m.luminance.beta > 0.0 && std::isfinite(m.luminance.alpha) &&
+        std::isfinite(m.luminance.beta) && m.luminance_step > 0.0 && m.saturation_step > 0.0 &&
+        model.coverage > 0.0 && model.coverage <= 1.0))
+    throw std::invalid_argument(what + ": no usable luminance gamma model, widths or coverage");
+  if (lightings < 2 || lightings > kMaxLightings || (size() && lightings != lightings_))
+    throw std::invalid_argument(what + ": " + std::to_string(lightings) + " lightings" +
+                                (size() ? ", the map " + std::to_string(lightings_) : ""));
   lightings_ = lightings;
   store_.Add(std::move(view));
   models_.push_back(std::move(model));
@@ -236,6 +280,10 @@ IlluminationMapResult IlluminationMap::Detect(const core::Frame& frame) const {
   if (!built_) throw std::logic_error("IlluminationMap: Detect before Build");
   if (!frame.T_world_cam)
     throw std::invalid_argument("IlluminationMap: " + FrameName(frame) + " has no pose");
+  if (frame.rgb.type() != CV_8UC3 || frame.camera.width != frame.rgb.cols ||
+      frame.camera.height != frame.rgb.rows)
+    throw std::invalid_argument("IlluminationMap: " + FrameName(frame) +
+                                " must be 8-bit RGB of its camera's size");
   if (frame.rgb.cols != store_.camera(0).width || frame.rgb.rows != store_.camera(0).height)
     throw std::invalid_argument(
         "IlluminationMap: " + FrameName(frame) + " is " + std::to_string(frame.rgb.cols) + "x" +
@@ -271,7 +319,11 @@ IlluminationMapResult IlluminationMap::Detect(const core::Frame& frame) const {
   std::vector<cv::Mat> channels;
   cv::split(inv.value, channels);
   cv::Mat covered = (channels.back() >= 0.5f) & inv.valid;  // NaN compares false
+  // r̂ is 0 where a viewpoint has no value, so the blend is the coverage-weighted sum: divided by
+  // the blended coverage it is the average over the viewpoints that have one.
+  const cv::Mat coverage = channels.back();
   channels.pop_back();
+  for (cv::Mat& c : channels) cv::divide(c, coverage, c);
   cv::Mat log_invariant;
   cv::merge(channels, log_invariant);
   log_invariant.setTo(cv::Scalar::all(0), ~covered);

@@ -39,6 +39,9 @@
 
 namespace novelty::illumination {
 
+/// Most lightings a map holds (a map file's shapes plane has a channel per lighting).
+inline constexpr int kMaxLightings = 64;
+
 struct IlluminationMapOptions {
   /// A frame of the first lighting becomes a viewpoint when its camera is at least this far (m)
   /// from the last viewpoint's ...
@@ -79,14 +82,17 @@ class IlluminationMap {
   explicit IlluminationMap(const IlluminationMapOptions& options = {});
 
   /// Starts the next lighting (the first call starts lighting 0). Frames added before any call
-  /// belong to lighting 0. Throws std::logic_error after Build().
+  /// belong to lighting 0. Ending a lighting renders its virtual images (the first also places
+  /// the viewpoints); if that throws, the map is as before the call. Throws std::logic_error
+  /// after Build(), std::invalid_argument for a lighting without frames or beyond kMaxLightings.
   void BeginLighting();
   /// A training frame of the current lighting: RGB, depth and pose required (std::invalid_argument
   /// naming the frame otherwise); all frames must share one camera.
   void AddTrainingFrame(const core::Frame& frame);
-  /// Makes the invariant images and models. Throws std::invalid_argument with fewer than two
-  /// lightings (one lighting gives no invariant image) or when no viewpoint is covered by enough
-  /// of them; viewpoints below min_viewpoint_coverage are dropped and counted.
+  /// Makes the invariant images and models. Throws std::invalid_argument, leaving the map as it
+  /// was, with fewer than two lightings (one lighting gives no invariant image) or when no
+  /// viewpoint is covered by enough of them; viewpoints below min_viewpoint_coverage are dropped
+  /// and counted.
   void Build();
   bool built() const { return built_; }
 
@@ -101,7 +107,9 @@ class IlluminationMap {
   /// "shapes" (CV_8UC(M): per lighting 255 where i_Y > T_Y).
   const views::ReferenceView& view(int i) const { return store_.view(i); }
   const IlluminationViewpointModel& model(int i) const { return models_.at(std::size_t(i)); }
-  /// Adds a built viewpoint (a loaded map's); checked like a built one.
+  /// Adds a built viewpoint (a loaded map's): planes as view() describes, a usable model, the
+  /// same image size and lightings as the others. Throws std::invalid_argument otherwise,
+  /// std::logic_error on a map that is acquiring.
   void AddViewpoint(views::ReferenceView view, IlluminationViewpointModel model, int lightings);
   /// The viewpoints (their geometry: poses for drawing, selection).
   const views::ReferenceViewStore& store() const { return store_; }
@@ -111,8 +119,13 @@ class IlluminationMap {
   std::size_t BytesUsed() const;
 
  private:
-  void RenderLighting();  // the current lighting's virtual images at every viewpoint
-  void PlaceViewpoints();
+  struct RenderedLighting {
+    std::vector<cv::Mat> rgb, valid;  // per viewpoint
+  };
+  views::ReferenceViewStore PlacedViewpoints() const;  // along the current frames' path
+  // The current lighting's virtual images at every viewpoint.
+  RenderedLighting RenderLighting(const views::ReferenceViewStore& viewpoints) const;
+  void Append(const RenderedLighting& rendered);
 
   IlluminationMapOptions options_;
   ZernikeMoments zernike_;

@@ -132,6 +132,59 @@ TEST(IlluminationMap, InterpolatedInvariantImageIsTheLogReflectance) {
   }
 }
 
+TEST(IlluminationMap, AtTheEdgeOfAViewpointsCoverageTheInvariantIsNotDimmed) {
+  // Two lightings, the second seen only from the first 10 cm of the path: the viewpoints farther
+  // along have an invariant value only where its virtual images reach, and a frame there sees
+  // the border. Along it the blend mixes samples with and without a value; r̂ must still be the
+  // average over the samples that have one (r̂ is stored as 0 where there is none).
+  IlluminationMap map;
+  map.BeginLighting();
+  for (int k = 0; k <= 15; ++k) map.AddTrainingFrame(Render(0.02 * k, kLightings[0], k + 1));
+  map.BeginLighting();
+  for (int k = 0; k <= 5; ++k) map.AddTrainingFrame(Render(0.02 * k, kLightings[1], k + 20));
+  map.Build();
+  cv::Mat log_r;
+  const core::Frame frame =
+      Render(0.29, {1.05, {100, 100}}, 1001, nullptr, nullptr, &log_r, nullptr);
+  const IlluminationMapResult r = map.Detect(frame);
+  ASSERT_GT(r.coverage, 0.3);
+  ASSERT_LT(r.coverage, 0.95);
+  std::vector<cv::Mat> est, tru;
+  cv::split(r.viewpoint.log_invariant, est);
+  cv::split(log_r, tru);
+  for (int c = 0; c < 3; ++c) {
+    cv::Mat d = est[c] - tru[c];
+    d -= cv::mean(d, r.viewpoint.covered)[0];
+    double worst = 0.0;
+    cv::minMaxLoc(cv::abs(d), nullptr, &worst, nullptr, nullptr, r.viewpoint.covered);
+    // Log values are about 4: a border pixel at 60 % coverage would be 1.6 off. Two lightings
+    // leave the shadows' edges in (the median of two is their mean): 0.5 at most.
+    EXPECT_LT(worst, 0.5) << "channel " << c;
+  }
+}
+
+TEST(IlluminationMap, AFailedBuildLeavesTheMapToGoOn) {
+  IlluminationMap map;
+  map.BeginLighting();
+  for (int k = 0; k <= 15; ++k) map.AddTrainingFrame(Render(0.02 * k, kLightings[0], k + 1));
+  EXPECT_THROW(map.Build(), std::invalid_argument);  // one lighting
+  EXPECT_FALSE(map.built());
+  map.BeginLighting();
+  for (int k = 0; k <= 15; ++k) map.AddTrainingFrame(Render(0.02 * k, kLightings[1], k + 20));
+  map.Build();
+  EXPECT_EQ(map.lightings(), 2);
+  EXPECT_EQ(map.size(), 6);
+  EXPECT_EQ(map.view(0).planes.at("shapes").channels(), 2);
+  // A loaded viewpoint cannot join a map that is acquiring.
+  IlluminationMap acquiring;
+  acquiring.AddTrainingFrame(Render(0, kLightings[0], 1));
+  EXPECT_THROW(acquiring.AddViewpoint(map.view(0), map.model(0), 2), std::logic_error);
+  // Nor one of another lighting count into a map.
+  IlluminationMap loaded;
+  loaded.AddViewpoint(map.view(0), map.model(0), 2);
+  EXPECT_THROW(loaded.AddViewpoint(map.view(1), map.model(1), 3), std::invalid_argument);
+}
+
 TEST(IlluminationMap, ANewObjectStandsOutAndANewShadowDoesNot) {
   const IlluminationMap map = Learnt();
   const NewObject object{{0.25, -0.15, 0.15, 0.15}, {0.6, 0.2, 0.2}};
