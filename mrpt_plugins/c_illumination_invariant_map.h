@@ -6,10 +6,18 @@
 // - Declared in a CMultiMetricMap .ini ("CIlluminationInvariantMap_count = 1", options in
 //   "<prefix>_options" with the keys of share/illumination_invariant.ini; unknown keys are
 //   errors).
-// - Acquisition: one rawlog per lighting (6.1). beginLighting() before each; insertObservation
-//   takes RGB-D observations (CObservation3DRangeScan with an intensity image) with the robot
-//   pose, all in one frame (a tracker's, or registered: 6.1.1); finishAcquisition() makes the
-//   invariant images and models (slow: seconds per viewpoint with uncovered pixels).
+// - Acquisition: one pass of the robot per lighting (6.1), the lamps fixed during it (leave out
+//   frames taken while they move); the first lighting's path places the viewpoints.
+//   beginLighting() before each; insertObservation takes CObservation3DRangeScan with a range
+//   (depth) and an intensity image — in acquisition and in detection; other observation types
+//   are skipped (returns false) — with the robot pose, all in one frame (a tracker's, or
+//   registered: 6.1.1); without a pose the robot is at the origin and the camera at sensorPose.
+//   beginLighting() renders the ending lighting's virtual images and finishAcquisition() makes
+//   the invariant images and models: both slow (up to a second per viewpoint where virtual images
+//   leave pixels uncovered), both throw std::invalid_argument and leave the map as it was (a
+//   lighting without frames, fewer than two lightings, no viewpoint covered).
+// - In a CMultiMetricMap every map gets every observation: a CAppearanceMap beside this one
+//   learns the training lightings too; a multimap holding a map still acquiring cannot be saved.
 // - Detection: after that, insertObservation judges each frame against the map interpolated at
 //   its pose; lastResult() holds the interpolated invariant image, the information maps and the
 //   novelty Δ (eq. 6.24), and the *Image() methods draw them as MRPT images.
@@ -53,8 +61,10 @@ class CIlluminationInvariantMap : public mrpt::maps::CMetricMap {
   /// The last judged frame and its result (empty before the first).
   const core::Frame& lastFrame() const { return last_frame_; }
   const illumination::IlluminationMapResult& lastResult() const { return last_; }
-  /// Pictures of the last result: the interpolated invariant image (linear, 0…255), the novelty
-  /// Δ in false colour up to `max_novelty`, the luminance information i_Y up to `max_information`.
+  /// Pictures of the last result: the interpolated invariant image (exp r̂: the reflectance on
+  /// the camera's 0…255 scale, up to the constant r̂ is defined with), the novelty Δ in false
+  /// colour up to `max_novelty` and the luminance information i_Y up to `max_information` (both
+  /// in nats, eq. 6.17 and 6.24; T_Y, asString's mean, is where i_Y starts a region).
   mrpt::img::CImage invariantImage() const;
   mrpt::img::CImage noveltyImage(double max_novelty = 20.0) const;
   mrpt::img::CImage informationImage(double max_information = 10.0) const;

@@ -21,7 +21,7 @@ const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfi
         .AddChoice(
             "colour", [](C & c) -> auto& { return c.map.invariant.colour; },
             {"per-channel", "luminance-chromaticity"},
-            "invariant image per RGB channel (the thesis) or luminance + chromaticity")
+            "per-channel (each RGB channel, the thesis) | luminance-chromaticity (scores better on the table and specular scenes)")
         .Add(
             "min_intensity", [](C & c) -> auto& { return c.map.invariant.min_intensity; },
             "0..255, smaller intensities are clipped before the log (6.1.2; 3 as the MIT code)")
@@ -46,8 +46,8 @@ const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfi
         .AddChoice(
             "shape_scale", [](C & c) -> auto& { return c.map.novelty.shape_scale; },
             {"frame", "empty"},
-            "e-hat of eq. 6.24: the frame's largest e (the thesis) or each region's distance to "
-            "the empty shape")
+            "e-hat of eq. 6.24: frame (the frame's largest e, the thesis) | empty (each region's "
+            "distance to the empty shape)")
         .Check([](const C& c) {
           const illumination::IlluminationMapOptions& o = c.map;
           CheckInRange(o.viewpoint_distance, 0, 100, "viewpoint_distance");
