@@ -21,7 +21,8 @@ const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfi
         .AddChoice(
             "colour", [](C & c) -> auto& { return c.map.invariant.colour; },
             {"per-channel", "luminance-chromaticity"},
-            "per-channel (each RGB channel, the thesis) | luminance-chromaticity (scores better on the table and specular scenes)")
+            "per-channel (each RGB channel, the thesis) | luminance-chromaticity (scores better on "
+            "the table and specular scenes)")
         .Add(
             "min_intensity", [](C & c) -> auto& { return c.map.invariant.min_intensity; },
             "0..255, smaller intensities are clipped before the log (6.1.2; 3 as the MIT code)")
