@@ -16,6 +16,12 @@ std::string FrameName(const core::Frame& f) {
   return "frame " + std::to_string(f.index) + (f.label.empty() ? "" : " (" + f.label + ")");
 }
 
+// Throws unless the frame's image is 8-bit RGB of its camera's size (`name` says which frame).
+void CheckFrameImage(const core::Frame& f, const std::string& name) {
+  if (f.rgb.type() != CV_8UC3 || f.rgb.cols != f.camera.width || f.rgb.rows != f.camera.height)
+    throw std::invalid_argument(name + " must be 8-bit RGB of its camera's size");
+}
+
 double AngleDeg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
   return Eigen::AngleAxisd(a.rotation().transpose() * b.rotation()).angle() * 180.0 / M_PI;
 }
@@ -99,7 +105,7 @@ void IlluminationMap::BeginLighting() {
   views::ReferenceViewStore placed = store_.size() ? store_ : PlacedViewpoints();
   RenderedLighting rendered = RenderLighting(placed);
   store_ = std::move(placed);
-  Append(rendered);
+  Append(rendered, virtual_rgb_, virtual_valid_);
   frames_.clear();
   ++lightings_;
 }
@@ -110,9 +116,7 @@ void IlluminationMap::AddTrainingFrame(const core::Frame& frame) {
   if (!frame.T_world_cam) throw std::invalid_argument(name + " has no pose");
   if (frame.rgb.empty() || frame.depth.empty())
     throw std::invalid_argument(name + " needs an image and a depth map");
-  if (frame.rgb.type() != CV_8UC3 || frame.rgb.cols != frame.camera.width ||
-      frame.rgb.rows != frame.camera.height)
-    throw std::invalid_argument(name + " must be 8-bit RGB of its camera's size");
+  CheckFrameImage(frame, name);
   views::ReferenceViewOf(frame).Check(name);  // rigid pose, float depth of the image's size
   const core::PinholeCamera& first =
       !frames_.empty() ? frames_.front().camera : (size() ? store_.camera(0) : frame.camera);
@@ -179,12 +183,14 @@ IlluminationMap::RenderedLighting IlluminationMap::RenderLighting(
   return out;
 }
 
-void IlluminationMap::Append(const RenderedLighting& rendered) {
-  virtual_rgb_.resize(rendered.rgb.size());
-  virtual_valid_.resize(rendered.rgb.size());
+void IlluminationMap::Append(const RenderedLighting& rendered,
+                             std::vector<std::vector<cv::Mat>>& images,
+                             std::vector<std::vector<cv::Mat>>& masks) {
+  images.resize(rendered.rgb.size());
+  masks.resize(rendered.rgb.size());
   for (std::size_t v = 0; v < rendered.rgb.size(); ++v) {
-    virtual_rgb_[v].push_back(rendered.rgb[v]);
-    virtual_valid_[v].push_back(rendered.valid[v]);
+    images[v].push_back(rendered.rgb[v]);
+    masks[v].push_back(rendered.valid[v]);
   }
 }
 
@@ -193,13 +199,7 @@ void IlluminationMap::Build() {
   // Everything into locals first: a Build that throws leaves the map as it was.
   views::ReferenceViewStore viewpoints = store_.size() ? store_ : PlacedViewpoints();
   std::vector<std::vector<cv::Mat>> images = virtual_rgb_, masks = virtual_valid_;
-  if (!frames_.empty()) {
-    const RenderedLighting r = RenderLighting(viewpoints);
-    images.resize(r.rgb.size());
-    masks.resize(r.rgb.size());
-    for (std::size_t v = 0; v < r.rgb.size(); ++v)
-      images[v].push_back(r.rgb[v]), masks[v].push_back(r.valid[v]);
-  }
+  if (!frames_.empty()) Append(RenderLighting(viewpoints), images, masks);
   const int lightings = images.empty() ? 0 : int(images.front().size());
   if (lightings < 2)
     throw std::invalid_argument("IlluminationMap: " + std::to_string(lightings) +
@@ -280,10 +280,7 @@ IlluminationMapResult IlluminationMap::Detect(const core::Frame& frame) const {
   if (!built_) throw std::logic_error("IlluminationMap: Detect before Build");
   if (!frame.T_world_cam)
     throw std::invalid_argument("IlluminationMap: " + FrameName(frame) + " has no pose");
-  if (frame.rgb.type() != CV_8UC3 || frame.camera.width != frame.rgb.cols ||
-      frame.camera.height != frame.rgb.rows)
-    throw std::invalid_argument("IlluminationMap: " + FrameName(frame) +
-                                " must be 8-bit RGB of its camera's size");
+  CheckFrameImage(frame, "IlluminationMap: " + FrameName(frame));
   if (frame.rgb.cols != store_.camera(0).width || frame.rgb.rows != store_.camera(0).height)
     throw std::invalid_argument(
         "IlluminationMap: " + FrameName(frame) + " is " + std::to_string(frame.rgb.cols) + "x" +

@@ -125,7 +125,9 @@ class IlluminationMap {
   views::ReferenceViewStore PlacedViewpoints() const;  // along the current frames' path
   // The current lighting's virtual images at every viewpoint.
   RenderedLighting RenderLighting(const views::ReferenceViewStore& viewpoints) const;
-  void Append(const RenderedLighting& rendered);
+  // Each viewpoint's virtual image and mask of one lighting onto its lists.
+  static void Append(const RenderedLighting& rendered, std::vector<std::vector<cv::Mat>>& images,
+                     std::vector<std::vector<cv::Mat>>& masks);
 
   IlluminationMapOptions options_;
   ZernikeMoments zernike_;
