@@ -560,6 +560,11 @@ int main(int argc, char** argv) {
         "", "viewpoint-distance",
         "Moving camera: metres between the map's viewpoints along the first lighting's path", false,
         map_defaults.viewpoint_distance, "M", cmd);
+    TCLAP::SwitchArg missing_texture(
+        "", "missing-texture",
+        "Also judge the texture the invariant image has and the frame lacks (beyond the thesis: "
+        "finds objects coloured like the surface they hide)",
+        cmd);
     cmd.Parse(argc, argv);
     if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
       throw std::invalid_argument("--kappa must be in [0, 1)");
@@ -577,6 +582,7 @@ int main(int argc, char** argv) {
             ? illumination::InvariantImageOptions::Colour::kPerChannel
             : illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
     settings.model.kappa = kappa.getValue();
+    settings.model.missing_texture = missing_texture.getValue();
     settings.zernike.max_order = max_order.getValue();
     settings.zernike.grid = grid.getValue();
     settings.viewpoint_distance = viewpoint_distance.getValue();

@@ -25,6 +25,7 @@ namespace novelty::mrpt_plugins {
 namespace {
 
 constexpr int32_t kMaxViewpoints = 100000;
+constexpr int32_t kMaxTailEntries = 4096;  // a missing-texture tail table (64 by default)
 
 [[noreturn]] void Corrupt(const std::string& what) {
   throw std::runtime_error(std::string(kMapFileError) + what);
@@ -133,8 +134,10 @@ void CIlluminationInvariantMap::saveMetricMapRepresentationToFile(const std::str
 // per viewpoint its view (map_files.h WriteView: camera, pose, depth, planes "invariant" and
 // "shapes"), its coverage and its model (gamma fits of luminance and saturation, quantisation
 // widths, mean information, T_Y).
+// Version 1 adds per viewpoint the missing texture's tail table (entries, values, ln(N + 1); no
+// entries: not learnt), energy floor and block; its scale is the view's plane "texture".
 uint8_t CIlluminationInvariantMap::serializeGetVersion() const {
-  return 0;
+  return 1;
 }
 
 void CIlluminationInvariantMap::serializeTo(mrpt::serialization::CArchive& out) const {
@@ -151,12 +154,16 @@ void CIlluminationInvariantMap::serializeTo(mrpt::serialization::CArchive& out) 
     WriteFit(out, m.model.saturation);
     out << m.model.luminance_step << m.model.saturation_step << m.model.mean_information
         << m.model.threshold;
+    out << int32_t(m.model.texture.values.size());
+    for (float v : m.model.texture.values) out << v;
+    out << m.model.texture.max_information << m.model.texture_floor
+        << int32_t(m.model.texture_block);
   }
 }
 
 void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-  if (version > 0)
-    Corrupt("format version " + std::to_string(version) + ", newer than this program's (0)");
+  if (version > 1)
+    Corrupt("format version " + std::to_string(version) + ", newer than this program's (1)");
   IlluminationInvariantMapConfig config;
   IlluminationInvariantMapConfig::Table().Read(in, config);
   int32_t lightings = 0, viewpoints = 0;
@@ -175,9 +182,20 @@ void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in,
     m.model.saturation = ReadFit(in);
     in >> m.model.luminance_step >> m.model.saturation_step >> m.model.mean_information >>
         m.model.threshold;
+    if (version >= 1) {
+      int32_t entries = 0, block = 0;
+      in >> entries;
+      if (entries < 0 || entries > kMaxTailEntries)
+        Corrupt(what + ": " + std::to_string(entries) + " tail entries");
+      m.model.texture.values.resize(std::size_t(entries));
+      for (float& v : m.model.texture.values) in >> v;
+      in >> m.model.texture.max_information >> m.model.texture_floor >> block;
+      m.model.texture_block = block;  // AddViewpoint checks the table, floor and block
+    }
     for (double v :
          {m.coverage, m.model.luminance_step, m.model.saturation_step, m.model.mean_information,
-          m.model.threshold, m.model.saturation.alpha, m.model.saturation.beta})
+          m.model.threshold, m.model.saturation.alpha, m.model.saturation.beta,
+          m.model.texture.max_information, m.model.texture_floor})
       if (!std::isfinite(v) || v < 0) Corrupt(what + ": a model value is negative or not finite");
     try {
       map->AddViewpoint(std::move(view), std::move(m), lightings);

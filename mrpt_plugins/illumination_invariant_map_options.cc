@@ -33,6 +33,13 @@ const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfi
             "kappa", [](C & c) -> auto& { return c.map.model.kappa; },
             "kappa of T_Y = mean / (1 - kappa) (eq. 6.18: 0.5 Lambertian, 0.2 specular)")
         .Add(
+            "missing_texture", [](C & c) -> auto& { return c.map.model.missing_texture; },
+            "also judge the texture r-hat has and the frame lacks (beyond the thesis; finds "
+            "objects coloured like the surface they hide)")
+        .Add(
+            "texture_block", [](C & c) -> auto& { return c.map.model.texture.block; },
+            "pixels per side (odd) of the block the missing texture is summed over")
+        .Add(
             "zernike_max_order", [](C & c) -> auto& { return c.map.zernike.max_order; },
             "highest Zernike order (eq. 6.21; the thesis 120, see zernike_moments.h)")
         .Add(
@@ -57,6 +64,10 @@ const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfi
           CheckInRange(o.invariant.min_intensity, 1e-3, 255, "min_intensity");
           CheckInRange(o.invariant.min_lightings, 2, 1000, "min_lightings");
           CheckInRange(o.model.kappa, 0, 0.999, "kappa");
+          CheckInRange(o.model.texture.block, 1, 99, "texture_block");
+          if (o.model.texture.block % 2 == 0)
+            throw std::invalid_argument("texture_block: " + std::to_string(o.model.texture.block) +
+                                        " is even; the block needs a centre pixel");
           CheckInRange(o.zernike.max_order, 0, 200, "zernike_max_order");
           CheckInRange(o.zernike.grid, 2, 512, "zernike_grid");
           CheckInRange(o.novelty.min_region_pixels, 1, 1000000, "min_region_pixels");

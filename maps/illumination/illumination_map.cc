@@ -1,5 +1,6 @@
 #include "maps/illumination/illumination_map.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -11,6 +12,7 @@ namespace {
 
 constexpr char kInvariantPlane[] = "invariant";
 constexpr char kShapesPlane[] = "shapes";
+constexpr char kTexturePlane[] = "texture";  // IlluminationModel::texture_scale, when learnt
 
 std::string FrameName(const core::Frame& f) {
   return "frame " + std::to_string(f.index) + (f.label.empty() ? "" : " (" + f.label + ")");
@@ -52,6 +54,7 @@ IlluminationModel MeanModel(const std::vector<const IlluminationModel*>& models,
   m.luminance.alpha = m.luminance.beta = m.saturation.alpha = m.saturation.beta = 0.0;
   m.mean_information = m.threshold = 0.0;
   double total = 0.0, saturation_total = 0.0;
+  bool texture = true;
   for (std::size_t k = 0; k < models.size(); ++k) {
     const double w = weights[k];
     const IlluminationModel& o = *models[k];
@@ -65,12 +68,24 @@ IlluminationModel MeanModel(const std::vector<const IlluminationModel*>& models,
       m.saturation.alpha += w * o.saturation.alpha;
       m.saturation.beta += w * o.saturation.beta;
     }
+    texture = texture && !o.texture.empty();
   }
   for (double* v : {&m.luminance.alpha, &m.luminance.beta, &m.mean_information, &m.threshold})
     *v /= total;
   if (saturation_total > 0.0) {
     m.saturation.alpha /= saturation_total;
     m.saturation.beta /= saturation_total;
+  }
+  // The missing texture only where every viewpoint learnt it (its scale plane is blended).
+  m.texture = {};
+  m.texture_floor = 0.0;
+  if (texture) {
+    std::vector<const stats::TailTable*> tables;
+    for (std::size_t k = 0; k < models.size(); ++k) {
+      tables.push_back(&models[k]->texture);
+      m.texture_floor += weights[k] * models[k]->texture_floor / total;
+    }
+    m.texture = stats::MeanTail(tables, weights);
   }
   return m;
 }
@@ -225,6 +240,8 @@ void IlluminationMap::Build() {
       view.planes[kInvariantPlane] = InvariantPlane(inv);
       view.planes[kShapesPlane] = ShapesPlane(m.model.shapes);
       m.model.shapes.clear();
+      if (!m.model.texture_scale.empty()) view.planes[kTexturePlane] = m.model.texture_scale;
+      m.model.texture_scale.release();
       kept.Add(std::move(view));
       models.push_back(std::move(m));
     } catch (const std::invalid_argument& e) {
@@ -259,6 +276,21 @@ void IlluminationMap::AddViewpoint(views::ReferenceView view, IlluminationViewpo
     throw std::invalid_argument(what +
                                 ": needs planes 'invariant' (float, r̂ of three channels and the "
                                 "coverage) and 'shapes' (8-bit, one channel per lighting)");
+  const auto texture = view.planes.find(kTexturePlane);
+  const stats::TailTable& tail = model.model.texture;
+  if (tail.empty() != (texture == view.planes.end()) ||
+      (!tail.empty() &&
+       (texture->second.type() != CV_32FC1 || tail.values.size() < 2 ||
+        !std::is_sorted(tail.values.begin(), tail.values.end()) ||
+        !std::all_of(tail.values.begin(), tail.values.end(),
+                     [](float v) { return std::isfinite(v); }) ||
+        !(tail.max_information > 0.0 && std::isfinite(tail.max_information)) ||
+        !(model.model.texture_floor > 0.0 && std::isfinite(model.model.texture_floor)) ||
+        model.model.texture_block < 1 || model.model.texture_block % 2 == 0)))
+    throw std::invalid_argument(what +
+                                ": a missing-texture model needs its 'texture' plane (float, one "
+                                "channel), a sorted finite tail table, a floor > 0 and an odd "
+                                "block");
   if (size() && (view.camera.width != store_.camera(0).width ||
                  view.camera.height != store_.camera(0).height))
     throw std::invalid_argument(what + ": another image size than viewpoint 0's");
@@ -296,13 +328,15 @@ IlluminationMapResult IlluminationMap::Detect(const core::Frame& frame) const {
   views::DepthMeshWarper warper(options_.synthesis.warp,
                                 views::WarpOutputsFor(options_.synthesis.blend));
   std::vector<views::SourceView> sources;
-  std::vector<cv::Mat> invariant_planes, shape_planes;
+  std::vector<cv::Mat> invariant_planes, shape_planes, texture_planes;
   std::vector<const IlluminationModel*> models;
   for (int i : sel.views) {
     const views::ReferenceView& v = store_.view(i);
     sources.push_back({&v.camera, &v.T_world_cam, &v.depth, nullptr});
     invariant_planes.push_back(v.planes.at(kInvariantPlane));
     shape_planes.push_back(v.planes.at(kShapesPlane));
+    const auto texture = v.planes.find(kTexturePlane);
+    if (texture != v.planes.end()) texture_planes.push_back(texture->second);
     models.push_back(&models_[std::size_t(i)].model);
   }
   std::vector<views::WarpField> fields;
@@ -331,6 +365,10 @@ IlluminationMapResult IlluminationMap::Detect(const core::Frame& frame) const {
   cv::split(shp.value, shapes);
   for (cv::Mat& s : shapes) s = (s >= 127.5f) & covered;
   model.shapes = std::move(shapes);
+  if (!model.texture.empty()) {  // every viewpoint has its plane (MeanModel)
+    model.texture_scale = views::BlendPlanes(fields, texture_planes, blend).value;
+    model.texture_scale.setTo(1.0f, ~covered);  // not used there; finite
+  }
   InvariantImage interpolated;
   interpolated.log_invariant = log_invariant;
   interpolated.covered = covered;

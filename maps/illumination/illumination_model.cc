@@ -30,6 +30,57 @@ void AppendSamples(const cv::Mat& values, const cv::Mat& valid, double step,
   }
 }
 
+// The mean of Σ|∇r̂|² / N over the covered pixels: the floor of HiddenTextureShare, so that
+// only texture stronger than the viewpoint's average can be hidden in full.
+double TextureFloor(const InvariantImage& invariant, const MissingTextureOptions& options) {
+  const double mean = cv::mean(GradientEnergy(invariant.log_invariant, invariant.covered, options),
+                               invariant.covered)[0];
+  return std::max(mean, 1e-12);
+}
+
+// The missing texture's scale and training sample. Per pixel the scale is the largest share of
+// texture any training image hides or adds there (at a fold or an object's outline lighting
+// changes the contrast either way), plus the mean over all pixels and images: a floor, so that on
+// flat surfaces, where lighting changes no texture, the share is not divided by 0. Each training
+// image's u is taken against the largest of the *other* images (leave one out): a new frame is
+// not part of the maximum it is compared with, and a sample measured against its own maximum
+// would never exceed 1 — every new frame's noise above it would look as rare as can be.
+struct TextureStatistics {
+  cv::Mat scale;
+  std::vector<float> samples;
+};
+
+TextureStatistics LearnTextureStatistics(const std::vector<cv::Mat>& hidden,
+                                         const std::vector<cv::Mat>& valid) {
+  const cv::Size size = hidden.front().size();
+  cv::Mat first = cv::Mat::zeros(size, CV_32F), second = first.clone();
+  double sum = 0.0, count = 0.0;
+  for (std::size_t m = 0; m < hidden.size(); ++m)
+    for (int y = 0; y < size.height; ++y)
+      for (int x = 0; x < size.width; ++x) {
+        if (!valid[m].at<uchar>(y, x)) continue;
+        const float h = std::abs(hidden[m].at<float>(y, x));
+        float &a = first.at<float>(y, x), &b = second.at<float>(y, x);
+        if (h >= a)
+          b = a, a = h;
+        else if (h > b)
+          b = h;
+        sum += h, count += 1.0;
+      }
+  const float floor = float((count > 0.0 ? sum / count : 0.0) + 1e-6);
+  TextureStatistics out;
+  out.scale = first + floor;
+  for (std::size_t m = 0; m < hidden.size(); ++m)
+    for (int y = 0; y < size.height; ++y)
+      for (int x = 0; x < size.width; ++x) {
+        if (!valid[m].at<uchar>(y, x)) continue;
+        const float h = hidden[m].at<float>(y, x), a = first.at<float>(y, x);
+        const float others = std::abs(h) >= a ? second.at<float>(y, x) : a;
+        out.samples.push_back(std::max(h, 0.0f) / (others + floor));
+      }
+  return out;
+}
+
 }  // namespace
 
 IlluminationComponents ComputeIlluminationComponents(const cv::Mat& log_illumination) {
@@ -85,12 +136,26 @@ IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
   std::vector<IlluminationComponents> components;
   std::vector<cv::Mat> valid;  // per image: covered by the invariant image and by the image
   std::vector<double> luminance, saturation;
+  std::vector<float> texture;
+  std::vector<cv::Mat> hidden;  // per image, with options.missing_texture
+  cv::Mat texture_scale;
+  const double texture_floor =
+      options.missing_texture ? TextureFloor(invariant, options.texture) : 0.0;
   for (std::size_t m = 0; m < m_count; ++m) {
     components.push_back(ComputeIlluminationComponents(invariant.log_illumination[m]));
     valid.push_back(Valid(invariant, coverage, m));
     AppendSamples(components.back().luminance, valid[m], options.luminance_step, luminance);
     if (!components.back().saturation.empty())
       AppendSamples(components.back().saturation, valid[m], options.saturation_step, saturation);
+    if (options.missing_texture)
+      hidden.push_back(HiddenTextureShare(invariant.log_illumination[m] + invariant.log_invariant,
+                                          invariant.log_invariant, valid[m], texture_floor,
+                                          options.texture));
+  }
+  if (options.missing_texture) {
+    TextureStatistics statistics = LearnTextureStatistics(hidden, valid);
+    texture_scale = statistics.scale;
+    texture = std::move(statistics.samples);
   }
   if (luminance.empty()) throw std::invalid_argument("LearnIlluminationModel: no pixel is covered");
   IlluminationModel model;
@@ -106,6 +171,12 @@ IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
   if (!saturation.empty()) {
     const stats::GammaFit s = stats::FitGammaML(saturation);
     if (s.status != stats::GammaFit::Status::kConstant) model.saturation = s;
+  }
+  if (options.missing_texture) {
+    model.texture = stats::LearnTail(texture);
+    model.texture_block = options.texture.block;
+    model.texture_floor = texture_floor;
+    model.texture_scale = texture_scale;
   }
   std::vector<cv::Mat> information;
   double sum = 0.0, count = 0.0;

@@ -21,7 +21,9 @@
 #include <vector>
 
 #include "maps/illumination/invariant_image.h"
+#include "maps/illumination/missing_texture.h"
 #include "maps/stats/gamma_ml_fit.h"
+#include "maps/stats/tail_information.h"
 
 namespace novelty::illumination {
 
@@ -34,6 +36,12 @@ struct IlluminationModelOptions {
   double luminance_step = 1.0 / 128.0;
   /// The same for the saturation (0…1 in 8 bits).
   double saturation_step = 1.0 / 255.0;
+  /// Beyond the thesis: also learn how much of r̂'s texture lighting hides (missing_texture.h),
+  /// whose information i_T joins i_Y and i_S in Δ (eq. 6.24). Lighting leaves r̂'s texture in
+  /// the log image; an object on a textured surface removes it, also where its own colour is
+  /// the surface's, which i_Y and i_S cannot see.
+  bool missing_texture = false;
+  MissingTextureOptions texture;
 };
 
 /// One image's luminance and saturation (CV_32FC1 each; the saturation is empty for one-channel
@@ -47,6 +55,17 @@ struct IlluminationModel {
   stats::GammaFit saturation;  ///< a_S, b_S (α = β = 0 for one-channel or colourless images)
   double luminance_step = 1.0 / 128.0;  ///< the widths it was learnt with (eq. 6.17)
   double saturation_step = 1.0 / 255.0;
+  /// With IlluminationModelOptions::missing_texture (else empty): the hidden share h of r̂'s
+  /// texture (HiddenTextureShare, ≥ 0) relative to its scale at the pixel, u = h / texture_scale,
+  /// as the training images show it; i_T = −ln P(u' ≥ u). Its tail information saturates at
+  /// ln(N + 1) rather than growing with u, so that i_T cannot outweigh i_Y and i_S.
+  stats::TailTable texture;
+  int texture_block = 7;       ///< MissingTextureOptions::block it was learnt with
+  double texture_floor = 0.0;  ///< the energy floor of HiddenTextureShare: r̂'s mean energy
+  /// CV_32FC1: per pixel, the largest |h| of the training images plus the mean |h| of all.
+  /// Where the surface's normal changes (an object's outline, a fold) lighting changes the
+  /// contrast either way and hides texture on its own; the model learns how much, per pixel.
+  cv::Mat texture_scale;
   double mean_information = 0.0;  ///< mean of i_Y over all images' covered pixels
   double threshold = 0.0;         ///< T_Y (eq. 6.18)
   /// Per training image, CV_8UC1: 255 where i_Y > T_Y (highlights and strong shadows).

@@ -5,6 +5,9 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "maps/illumination/missing_texture.h"
+#include "maps/stats/tail_information.h"
+
 namespace novelty::illumination {
 
 namespace {
@@ -98,6 +101,23 @@ IlluminationNovelty DetectIlluminationNovelty(const cv::Mat& image,
   out.information_s = c.saturation.empty() || model.saturation.alpha <= 0.0
                           ? cv::Mat::zeros(image.size(), CV_32F)
                           : InformationMap(c.saturation, model.saturation_step, model.saturation);
+  if (!model.texture.empty()) {
+    if (model.texture_scale.size() != image.size() || model.texture_scale.type() != CV_32FC1)
+      throw std::invalid_argument(
+          "DetectIlluminationNovelty: the model's missing texture has no CV_32FC1 scale of the "
+          "image's size");
+    MissingTextureOptions texture;
+    texture.block = model.texture_block;
+    const cv::Mat hidden =
+        cv::max(HiddenTextureShare(log_l + viewpoint.log_invariant, viewpoint.log_invariant,
+                                   viewpoint.covered, model.texture_floor, texture),
+                0.0f);
+    out.information_t = hidden / model.texture_scale;
+    out.information_t.forEach<float>(
+        [&](float& u, const int*) { u = float(stats::TailInformation(model.texture, u)); });
+  } else {
+    out.information_t = cv::Mat::zeros(image.size(), CV_32F);
+  }
   out.regions = (out.information_y > viewpoint.model.threshold) & viewpoint.covered;
   // Step 3: each region against the stored shapes whose boxes meet its own.
   const std::vector<StoredShape> regions = Regions(out.regions, options.min_region_pixels);
@@ -124,6 +144,7 @@ IlluminationNovelty DetectIlluminationNovelty(const cv::Mat& image,
   // Step 4, eq. 6.24.
   cv::Mat magnitude;
   cv::magnitude(out.information_y, out.information_s, magnitude);
+  cv::magnitude(magnitude, out.information_t, magnitude);
   out.novelty = out.shape_factor.mul(magnitude);
   out.novelty.setTo(0.0f, viewpoint.covered == 0);
   return out;

@@ -8,6 +8,8 @@
 // leaves open what a region meets where no shape was stored: the empty shape, whose descriptor is
 // 0, so e = |d'| — a region unlike anything stored keeps a large e. ê is the largest e of the
 // frame's regions; pixels outside every region keep e/ê = 1 (their information is low anyway).
+// With a model that learnt the missing texture (IlluminationModelOptions::missing_texture, beyond
+// the thesis), its information i_T joins the sum: Δ = e/ê · sqrt(i_Y² + i_S² + i_T²).
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -64,10 +66,13 @@ ViewpointIllumination MakeViewpoint(const InvariantImage& invariant, Illuminatio
 
 struct IlluminationNovelty {
   cv::Mat information_y, information_s;  ///< eq. 6.17, CV_32FC1 (i_S 0 for grey images)
-  cv::Mat regions;                       ///< CV_8UC1, 255 where i_Y > T_Y
-  cv::Mat shape_factor;                  ///< e/ê in regions, 1 elsewhere
-  cv::Mat novelty;                       ///< Δ (eq. 6.24), CV_32FC1, 0 where not covered
-  int region_count = 0;                  ///< regions of at least min_region_pixels
+  /// i_T, the tail information of the texture the frame hides (IlluminationModel::texture), 0
+  /// when the model has none.
+  cv::Mat information_t;
+  cv::Mat regions;        ///< CV_8UC1, 255 where i_Y > T_Y
+  cv::Mat shape_factor;   ///< e/ê in regions, 1 elsewhere
+  cv::Mat novelty;        ///< Δ (eq. 6.24), CV_32FC1, 0 where not covered
+  int region_count = 0;   ///< regions of at least min_region_pixels
   int matched_count = 0;  ///< of them, those a stored shape explains better than none
 };
 

@@ -6,9 +6,11 @@
 # - plate_sixteen_lights.scn (6.4.2, fig. 6.13; κ = 0.2): the issue's lead (a TPR above both at
 #   every FPR ≤ 10 %, which contains the thesis's "below a FPR of 7 % the method ... outperforms
 #   the NGC algorithm"), also against NGC's and SCT's best training frame as the reference at
-#   FPR 1 % and 5 %. With --plate-auc, the issue's AUC ≥ 0.95 on the plate instead (not met:
-#   ctest illumination_plate_auc is disabled; docs/experiments.md says why).
-#   illumination_static.sh BIN_DIR SOURCE_DIR [--plate-auc]
+#   FPR 1 % and 5 %. The thesis's Δ misses the AUC ≥ 0.95 there (0.889: the white box on the
+#   white stripes has the cloth's reflectance).
+# - Both scenes with the options beyond the thesis (--colour luminance-chromaticity
+#   --missing-texture): both targets, AUC ≥ 0.95 and ahead at every FPR ≤ 10 %, on both.
+#   illumination_static.sh BIN_DIR SOURCE_DIR
 set -euo pipefail
 BIN=$(cd "$1" && pwd)
 SRC=$(cd "$2" && pwd)
@@ -31,18 +33,16 @@ value() {  # findings.csv, finding → value without " %"
 }
 above() { awk -v a="$1" -v b="$2" -v c="$3" 'BEGIN { exit !(a > b && a > c) }'; }
 
-if [ "${3:-}" = --plate-auc ]; then
-  run plate_sixteen_lights "$W/plate"
-  auc=$(value "$W/plate/findings.csv" "novelty: AUC")
-  awk -v a="$auc" 'BEGIN { exit !(a >= 0.95) }' || fail "plate: AUC $auc < 0.95"
-  exit $status
-fi
+both_targets() {  # findings.csv, scene name
+  local auc ahead
+  auc=$(value "$1" "novelty: AUC")
+  awk -v a="$auc" 'BEGIN { exit !(a >= 0.95) }' || fail "$2: AUC $auc < 0.95"
+  ahead=$(value "$1" "novelty TPR above NGC and SCT at every FPR <= 10 % (0.1 % steps)")
+  [ "$ahead" = yes ] || fail "$2: novelty not ahead at every FPR <= 10 % ($ahead)"
+}
 
 run washing_machine "$W/wm" --train-phase lightings --test-phase observation --kappa 0.5
-auc=$(value "$W/wm/findings.csv" "novelty: AUC")
-awk -v a="$auc" 'BEGIN { exit !(a >= 0.95) }' || fail "washing machine: AUC $auc < 0.95"
-ahead=$(value "$W/wm/findings.csv" "novelty TPR above NGC and SCT at every FPR <= 10 % (0.1 % steps)")
-[ "$ahead" = yes ] || fail "washing machine: novelty not ahead at every FPR <= 10 % ($ahead)"
+both_targets "$W/wm/findings.csv" "washing machine"
 
 run plate_sixteen_lights "$W/plate"
 ahead=$(value "$W/plate/findings.csv" "novelty TPR above NGC and SCT at every FPR <= 10 % (0.1 % steps)")
@@ -54,4 +54,11 @@ for baseline in NGC SCT; do
     [ "$holds" = yes ] || fail "plate: $row does not hold"
   done
 done
+
+options=(--colour luminance-chromaticity --missing-texture)
+run washing_machine "$W/wm_options" --train-phase lightings --test-phase observation --kappa 0.5 \
+  "${options[@]}"
+both_targets "$W/wm_options/findings.csv" "washing machine with ${options[*]}"
+run plate_sixteen_lights "$W/plate_options" "${options[@]}"
+both_targets "$W/plate_options/findings.csv" "plate with ${options[*]}"
 exit $status

@@ -125,5 +125,21 @@ TEST(AppearanceMapOptions, TheDifferencingMapTakesOnlyItsOwnKeys) {
                std::runtime_error);
 }
 
+TEST(AppearanceMapOptions, TheIlluminationMapReadsTheMissingTextureAndRefusesAnEvenBlock) {
+  const auto read = [](const std::string& text) {
+    return IlluminationInvariantMapConfig::FromConfig(mrpt::config::CConfigFileMemory(text), "i",
+                                                      "i.ini");
+  };
+  const auto c = read("[i]\nmissing_texture = true\ntexture_block = 9\n");
+  EXPECT_TRUE(c.map.model.missing_texture);
+  EXPECT_EQ(c.map.model.texture.block, 9);
+  try {
+    read("[i]\ntexture_block = 8\n");
+    ADD_FAILURE() << "an even block was taken";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("texture_block"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace novelty::mrpt_plugins

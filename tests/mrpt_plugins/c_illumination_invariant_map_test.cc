@@ -53,19 +53,24 @@ struct Acquired {
   std::shared_ptr<CIlluminationInvariantMap> map;
 };
 
+// Passes 0…3, one lighting each.
+void AcquireInto(CIlluminationInvariantMap& map) {
+  int lighting = -1;
+  for (const sim::SimulatedFrame& f : Frames()) {
+    const int pass = PassOf(f.time);
+    if (pass < 0 || pass > 3) continue;
+    if (pass != lighting) map.beginLighting(), lighting = pass;
+    ASSERT_TRUE(map.insertObservation(Observation(f)));
+  }
+  map.finishAcquisition();
+}
+
 void Acquire(Acquired& a) {
   a.maps.setListOfMaps(
       LoadMultiMapConfig(std::string(NOVELTY_SOURCE_DIR) + "/share/illumination_invariant.ini"));
   a.map = a.maps.mapByClass<CIlluminationInvariantMap>();
   ASSERT_TRUE(a.map) << "the .ini declares a CIlluminationInvariantMap";
-  int lighting = -1;
-  for (const sim::SimulatedFrame& f : Frames()) {
-    const int pass = PassOf(f.time);
-    if (pass < 0 || pass > 3) continue;
-    if (pass != lighting) a.map->beginLighting(), lighting = pass;
-    ASSERT_TRUE(a.map->insertObservation(Observation(f)));
-  }
-  a.map->finishAcquisition();
+  AcquireInto(*a.map);
 }
 
 // Δ and the truth over the test pass's frames, for a ROC.
@@ -141,6 +146,29 @@ TEST(CIlluminationInvariantMap, SavedAndLoadedItJudgesAsBefore) {
   }
   EXPECT_EQ(loaded.asString(), a.map->asString());
   fs::remove(file);
+}
+
+TEST(CIlluminationInvariantMap, WithTheMissingTextureItFindsTheBoxAndKeepsItsModelInTheFile) {
+  IlluminationInvariantMapConfig config;
+  config.map.model.missing_texture = true;
+  CIlluminationInvariantMap map(config);
+  AcquireInto(map);
+  ASSERT_FALSE(map.map().model(0).model.texture.empty());
+  const eval::Roc before = TestPassRoc(map);
+  std::printf("missing texture: AUC %.4f, TPR at FPR 1 %% %.3f\n", before.auc,
+              before.TprAtFpr(0.01));
+  EXPECT_GE(before.auc, 0.95) << "the issue's target";
+  const fs::path file = fs::temp_directory_path() / "novelty_test_texture.illumination_invariant";
+  map.SaveToFile(file.string());
+  CIlluminationInvariantMap loaded;
+  loaded.LoadFromFile(file.string());
+  fs::remove(file);
+  const illumination::IlluminationModel& m = loaded.map().model(0).model;
+  EXPECT_EQ(m.texture.values, map.map().model(0).model.texture.values);
+  EXPECT_EQ(m.texture_floor, map.map().model(0).model.texture_floor);
+  EXPECT_EQ(m.texture_block, config.map.model.texture.block);
+  EXPECT_EQ(loaded.map().view(0).planes.count("texture"), 1u);
+  EXPECT_NEAR(TestPassRoc(loaded).auc, before.auc, 1e-3);
 }
 
 TEST(CIlluminationInvariantMap, AMapStillAcquiringIsNotSavedAndOneLightingIsNoMap) {

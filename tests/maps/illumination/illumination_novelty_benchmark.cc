@@ -31,8 +31,10 @@ void BM_DetectIlluminationNovelty(benchmark::State& state) {
   for (int m = 0; m < 9; ++m) training.push_back(Lit(reflectance, highlight, m, m % 4 == 1));
   const ZernikeMoments zernike;
   const InvariantImage invariant = ComputeInvariantImage(training);
+  IlluminationModelOptions options;
+  options.missing_texture = state.range(0) != 0;
   const ViewpointIllumination viewpoint =
-      MakeViewpoint(invariant, LearnIlluminationModel(invariant), 16, &zernike);
+      MakeViewpoint(invariant, LearnIlluminationModel(invariant, {}, options), 16, &zernike);
   cv::Mat frame = Lit(reflectance, highlight, 4, true);
   frame(cv::Rect(220, 60, 40, 50)).setTo(cv::Scalar(20, 15, 60));  // a new dark object
   int regions = 0;
@@ -44,7 +46,8 @@ void BM_DetectIlluminationNovelty(benchmark::State& state) {
   state.counters["regions"] = regions;
   state.counters["stored_shapes"] = double(viewpoint.shapes.size());
 }
-BENCHMARK(BM_DetectIlluminationNovelty)->Unit(benchmark::kMillisecond);
+// /0: the thesis's Δ; /1: with the missing texture (i_T).
+BENCHMARK(BM_DetectIlluminationNovelty)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace novelty::illumination
