@@ -18,48 +18,66 @@ void Check(const cv::Mat& a, const cv::Mat& b, const cv::Mat& covered,
     throw std::invalid_argument("MissingTexture: block must be odd and >= 1");
 }
 
-// Σ over the channels of ∇a·∇b (Sobel / 8), 0 where the 3×3 support leaves `covered` (it would
-// compare against the 0 outside).
-cv::Mat GradientDot(const cv::Mat& a, const cv::Mat& b, const cv::Mat& covered) {
-  cv::Mat ax, ay, bx, by;
-  cv::Sobel(a, ax, CV_32F, 1, 0, 3, 1.0 / 8);
-  cv::Sobel(a, ay, CV_32F, 0, 1, 3, 1.0 / 8);
-  cv::Sobel(b, bx, CV_32F, 1, 0, 3, 1.0 / 8);
-  cv::Sobel(b, by, CV_32F, 0, 1, 3, 1.0 / 8);
-  cv::Mat dot = ax.mul(bx) + ay.mul(by);
+struct Gradients {
+  cv::Mat x, y;  // Sobel / 8, the channels of the image
+};
+
+Gradients GradientsOf(const cv::Mat& a) {
+  Gradients g;
+  cv::Sobel(a, g.x, CV_32F, 1, 0, 3, 1.0 / 8);
+  cv::Sobel(a, g.y, CV_32F, 0, 1, 3, 1.0 / 8);
+  return g;
+}
+
+// 255 where a pixel's 3×3 support lies in `covered` (a gradient reaching outside would compare
+// against the 0 there); empty when everything is covered.
+cv::Mat Inside(const cv::Mat& covered) {
+  cv::Mat inside;
+  if (!covered.empty())
+    cv::erode(covered, inside, cv::Mat(), {-1, -1}, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+  return inside;
+}
+
+// The block mean of Σ over the channels of ∇a·∇b, counting only pixels `inside`.
+cv::Mat BlockDot(const Gradients& a, const Gradients& b, const cv::Mat& inside, int block) {
+  cv::Mat dot = a.x.mul(b.x) + a.y.mul(b.y);
   if (dot.channels() > 1) {
+    const int rows = dot.rows;
     dot = dot.reshape(1, int(dot.total()));
     cv::reduce(dot, dot, 1, cv::REDUCE_SUM);
-    dot = dot.reshape(1, a.rows);
+    dot = dot.reshape(1, rows);
   }
-  if (!covered.empty()) {
-    cv::Mat inside;
-    cv::erode(covered, inside, cv::Mat(), {-1, -1}, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-    dot.setTo(0.0f, inside == 0);
-  }
+  if (!inside.empty()) dot.setTo(0.0f, inside == 0);
+  cv::boxFilter(dot, dot, CV_32F, {block, block});
   return dot;
 }
 
-cv::Mat BlockMean(const cv::Mat& values, int block) {
-  cv::Mat out;
-  cv::boxFilter(values, out, CV_32F, {block, block});
-  return out;
+// Σ|∇r̂|² / N and Σ ∇i·∇r̂ / N.
+struct BlockEnergies {
+  cv::Mat invariant, cross;
+};
+
+BlockEnergies Energies(const cv::Mat& log_image, const cv::Mat& log_invariant,
+                       const cv::Mat& covered, const MissingTextureOptions& options) {
+  Check(log_image, log_invariant, covered, options);
+  const cv::Mat inside = Inside(covered);
+  const Gradients r = GradientsOf(log_invariant), i = GradientsOf(log_image);
+  return {BlockDot(r, r, inside, options.block), BlockDot(i, r, inside, options.block)};
 }
 
 }  // namespace
 
 cv::Mat TextureChange(const cv::Mat& log_image, const cv::Mat& log_invariant,
                       const cv::Mat& covered, const MissingTextureOptions& options) {
-  Check(log_image, log_invariant, covered, options);
-  return BlockMean(GradientDot(log_invariant, log_invariant, covered) -
-                       GradientDot(log_image, log_invariant, covered),
-                   options.block);
+  const BlockEnergies e = Energies(log_image, log_invariant, covered, options);
+  return e.invariant - e.cross;
 }
 
 cv::Mat GradientEnergy(const cv::Mat& log_image, const cv::Mat& covered,
                        const MissingTextureOptions& options) {
   Check(log_image, log_image, covered, options);
-  return BlockMean(GradientDot(log_image, log_image, covered), options.block);
+  const Gradients g = GradientsOf(log_image);
+  return BlockDot(g, g, Inside(covered), options.block);
 }
 
 cv::Mat MissingTexture(const cv::Mat& log_image, const cv::Mat& log_invariant,
@@ -71,9 +89,9 @@ cv::Mat HiddenTextureShare(const cv::Mat& log_image, const cv::Mat& log_invarian
                            const cv::Mat& covered, double floor,
                            const MissingTextureOptions& options) {
   if (!(floor > 0.0)) throw std::invalid_argument("HiddenTextureShare: the floor must be > 0");
+  const BlockEnergies e = Energies(log_image, log_invariant, covered, options);
   cv::Mat share;
-  cv::divide(TextureChange(log_image, log_invariant, covered, options),
-             GradientEnergy(log_invariant, covered, options) + floor, share);
+  cv::divide(e.invariant - e.cross, e.invariant + floor, share);
   return cv::min(cv::max(share, -1.0f), 1.0f);
 }
 
