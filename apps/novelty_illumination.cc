@@ -7,7 +7,8 @@
 //   novelty-illumination --rawlog IN.rawlog --groundtruth DIR --out OUT
 //       [--train-phase training] [--test-phase test] [--reference-frame F] [--kappa 0.2]
 //       [--colour per-channel|luminance-chromaticity] [--max-order 20] [--grid 32]
-//       [--shape-scale frame|empty] [--viewpoint-distance 0.05]
+//       [--shape-scale frame|empty] [--viewpoint-distance 0.05] [--missing-texture]
+//       [--poses groundtruth|rawlog]
 //
 // Two kinds of experiment, told apart by --train-phase:
 // - one phase (the washing machine, the plate): a static camera, each training frame a lighting,
@@ -15,9 +16,11 @@
 // - several phases, comma-separated (the table scene, the specular scene: I1,I2,...): a moving
 //   camera, each phase one lighting's sequence, learnt into the illumination-invariant map at
 //   common viewpoints (maps/illumination/illumination_map.h) with the ground truth's camera poses
-//   (a tracker's: one frame for all sequences, 6.1.1) and the rawlog's depth, or the ground
-//   truth's where the rawlog has none (stereo rigs: novelty-depth makes it from the images). The
-//   baselines' reference is a virtual image of the first sequence at each test frame's pose.
+//   (a perfect tracker's: one frame for all sequences, 6.1.1) or, with --poses rawlog, the
+//   rawlog's (novelty-poses: the LED tracker's or visual localization's; frames without one are
+//   skipped and counted), and the rawlog's depth, or the ground truth's where the rawlog has none
+//   (stereo rigs: novelty-depth makes it from the images). The baselines' reference is a virtual
+//   image of the first sequence at each test frame's pose.
 // The phases come from the ground truth (novelty-sim's scenarios name them). OUT gets panels/
 // (camera, reference, invariant image, novelty Δ, NGC 1 - ρ, SCT distance, ground truth per test
 // frame), roc.csv, findings.csv and report.html: pixel ROC of each method over the test frames (the
@@ -53,6 +56,7 @@
 #include "maps/illumination/invariant_image.h"
 #include "maps/illumination/spherical_color_change.h"
 #include "maps/views/view_synthesis.h"
+#include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rig_frame_reader.h"
 #include "sim/output/ground_truth_format.h"
@@ -304,6 +308,7 @@ cv::Mat NoveltyTruth(const sim::GroundTruthReader& truth, int frame, cv::Size si
 
 // Frames of a rawlog by index: RGB-D frames, or the reference camera of stereo and trinocular
 // rigs (no depth: the caller takes the ground truth's). Only frames `wanted` returns true for.
+// Camera poses where the rawlog has them (novelty-poses' observations, with the frame's time).
 template <typename Wanted>
 std::map<int, core::Frame> ReadFrames(const std::string& rawlog, Wanted wanted) {
   std::map<int, core::Frame> frames;
@@ -312,13 +317,20 @@ std::map<int, core::Frame> ReadFrames(const std::string& rawlog, Wanted wanted) 
     if (wanted(f.index)) frames[f.index] = f;
   if (!frames.empty()) return frames;
   sensors::RigFrameReader rigs(rawlog);
-  for (sensors::RigFrame r; rigs.Next(r, nullptr);) {
+  std::vector<mrpt::serialization::CSerializable::Ptr> others;
+  for (sensors::RigFrame r; rigs.Next(r, &others); others.clear()) {
     if (!wanted(r.index)) continue;
     core::Frame& f = frames[r.index];
     f.index = r.index;
     f.time = r.time;
     f.rgb = r.images.front();
     f.camera = r.cameras.front();
+    for (const auto& o : others)
+      if (const auto p = std::dynamic_pointer_cast<mrpt::obs::CObservationRobotPose>(o);
+          p && std::abs(mrpt::Clock::toDouble(p->timestamp) - r.time) < 1e-6) {
+        f.T_world_cam = sensors::RobotPoseOf(*p) * r.robot_from_reference;
+        f.pose_source = p->sensorLabel;
+      }
   }
   return frames;
 }
@@ -329,6 +341,7 @@ struct Settings {
   illumination::ZernikeOptions zernike;
   illumination::IlluminationNoveltyOptions novelty;
   double viewpoint_distance = 0.05;
+  bool poses_from_rawlog = false;  // --poses rawlog: else the ground truth's
 };
 
 // One viewpoint, each training frame a lighting (6.4.1 washing machine, 6.4.2 plate).
@@ -405,13 +418,24 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
     return i >= test.first && i <= test.last ? int(train.size()) : -1;
   };
   std::map<int, core::Frame> frames = ReadFrames(rawlog, [&](int i) { return phase_of(i) >= 0; });
-  int depth_from_truth = 0;
-  for (auto& [i, f] : frames) {
-    const auto pose = truth.CameraPoses().find(i);
-    if (pose == truth.CameraPoses().end())
-      throw std::invalid_argument(truth.dir() + ": no camera pose for frame " + std::to_string(i));
-    f.T_world_cam = pose->second;
-    f.pose_source = "groundtruth";
+  int depth_from_truth = 0, without_pose = 0;
+  for (auto it = frames.begin(); it != frames.end();) {
+    const int i = it->first;
+    core::Frame& f = it->second;
+    if (settings.poses_from_rawlog) {
+      if (!f.T_world_cam) {  // the tracker lost the LEDs: the frame is skipped and counted
+        ++without_pose;
+        it = frames.erase(it);
+        continue;
+      }
+    } else {
+      const auto pose = truth.CameraPoses().find(i);
+      if (pose == truth.CameraPoses().end())
+        throw std::invalid_argument(truth.dir() + ": no camera pose for frame " +
+                                    std::to_string(i));
+      f.T_world_cam = pose->second;
+      f.pose_source = "groundtruth";
+    }
     if (f.depth.empty() && phase_of(i) < int(train.size())) {  // test frames need no depth
       f.depth = truth.Depth(i);
       ++depth_from_truth;
@@ -419,7 +443,15 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
         throw std::invalid_argument(truth.dir() + ": frame " + std::to_string(i) +
                                     " has no depth map of the image's size");
     }
+    ++it;
   }
+  if (without_pose > 0)
+    std::fprintf(stderr, "[novelty-illumination] %d frame(s) without a pose in %s skipped\n",
+                 without_pose, rawlog.c_str());
+  if (frames.empty())
+    throw std::invalid_argument(
+        rawlog + ": no frame of the phases has a pose" +
+        (settings.poses_from_rawlog ? " (--poses rawlog: run novelty-poses on it first)" : ""));
   illumination::IlluminationMapOptions options;
   options.invariant = settings.invariant;
   options.model = settings.model;
@@ -512,6 +544,8 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
                      {"mean test-frame coverage of the interpolated invariant image",
                       Percent(frame_coverage / std::max(1, e.tested))},
                      {"frames with the ground truth's depth", std::to_string(depth_from_truth)},
+                     {"camera poses", settings.poses_from_rawlog ? "rawlog" : "ground truth"},
+                     {"frames skipped without a pose", std::to_string(without_pose)},
                      {"map MB", cv::format("%.1f", map.BytesUsed() / 1e6)}};
   return learn_seconds;
 }
@@ -565,6 +599,13 @@ int main(int argc, char** argv) {
         "Also judge the texture the invariant image has and the frame lacks (beyond the thesis: "
         "finds objects coloured like the surface they hide)",
         cmd);
+    std::vector<std::string> pose_sources = {"groundtruth", "rawlog"};
+    TCLAP::ValuesConstraint<std::string> pose_names(pose_sources);
+    TCLAP::ValueArg<std::string> poses(
+        "", "poses",
+        "Moving camera: camera poses from the ground truth (default) or from the rawlog's pose "
+        "observations (novelty-poses: tracker or visual localization)",
+        false, "groundtruth", &pose_names, cmd);
     cmd.Parse(argc, argv);
     if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
       throw std::invalid_argument("--kappa must be in [0, 1)");
@@ -586,6 +627,7 @@ int main(int argc, char** argv) {
     settings.zernike.max_order = max_order.getValue();
     settings.zernike.grid = grid.getValue();
     settings.viewpoint_distance = viewpoint_distance.getValue();
+    settings.poses_from_rawlog = poses.getValue() == "rawlog";
 
     const sim::GroundTruthReader truth(truth_dir.getValue());
     const std::vector<std::string> train_names = SplitList(train_phase.getValue());
