@@ -171,12 +171,6 @@ void Score(const TestFrame& t, Evaluation& e, eval::HtmlReport& report, const fs
   ++e.tested;
 }
 
-cv::Mat Panel8(const cv::Mat& log_invariant, const cv::Mat& covered) {
-  cv::Mat r8;
-  illumination::LinearImage(log_invariant, covered).convertTo(r8, CV_8UC3);
-  return r8;
-}
-
 struct Learnt {
   std::string summary;  // for the report: what was learnt
   std::vector<std::pair<std::string, std::string>> findings;
@@ -381,7 +375,7 @@ double RunStatic(const std::string& rawlog, const sim::GroundTruthReader& truth,
   std::vector<cv::Mat> references = {frames[ref_index].rgb};
   for (int i = train.first; i <= train.last; ++i)
     if (frames.count(i) && i != ref_index) references.push_back(frames[i].rgb);
-  const cv::Mat invariant8 = Panel8(invariant.log_invariant, invariant.covered);
+  const cv::Mat invariant8 = illumination::LinearImage8(invariant.log_invariant, invariant.covered);
   for (int i = test.first; i <= test.last; ++i) {
     if (!frames.count(i)) continue;
     TestFrame t;
@@ -506,8 +500,9 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
     t.evaluated =
         r.coverage > 0.0 ? r.viewpoint.covered.clone() : cv::Mat::zeros(t.image.size(), CV_8UC1);
     t.novelty = r.coverage > 0.0 ? r.novelty.novelty : cv::Mat::zeros(t.image.size(), CV_32F);
-    t.invariant = r.coverage > 0.0 ? Panel8(r.viewpoint.log_invariant, r.viewpoint.covered)
-                                   : cv::Mat::zeros(t.image.size(), CV_8UC3);
+    t.invariant = r.coverage > 0.0
+                      ? illumination::LinearImage8(r.viewpoint.log_invariant, r.viewpoint.covered)
+                      : cv::Mat::zeros(t.image.size(), CV_8UC3);
     // Each sequence's virtual image at this pose: the first is the baselines' reference.
     for (std::size_t m = 0; m < train.size(); ++m) {
       const views::ViewSelection sel =

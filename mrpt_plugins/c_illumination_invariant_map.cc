@@ -91,10 +91,8 @@ void CIlluminationInvariantMap::getVisualizationInto(mrpt::opengl::CSetOfObjects
 
 mrpt::img::CImage CIlluminationInvariantMap::invariantImage() const {
   if (last_.coverage == 0.0) return {};
-  cv::Mat r8;
-  illumination::LinearImage(last_.viewpoint.log_invariant, last_.viewpoint.covered)
-      .convertTo(r8, CV_8UC3);
-  return ToCImage(r8);
+  return ToCImage(
+      illumination::LinearImage8(last_.viewpoint.log_invariant, last_.viewpoint.covered));
 }
 
 mrpt::img::CImage CIlluminationInvariantMap::noveltyImage(double max_novelty) const {

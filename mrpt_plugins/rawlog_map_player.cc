@@ -7,6 +7,7 @@
 #include <mrpt/poses/CPose3D.h>
 
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -49,6 +50,7 @@ class RawlogMapPlayer::Impl {
   mrpt::obs::CObservationRobotPose::Ptr last_pose;
   std::optional<mrpt::poses::CPose3D> odometry;
   int frames = 0;
+  int first = 1, last = std::numeric_limits<int>::max();  // SetFrameRange
 
   // The robot pose for camera observation `obs`, frame `frame`, from the chosen source.
   std::optional<mrpt::poses::CPose3D> RobotPose(const mrpt::obs::CObservation& obs,
@@ -76,6 +78,14 @@ RawlogMapPlayer::RawlogMapPlayer(const std::string& rawlog, PoseSource source,
 
 RawlogMapPlayer::~RawlogMapPlayer() = default;
 
+void RawlogMapPlayer::SetFrameRange(int first, int last) {
+  if (first < 1 || last < first)
+    throw std::invalid_argument("RawlogMapPlayer: frames " + std::to_string(first) + "-" +
+                                std::to_string(last) + " are no range of 1-based frames");
+  impl_->first = first;
+  impl_->last = last;
+}
+
 bool RawlogMapPlayer::Next(mrpt::maps::CMultiMetricMap& maps, int& frame) {
   Impl& m = *impl_;
   while (true) {
@@ -99,7 +109,9 @@ bool RawlogMapPlayer::Next(mrpt::maps::CMultiMetricMap& maps, int& frame) {
     const bool camera = std::dynamic_pointer_cast<mrpt::obs::CObservation3DRangeScan>(object) ||
                         std::dynamic_pointer_cast<mrpt::obs::CObservationStereoImages>(object);
     if (!obs || !camera) continue;
+    if (m.frames >= m.last) return false;
     frame = ++m.frames;
+    if (frame < m.first) continue;
     const std::string where =
         m.input.path() + ": frame " + std::to_string(frame) + " (" + obs->sensorLabel + ")";
     sensors::CheckImageFolder(*obs, where);

@@ -42,6 +42,11 @@ class RawlogMapPlayer {
   /// image folder that does not exist throws std::runtime_error naming it.
   bool Next(mrpt::maps::CMultiMetricMap& maps, int& frame);
 
+  /// Plays only frames first…last (1-based, as Next numbers them): the others are read past, not
+  /// inserted and not counted as skipped, and the play ends after `last` (one lighting's pass in a
+  /// rawlog of several). Throws std::invalid_argument unless 1 ≤ first ≤ last.
+  void SetFrameRange(int first, int last);
+
   int skipped() const { return int(skip_reasons_.size()); }
   const std::vector<std::string>& skip_reasons() const { return skip_reasons_; }
   /// Why the play ended early (a truncated rawlog), or empty.

@@ -277,4 +277,10 @@ cv::Mat LinearImage(const cv::Mat& log_image, const cv::Mat& covered) {
   return linear;
 }
 
+cv::Mat LinearImage8(const cv::Mat& log_image, const cv::Mat& covered) {
+  cv::Mat out;
+  LinearImage(log_image, covered).convertTo(out, CV_8U);
+  return out;
+}
+
 }  // namespace novelty::illumination

@@ -72,4 +72,7 @@ cv::Mat LogIllumination(const cv::Mat& image, const cv::Mat& log_invariant, doub
 /// exp(log image) → CV_32FC(n) on the 0…255 scale, 0 where `covered` is 0 (when given).
 cv::Mat LinearImage(const cv::Mat& log_image, const cv::Mat& covered = cv::Mat());
 
+/// LinearImage as 8 bits (saturated), for pictures: the reflectance up to r̂'s constant.
+cv::Mat LinearImage8(const cv::Mat& log_image, const cv::Mat& covered = cv::Mat());
+
 }  // namespace novelty::illumination

@@ -94,6 +94,22 @@ TEST(RawlogMapPlayer, MultiMetricMapPathEqualsTheLibraryApi) {
 
 // A frame without a pose is skipped and counted by name; a rawlog cut short ends the play with
 // the reason, keeping the frames read.
+TEST(RawlogMapPlayer, AFrameRangePlaysOnlyItsFramesAndEndsAfterIt) {
+  const fs::path dir = SimulateClip("range");
+  auto poses = sim::GroundTruthReader((dir / "groundtruth").string()).CameraPoses();
+  poses.erase(3);  // outside the range: not played, so not skipped
+  mrpt::maps::CMultiMetricMap multi;
+  BuildMaps(mrpt::config::CConfigFileMemory(kIni), multi);
+  RawlogMapPlayer player((dir / "clip.rawlog").string(), PoseSource::kGroundTruth, poses);
+  player.SetFrameRange(5, 9);
+  std::vector<int> played;
+  for (int index = 0; player.Next(multi, index);) played.push_back(index);
+  EXPECT_EQ(played, (std::vector<int>{5, 6, 7, 8, 9}));
+  EXPECT_EQ(player.skipped(), 0);
+  EXPECT_THROW(player.SetFrameRange(0, 3), std::invalid_argument);
+  EXPECT_THROW(player.SetFrameRange(4, 3), std::invalid_argument);
+}
+
 TEST(RawlogMapPlayer, MissingPosesAndATruncatedRawlogAreReportedNotFatal) {
   const fs::path dir = SimulateClip("faults");
   auto poses = sim::GroundTruthReader((dir / "groundtruth").string()).CameraPoses();
