@@ -505,18 +505,9 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
                       : cv::Mat::zeros(t.image.size(), CV_8UC3);
     // Each sequence's virtual image at this pose: the first is the baselines' reference.
     for (std::size_t m = 0; m < train.size(); ++m) {
-      const views::ViewSelection sel =
-          views::SelectViewsForRays(poses[m], f.camera, *f.T_world_cam, options.selection);
-      std::vector<const views::ReferenceView*> chosen;
-      for (int k : sel.views) chosen.push_back(&sequences[m][std::size_t(k)]);
-      if (chosen.empty()) {
-        t.references.push_back(cv::Mat::zeros(t.image.size(), CV_8UC3));
-        t.evaluated.setTo(0);
-        continue;
-      }
       const views::SynthesisResult s =
-          views::SynthesiseView(warper, chosen, {}, sel.Weights(options.selection), f.camera,
-                                *f.T_world_cam, options.synthesis);
+          views::SynthesiseSelected(warper, sequences[m], poses[m], f.camera, *f.T_world_cam,
+                                    options.selection, options.synthesis);
       // Where the reference has no view, the observation stands in: the baselines' blocks
       // (NGC's reach ~10 px on three layers) would otherwise compare against black next to
       // holes; those pixels are not scored.

@@ -176,24 +176,11 @@ IlluminationMap::RenderedLighting IlluminationMap::RenderLighting(
                                 views::WarpOutputsFor(options_.synthesis.blend));
   RenderedLighting out;
   for (int v = 0; v < viewpoints.size(); ++v) {
-    const views::ViewSelection sel = views::SelectViewsForRays(
-        poses, viewpoints.camera(v), viewpoints.pose(v), options_.selection);
-    cv::Mat rgb, valid;
-    if (!sel.views.empty()) {
-      std::vector<const views::ReferenceView*> chosen;
-      for (int i : sel.views) chosen.push_back(&refs[std::size_t(i)]);
-      const views::SynthesisResult r =
-          views::SynthesiseView(warper, chosen, {}, sel.Weights(options_.selection),
-                                viewpoints.camera(v), viewpoints.pose(v), options_.synthesis);
-      rgb = r.rgb;
-      valid = r.valid;
-    } else {
-      const core::PinholeCamera& c = viewpoints.camera(v);
-      rgb = cv::Mat::zeros(c.height, c.width, CV_8UC3);
-      valid = cv::Mat::zeros(rgb.size(), CV_8UC1);
-    }
-    out.rgb.push_back(rgb);
-    out.valid.push_back(valid);
+    const views::SynthesisResult r =
+        views::SynthesiseSelected(warper, refs, poses, viewpoints.camera(v), viewpoints.pose(v),
+                                  options_.selection, options_.synthesis);
+    out.rgb.push_back(r.rgb);
+    out.valid.push_back(r.valid);
   }
   return out;
 }

@@ -44,4 +44,23 @@ SynthesisResult SynthesiseView(const std::vector<const ReferenceView*>& refs,
   return SynthesiseView(warper, refs, {}, {}, camera, T_world_virtual, options);
 }
 
+SynthesisResult SynthesiseSelected(DepthMeshWarper& warper, const std::vector<ReferenceView>& refs,
+                                   const std::vector<Eigen::Isometry3d>& poses,
+                                   const core::PinholeCamera& camera,
+                                   const Eigen::Isometry3d& T_world_virtual,
+                                   const ViewSelectionOptions& selection,
+                                   const SynthesisOptions& options) {
+  const ViewSelection sel = SelectViewsForRays(poses, camera, T_world_virtual, selection);
+  if (sel.views.empty()) {
+    SynthesisResult none;
+    none.rgb = cv::Mat::zeros(camera.height, camera.width, CV_8UC3);
+    none.valid = cv::Mat::zeros(none.rgb.size(), CV_8UC1);
+    return none;
+  }
+  std::vector<const ReferenceView*> chosen;
+  for (int i : sel.views) chosen.push_back(&refs.at(std::size_t(i)));
+  return SynthesiseView(warper, chosen, {}, sel.Weights(selection), camera, T_world_virtual,
+                        options);
+}
+
 }  // namespace novelty::views

@@ -12,6 +12,7 @@
 #include "maps/views/mesh_plan.h"
 #include "maps/views/reference_view_store.h"
 #include "maps/views/view_blender.h"
+#include "maps/views/view_selection.h"
 
 namespace novelty::views {
 
@@ -45,5 +46,15 @@ SynthesisResult SynthesiseView(const std::vector<const ReferenceView*>& refs,
                                const core::PinholeCamera& camera,
                                const Eigen::Isometry3d& T_world_virtual,
                                const SynthesisOptions& options = {});
+
+/// The virtual image at T_world_virtual from the views of `refs` (at `poses`) that view selection
+/// picks for its rays (3.3), weighted as it says — ch. 3 for one pose. No view picked: black,
+/// nothing valid, coverage 0.
+SynthesisResult SynthesiseSelected(DepthMeshWarper& warper, const std::vector<ReferenceView>& refs,
+                                   const std::vector<Eigen::Isometry3d>& poses,
+                                   const core::PinholeCamera& camera,
+                                   const Eigen::Isometry3d& T_world_virtual,
+                                   const ViewSelectionOptions& selection,
+                                   const SynthesisOptions& options);
 
 }  // namespace novelty::views

@@ -128,20 +128,23 @@ TEST(ViewSynthesisOnSimulatedData, HeldOutFramesMatchTheRenderedOnes) {
   std::vector<Eigen::Isometry3d> poses;
   for (const ReferenceView& r : refs) poses.push_back(r.T_world_cam);
   double worst = 1e9;
+  const SynthesisOptions o;
+  const ViewSelectionOptions selection;
+  DepthMeshWarper warper(o.warp, WarpOutputsFor(o.blend));
   for (const auto& [pose, rgb] : held_out) {
-    std::vector<const ReferenceView*> selected;
-    const ViewSelectionOptions selection;
-    const ViewSelection chosen = SelectViewsForRays(poses, s.camera, pose, selection);
-    for (int j : chosen.views) selected.push_back(&refs[std::size_t(j)]);
-    ASSERT_FALSE(selected.empty());
-    const SynthesisOptions o;
-    DepthMeshWarper warper(o.warp, WarpOutputsFor(o.blend));
-    const SynthesisResult r =
-        SynthesiseView(warper, selected, {}, chosen.Weights(selection), s.camera, pose, o);
+    const SynthesisResult r = SynthesiseSelected(warper, refs, poses, s.camera, pose, selection, o);
     EXPECT_GT(r.coverage, 0.85);  // the sky through the window has no depth
     worst = std::min(worst, eval::Psnr(r.rgb, rgb, r.valid));
   }
   EXPECT_GE(worst, 30.0) << "worst held-out PSNR over covered pixels";
+  // Facing away from every view: none is picked, nothing is valid.
+  Eigen::Isometry3d away = held_out.front().first;
+  away.linear() = away.linear() * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitY()).matrix();
+  const SynthesisResult none =
+      SynthesiseSelected(warper, refs, poses, s.camera, away, selection, o);
+  EXPECT_EQ(none.coverage, 0.0);
+  EXPECT_EQ(cv::countNonZero(none.valid), 0);
+  EXPECT_EQ(none.rgb.size(), held_out.front().second.size());
   RecordProperty("worst_psnr_db", std::to_string(worst));
   std::printf("worst held-out PSNR: %.2f dB over %zu frames\n", worst, held_out.size());
 }
