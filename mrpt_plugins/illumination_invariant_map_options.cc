@@ -64,7 +64,7 @@ const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfi
           CheckInRange(o.invariant.min_intensity, 1e-3, 255, "min_intensity");
           CheckInRange(o.invariant.min_lightings, 2, 1000, "min_lightings");
           CheckInRange(o.model.kappa, 0, 0.999, "kappa");
-          CheckInRange(o.model.texture.block, 1, 99, "texture_block");
+          CheckInRange(o.model.texture.block, 1, illumination::kMaxTextureBlock, "texture_block");
           if (o.model.texture.block % 2 == 0)
             throw std::invalid_argument("texture_block: " + std::to_string(o.model.texture.block) +
                                         " is even; the block needs a centre pixel");

@@ -40,6 +40,14 @@ cv::Mat InvariantPlane(const InvariantImage& inv) {
   return plane;
 }
 
+// The missing texture's scale where the invariant image covers, 0 elsewhere: blended, it is
+// divided by the blended coverage as r̂ is, so that a viewpoint without a value does not pull it.
+cv::Mat TexturePlane(const IlluminationModel& model, const InvariantImage& inv) {
+  cv::Mat plane = model.texture_scale.clone();
+  plane.setTo(0.0f, inv.covered == 0);
+  return plane;
+}
+
 cv::Mat ShapesPlane(const std::vector<cv::Mat>& shapes) {
   cv::Mat plane;
   cv::merge(shapes, plane);
@@ -88,6 +96,47 @@ IlluminationModel MeanModel(const std::vector<const IlluminationModel*>& models,
     m.texture = stats::MeanTail(tables, weights);
   }
   return m;
+}
+
+// A loaded viewpoint's missing-texture model: its plane (scale > 0 and finite where the
+// invariant image covers, ≥ 0 elsewhere), a sorted finite tail table, floor and block as the
+// option table allows; like the first viewpoint's (a map's viewpoints average them). Throws
+// std::invalid_argument naming `what`.
+void CheckTextureModel(const views::ReferenceView& view, const IlluminationModel& m,
+                       const IlluminationModel* first, const std::string& what) {
+  const auto plane = view.planes.find(kTexturePlane);
+  const stats::TailTable& tail = m.texture;
+  if (tail.empty() != (plane == view.planes.end()))
+    throw std::invalid_argument(what +
+                                ": a missing-texture model and its 'texture' plane come "
+                                "together");
+  if (first && first->texture.values.size() != tail.values.size())
+    throw std::invalid_argument(what + ": missing texture unlike viewpoint 0's (" +
+                                std::to_string(tail.values.size()) + " tail entries against " +
+                                std::to_string(first->texture.values.size()) + ")");
+  if (tail.empty()) return;
+  if (first && first->texture_block != m.texture_block)
+    throw std::invalid_argument(what + ": missing-texture block " +
+                                std::to_string(m.texture_block) + ", viewpoint 0's " +
+                                std::to_string(first->texture_block));
+  const cv::Mat& scale = plane->second;
+  cv::Mat covered;
+  cv::extractChannel(view.planes.at(kInvariantPlane), covered, 3);
+  double least = 0.0;
+  if (scale.type() != CV_32FC1 || scale.size() != covered.size() || !cv::checkRange(scale) ||
+      (cv::minMaxLoc(scale, &least), least < 0.0) ||
+      (cv::minMaxLoc(scale, &least, nullptr, nullptr, nullptr, covered >= 0.5f), least <= 0.0) ||
+      tail.values.size() < 2 || !std::is_sorted(tail.values.begin(), tail.values.end()) ||
+      !std::all_of(tail.values.begin(), tail.values.end(),
+                   [](float v) { return std::isfinite(v); }) ||
+      !(tail.max_information > 0.0 && std::isfinite(tail.max_information)) ||
+      !(m.texture_floor > 0.0 && std::isfinite(m.texture_floor)) || m.texture_block < 1 ||
+      m.texture_block > kMaxTextureBlock || m.texture_block % 2 == 0)
+    throw std::invalid_argument(what +
+                                ": a missing-texture model needs a 'texture' plane (float, one "
+                                "channel, > 0 where covered), a sorted finite tail table, a "
+                                "floor > 0 and an odd block of at most " +
+                                std::to_string(kMaxTextureBlock));
 }
 
 }  // namespace
@@ -227,7 +276,7 @@ void IlluminationMap::Build() {
       view.planes[kInvariantPlane] = InvariantPlane(inv);
       view.planes[kShapesPlane] = ShapesPlane(m.model.shapes);
       m.model.shapes.clear();
-      if (!m.model.texture_scale.empty()) view.planes[kTexturePlane] = m.model.texture_scale;
+      if (!m.model.texture_scale.empty()) view.planes[kTexturePlane] = TexturePlane(m.model, inv);
       m.model.texture_scale.release();
       kept.Add(std::move(view));
       models.push_back(std::move(m));
@@ -263,21 +312,7 @@ void IlluminationMap::AddViewpoint(views::ReferenceView view, IlluminationViewpo
     throw std::invalid_argument(what +
                                 ": needs planes 'invariant' (float, r̂ of three channels and the "
                                 "coverage) and 'shapes' (8-bit, one channel per lighting)");
-  const auto texture = view.planes.find(kTexturePlane);
-  const stats::TailTable& tail = model.model.texture;
-  if (tail.empty() != (texture == view.planes.end()) ||
-      (!tail.empty() &&
-       (texture->second.type() != CV_32FC1 || tail.values.size() < 2 ||
-        !std::is_sorted(tail.values.begin(), tail.values.end()) ||
-        !std::all_of(tail.values.begin(), tail.values.end(),
-                     [](float v) { return std::isfinite(v); }) ||
-        !(tail.max_information > 0.0 && std::isfinite(tail.max_information)) ||
-        !(model.model.texture_floor > 0.0 && std::isfinite(model.model.texture_floor)) ||
-        model.model.texture_block < 1 || model.model.texture_block % 2 == 0)))
-    throw std::invalid_argument(what +
-                                ": a missing-texture model needs its 'texture' plane (float, one "
-                                "channel), a sorted finite tail table, a floor > 0 and an odd "
-                                "block");
+  CheckTextureModel(view, model.model, size() ? &models_.front().model : nullptr, what);
   if (size() && (view.camera.width != store_.camera(0).width ||
                  view.camera.height != store_.camera(0).height))
     throw std::invalid_argument(what + ": another image size than viewpoint 0's");
@@ -353,7 +388,8 @@ IlluminationMapResult IlluminationMap::Detect(const core::Frame& frame) const {
   for (cv::Mat& s : shapes) s = (s >= 127.5f) & covered;
   model.shapes = std::move(shapes);
   if (!model.texture.empty()) {  // every viewpoint has its plane (MeanModel)
-    model.texture_scale = views::BlendPlanes(fields, texture_planes, blend).value;
+    cv::divide(views::BlendPlanes(fields, texture_planes, blend).value, coverage,
+               model.texture_scale);
     model.texture_scale.setTo(1.0f, ~covered);  // not used there; finite
   }
   InvariantImage interpolated;

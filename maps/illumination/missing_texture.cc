@@ -30,11 +30,11 @@ Gradients GradientsOf(const cv::Mat& a) {
 }
 
 // 255 where a pixel's 3×3 support lies in `covered` (a gradient reaching outside would compare
-// against the 0 there); empty when everything is covered.
+// against the 0 there); empty when everything is covered. The image border is not a coverage
+// border (Sobel reflects there): an all-covered mask equals none.
 cv::Mat Inside(const cv::Mat& covered) {
   cv::Mat inside;
-  if (!covered.empty())
-    cv::erode(covered, inside, cv::Mat(), {-1, -1}, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+  if (!covered.empty()) cv::erode(covered, inside, cv::Mat(), {-1, -1}, 1, cv::BORDER_REPLICATE);
   return inside;
 }
 

@@ -12,6 +12,9 @@
 
 namespace novelty::illumination {
 
+/// Largest block a map accepts (from options and from files): 99 × 99 pixels.
+inline constexpr int kMaxTextureBlock = 99;
+
 struct MissingTextureOptions {
   /// Side of the square block (odd) over which the energies are summed.
   int block = 7;

@@ -29,11 +29,17 @@ TailTable LearnTail(std::vector<float>& samples, int entries) {
 
 double TailInformation(const TailTable& t, double x) {
   const std::vector<float>& v = t.values;
-  if (v.empty() || x <= v.front()) return 0.0;
-  if (x >= v.back()) return t.max_information;
+  if (v.empty()) return 0.0;
+  // Compared in double throughout: a value just below the last entry must not round onto it.
+  if (std::isnan(x) || x >= double(v.back())) return t.max_information;
+  if (x <= double(v.front())) return 0.0;
   const double step = t.max_information / double(v.size() - 1);
-  // The last entry at or below x; ties (a step in the sample) take the rarest.
-  const std::size_t k = std::size_t(std::upper_bound(v.begin(), v.end(), float(x)) - v.begin()) - 1;
+  // The last entry at or below x (x < v.back(), so k + 1 is an entry); ties take the rarest.
+  const std::size_t k =
+      std::size_t(
+          std::upper_bound(v.begin(), v.end(), x, [](double a, float b) { return a < double(b); }) -
+          v.begin()) -
+      1;
   const double span = double(v[k + 1]) - double(v[k]);
   const double f = span > 0.0 ? (x - v[k]) / span : 0.0;
   return step * (double(k) + f);

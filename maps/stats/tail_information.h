@@ -3,7 +3,9 @@
 // (the rarest event N samples can vouch for). Unlike a fitted density's −ln p, it never exceeds
 // ln(N + 1): a value beyond everything in the sample is as rare as the sample can tell, not
 // rarer the farther it lies — so a cue that saturates cannot outweigh the others it is summed
-// with. Tables of one K average (quantile averaging), for interpolating between viewpoints.
+// with. Tables of one K average entry by entry, for interpolating between viewpoints (quantile
+// averaging where the samples have about the same size: entry k is the same tail probability
+// only for the same N).
 #pragma once
 
 #include <vector>
@@ -23,7 +25,8 @@ struct TailTable {
 TailTable LearnTail(std::vector<float>& samples, int entries = 64);
 
 /// −ln P(X ≥ x), interpolated linearly in x between the table's entries: 0 at or below the
-/// smallest entry, max_information at or above the largest.
+/// smallest entry, max_information at or above the largest and for NaN. At a value the sample
+/// holds many times (a tie across entries) it is the rarest of them, −ln P(X > x).
 double TailInformation(const TailTable& table, double x);
 
 /// The weighted mean of tables of one size (weights ≥ 0, not all 0). Throws

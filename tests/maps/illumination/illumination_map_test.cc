@@ -185,6 +185,35 @@ TEST(IlluminationMap, AFailedBuildLeavesTheMapToGoOn) {
   EXPECT_THROW(loaded.AddViewpoint(map.view(1), map.model(1), 3), std::invalid_argument);
 }
 
+TEST(IlluminationMap, ALoadedMissingTextureModelIsChecked) {
+  IlluminationMapOptions options;
+  options.model.missing_texture = true;
+  const IlluminationMap map = Learnt(options);
+  ASSERT_FALSE(map.model(0).model.texture.empty());
+  ASSERT_EQ(map.view(0).planes.count("texture"), 1u);
+  const auto refused = [&](views::ReferenceView view, IlluminationViewpointModel model) {
+    IlluminationMap loaded;
+    loaded.AddViewpoint(map.view(1), map.model(1), map.lightings());
+    EXPECT_THROW(loaded.AddViewpoint(std::move(view), std::move(model), map.lightings()),
+                 std::invalid_argument);
+  };
+  views::ReferenceView zero = map.view(0);
+  zero.planes["texture"] = cv::Mat::zeros(zero.planes["texture"].size(), CV_32F);
+  refused(zero, map.model(0));  // a scale of 0 where covered: every frame would saturate i_T
+  views::ReferenceView nan = map.view(0);
+  nan.planes["texture"] = cv::Mat(nan.planes["texture"].size(), CV_32F, cv::Scalar(NAN));
+  refused(nan, map.model(0));
+  IlluminationViewpointModel huge = map.model(0);
+  huge.model.texture_block = 1000001;  // seconds a frame
+  refused(map.view(0), huge);
+  IlluminationViewpointModel shorter = map.model(0);
+  shorter.model.texture.values.resize(8);  // MeanTail could not average it with viewpoint 1's
+  refused(map.view(0), shorter);
+  views::ReferenceView without = map.view(0);
+  without.planes.erase("texture");
+  refused(without, map.model(0));
+}
+
 TEST(IlluminationMap, ANewObjectStandsOutAndANewShadowDoesNot) {
   const IlluminationMap map = Learnt();
   const NewObject object{{0.25, -0.15, 0.15, 0.15}, {0.6, 0.2, 0.2}};

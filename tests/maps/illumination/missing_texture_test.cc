@@ -64,6 +64,14 @@ TEST(MissingTexture, NoGradientThatReachesAnUncoveredPixelCounts) {
   EXPECT_NEAR(b.at<float>(20, 28), 0.04 * 6.0 / 7.0, 1e-6);
 }
 
+TEST(MissingTexture, AFullyCoveredMaskIsNoMaskAlsoAtTheImageBorder) {
+  cv::Mat r(30, 40, CV_32FC3), i(30, 40, CV_32FC3);
+  cv::RNG(7).fill(r, cv::RNG::UNIFORM, 0.0, 5.0);
+  cv::RNG(8).fill(i, cv::RNG::UNIFORM, 0.0, 5.0);
+  const cv::Mat all(r.size(), CV_8U, cv::Scalar(255));
+  EXPECT_EQ(cv::norm(TextureChange(i, r, all), TextureChange(i, r), cv::NORM_INF), 0.0);
+}
+
 TEST(MissingTexture, BadInputIsAnError) {
   const cv::Mat r = Ramp(0.2);
   EXPECT_THROW(MissingTexture(Ramp(0.2, 0.0, 3), r), std::invalid_argument);

@@ -42,6 +42,16 @@ TEST(TailInformation, IsNonDecreasingAlsoOverTiesInTheSample) {
   EXPECT_NEAR(TailInformation(t, 0.5), -std::log(0.05), 0.25);
 }
 
+TEST(TailInformation, JustBelowTheLastEntryAndNaNStayInTheTable) {
+  // A double that rounds onto the last (float) entry, and NaN, once read past the table's end.
+  std::vector<float> samples = {0.0f, 0.5f, 1.0f};
+  const TailTable t = LearnTail(samples, 4);
+  const double below = std::nextafter(1.0, 0.0);
+  EXPECT_LE(TailInformation(t, below), t.max_information);
+  EXPECT_GT(TailInformation(t, below), TailInformation(t, 0.5));
+  EXPECT_EQ(TailInformation(t, NAN), t.max_information);
+}
+
 TEST(TailInformation, TheMeanOfTwoTablesLiesBetweenThem) {
   std::vector<float> a(1000), b(1000);
   for (int i = 0; i < 1000; ++i) a[i] = float(i), b[i] = float(2 * i);
