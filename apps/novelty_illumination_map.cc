@@ -14,15 +14,19 @@
 // share/illumination_invariant.ini), with poses from the rawlog's pose observations
 // (novelty-poses; the default), the wheel odometry or the ground truth's camera poses. Learning
 // calls beginLighting() before each lighting and finishAcquisition() after the last, then saves
-// the map atomically. Judging writes OUT/novelty/FRAME.png (Δ in false colour), OUT/frames.csv
+// the map atomically (--map-out replaces an earlier map, nothing else). Judging writes
+// OUT/novelty/FRAME.png (Δ in false colour), OUT/frames.csv
 // (per frame: coverage, regions, matched regions, mean and largest Δ; with --groundtruth the
 // pixel AUC of Δ against the novelty mask), OUT/findings.csv and OUT/report.html with a panel
-// (camera, invariant image, information i_Y, Δ) every --panels-every frames. Frames that cannot
-// be used are skipped and counted.
+// (camera, invariant image, information i_Y, Δ) every --panels-every frames; all of it into
+// OUT.partial, renamed to OUT at the end (OUT may be an earlier output, nothing else), so a failed
+// run leaves the earlier output whole. Frames that cannot be used are skipped and counted; a
+// rawlog that ends early, or before the frames asked, gives results and exit 3.
 #include <tclap/CmdLine.h>
 
 #include <mrpt/maps/CMultiMetricMap.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -53,24 +57,53 @@ namespace {
 
 // A rawlog and the frames of it to play.
 struct Pass {
+  std::string spec;  // as given, for messages
   std::string path;
   int first = 1, last = 0;  // last 0: to the end
 };
 
+// RAWLOG, RAWLOG:FIRST-LAST or RAWLOG:PHASE; the rawlog must be a file.
 Pass ParsePass(const std::string& spec, const sim::GroundTruthReader* truth) {
   static const std::regex range(R"((.*):(\d+)-(\d+))"), named(R"((.*):([A-Za-z_][\w-]*))");
   std::smatch m;
-  if (std::regex_match(spec, m, range))
-    return {m[1].str(), std::stoi(m[2].str()), std::stoi(m[3].str())};
-  if (std::regex_match(spec, m, named) && !fs::exists(spec)) {
+  Pass pass{spec, spec, 1, 0};
+  if (fs::is_regular_file(spec)) {
+    pass.path = spec;
+  } else if (std::regex_match(spec, m, range)) {
+    pass.path = m[1].str();
+    try {
+      pass.first = std::stoi(m[2].str()), pass.last = std::stoi(m[3].str());
+    } catch (const std::out_of_range&) {
+      pass.first = pass.last = 0;
+    }
+    if (pass.first < 1 || pass.last < pass.first)
+      throw std::invalid_argument(spec + ": frames " + m[2].str() + "-" + m[3].str() +
+                                  " are no range (1-based, first <= last)");
+  } else if (std::regex_match(spec, m, named)) {
+    pass.path = m[1].str();
     if (!truth)
       throw std::invalid_argument(spec +
                                   ": a phase name needs --groundtruth (novelty-sim's folder)");
-    for (const auto& p : truth->Phases())
-      if (p.name == m[2].str()) return {m[1].str(), p.first, p.last};
-    throw std::invalid_argument(spec + ": no phase '" + m[2].str() + "' in " + truth->dir());
+    const auto& phases = truth->Phases();
+    const auto phase = std::find_if(phases.begin(), phases.end(),
+                                    [&](const auto& p) { return p.name == m[2].str(); });
+    if (phase == phases.end())
+      throw std::invalid_argument(spec + ": no phase '" + m[2].str() + "' in " + truth->dir());
+    pass.first = phase->first, pass.last = phase->last;
   }
-  return {spec, 1, 0};
+  if (!fs::is_regular_file(pass.path))
+    throw std::invalid_argument(spec + (fs::exists(pass.path)
+                                            ? ": " + pass.path + " is not a file"
+                                            : ": no such rawlog (RAWLOG, RAWLOG:FIRST-LAST or "
+                                              "RAWLOG:PHASE)"));
+  return pass;
+}
+
+// Says what a pass that gave no frame lacked.
+std::string NoFrameHint(const std::string& poses) {
+  return poses == "rawlog" ? " (--poses rawlog needs the pose observations novelty-poses writes; "
+                             "a simulator's rawlog: --poses groundtruth --groundtruth DIR)"
+                           : "";
 }
 
 struct Multimap {
@@ -88,6 +121,9 @@ void Open(Multimap& m, const std::string& ini) {
   m.maps.setListOfMaps(mrpt_plugins::LoadMultiMapConfig(ini));
   m.map = m.maps.mapByClass<mrpt_plugins::CIlluminationInvariantMap>();
   if (!m.map) throw std::invalid_argument(ini + " declares no CIlluminationInvariantMap");
+  if (m.maps.mapByClass<mrpt_plugins::CIlluminationInvariantMap>(1))
+    throw std::invalid_argument(ini + " declares more than one CIlluminationInvariantMap; "
+                                      "--map-out saves one");
 }
 
 std::unique_ptr<mrpt_plugins::RawlogMapPlayer> MakePlayer(const Pass& pass,
@@ -115,26 +151,67 @@ int ReportSkips(const mrpt_plugins::RawlogMapPlayer& player, const std::string& 
   return player.skipped();
 }
 
+// Progress on a terminal ('\r' lines); one line per pass otherwise.
+bool Interactive() {
+  return isatty(fileno(stderr)) != 0;
+}
+
+// Plays a pass into the maps; throws when no frame of it could be used, naming the pass.
+int PlayPass(const Pass& pass, const std::string& poses, const sim::GroundTruthReader* truth,
+             Multimap& m, const std::string& what, int& skipped) {
+  const auto player = MakePlayer(pass, poses, truth);
+  int frames = 0, last = 0;
+  for (int frame = 0; player->Next(m.maps, frame); last = frame) {
+    ++frames;
+    if (Interactive())
+      std::fprintf(stderr, "\r[novelty-illumination-map] %s: frame %d   ", what.c_str(), frame);
+  }
+  std::fprintf(stderr, "%s[novelty-illumination-map] %s: %d frames from %s\n",
+               Interactive() ? "\r" : "", what.c_str(), frames, pass.spec.c_str());
+  if (frames == 0)  // one line: the first reason says it
+    throw std::invalid_argument(
+        what + " (" + pass.spec + "): no frame could be used" +
+        (player->skipped() ? " (" + player->skip_reasons().front() + ")" : "") +
+        NoFrameHint(poses));
+  skipped += ReportSkips(*player, pass.spec);
+  if (pass.last > 0 && last < pass.last)
+    std::fprintf(stderr,
+                 "[novelty-illumination-map] %s: frames %d-%d asked, the last one used is %d\n",
+                 pass.spec.c_str(), pass.first, pass.last, last);
+  return frames;
+}
+
+// --map-out may replace an earlier map, never anything else (a rawlog given by mistake).
+void CheckMapOut(const std::string& map_out) {
+  const fs::path parent = fs::path(map_out).parent_path();
+  if (!parent.empty() && !fs::is_directory(parent))
+    throw std::invalid_argument("--map-out " + map_out + ": no folder " + parent.string());
+  if (!fs::exists(map_out)) return;
+  try {
+    mrpt_plugins::CIlluminationInvariantMap probe;
+    probe.LoadFromFile(map_out);
+  } catch (const std::exception&) {
+    throw std::invalid_argument("--map-out " + map_out +
+                                " exists and is not an illumination-invariant map: not replacing "
+                                "it");
+  }
+}
+
 int Learn(const std::vector<std::string>& lightings, const std::string& ini,
           const std::string& map_out, const std::string& poses,
           const sim::GroundTruthReader* truth) {
+  // Everything a typo can break is checked before the first frame is read.
+  std::vector<Pass> passes;
+  for (const std::string& spec : lightings) passes.push_back(ParsePass(spec, truth));
+  CheckMapOut(map_out);
   Multimap m;
   Open(m, ini);
   const auto start = std::chrono::steady_clock::now();
   int skipped = 0;
-  for (std::size_t k = 0; k < lightings.size(); ++k) {
-    const Pass pass = ParsePass(lightings[k], truth);
-    const auto player = MakePlayer(pass, poses, truth);
+  for (std::size_t k = 0; k < passes.size(); ++k) {
     m.map->beginLighting();
-    int frames = 0;
-    for (int frame = 0; player->Next(m.maps, frame);) {
-      ++frames;
-      std::fprintf(stderr, "\r[novelty-illumination-map] lighting %zu/%zu: frame %d   ", k + 1,
-                   lightings.size(), frame);
-    }
-    std::fprintf(stderr, "\r[novelty-illumination-map] lighting %zu/%zu: %d frames from %s\n",
-                 k + 1, lightings.size(), frames, lightings[k].c_str());
-    skipped += ReportSkips(*player, lightings[k]);
+    PlayPass(passes[k], poses, truth, m,
+             "lighting " + std::to_string(k + 1) + "/" + std::to_string(passes.size()), skipped);
   }
   std::fprintf(stderr, "[novelty-illumination-map] invariant images at the viewpoints ...\n");
   m.map->finishAcquisition();
@@ -162,23 +239,39 @@ double FrameAuc(const illumination::IlluminationMapResult& r, const cv::Mat& tru
   return eval::ComputeRoc(scores, positive).auc;
 }
 
-int Judge(const std::string& map_in, const std::string& rawlog, const std::string& out,
+// --out may replace an earlier output of this program (it has frames.csv) or an empty folder,
+// never anything else (the ground truth's folder given by mistake).
+void CheckOut(const fs::path& out) {
+  if (!fs::exists(out)) return;
+  if (!fs::is_directory(out))
+    throw std::invalid_argument("--out " + out.string() + " is a file, not a folder");
+  if (!fs::is_empty(out) && !fs::exists(out / "frames.csv"))
+    throw std::invalid_argument("--out " + out.string() +
+                                " holds files that are not novelty-illumination-map's output: not "
+                                "replacing them");
+}
+
+int Judge(const std::string& map_in, const std::string& rawlog, const std::string& out_dir,
           const std::string& poses, const sim::GroundTruthReader* truth, int panels_every) {
+  const Pass pass = ParsePass(rawlog, truth);
+  CheckOut(out_dir);
   Multimap m;
   Open(m, "");
   m.map->LoadFromFile(map_in);
-  const Pass pass = ParsePass(rawlog, truth);
   const auto player = MakePlayer(pass, poses, truth);
-  fs::create_directories(fs::path(out) / "novelty");
-  fs::create_directories(fs::path(out) / "panels");
-  std::ofstream frames_csv(fs::path(out) / "frames.csv");
+  // Written aside and put in place at the end: a failed run leaves an earlier output whole.
+  const fs::path out = out_dir + ".partial";
+  fs::remove_all(out);
+  fs::create_directories(out / "novelty");
+  fs::create_directories(out / "panels");
+  std::ofstream frames_csv(out / "frames.csv");
   frames_csv << "frame,coverage,regions,matched,mean_delta,max_delta,auc\n";
   eval::HtmlReport report("novelty-illumination-map: " + rawlog + " against " + map_in);
   std::vector<double> scores;
   std::vector<bool> positive;
-  int frames = 0;
+  int frames = 0, last = 0;
   double seconds = 0.0;
-  for (int frame = 0;;) {
+  for (int frame = 0;; last = frame) {
     const auto t0 = std::chrono::steady_clock::now();
     if (!player->Next(m.maps, frame)) break;
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -208,13 +301,12 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
       // Δ on a fixed scale, so that frames compare: twice T_Y, where i_Y starts a region.
       const double scale = 2.0 * r.viewpoint.model.threshold;
       const cv::Mat delta = core::FalseColor(r.novelty.novelty, scale);
-      core::WriteRgbImage((fs::path(out) / "novelty" / cv::format("%06d.png", frame)).string(),
-                          delta);
+      core::WriteRgbImage((out / "novelty" / cv::format("%06d.png", frame)).string(), delta);
       if (panels_every > 0 && (frames - 1) % panels_every == 0) {
         cv::Mat information = r.novelty.information_y.clone();
         information.setTo(0.0f, r.viewpoint.covered == 0);
         const std::string panel = cv::format("panels/%06d.png", frame);
-        core::WriteRgbImage((fs::path(out) / panel).string(),
+        core::WriteRgbImage((out / panel).string(),
                             eval::SideBySide({m.map->lastFrame().rgb,
                                               illumination::LinearImage8(r.viewpoint.log_invariant,
                                                                          r.viewpoint.covered),
@@ -226,13 +318,28 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
                                        100 * r.coverage, r.novelty.region_count));
       }
     }
-    std::fprintf(stderr, "\r[novelty-illumination-map] frame %d: %.0f %% covered   ", frame,
-                 100 * r.coverage);
+    if (Interactive())
+      std::fprintf(stderr, "\r[novelty-illumination-map] frame %d: %.0f %% covered   ", frame,
+                   100 * r.coverage);
   }
-  std::fprintf(stderr, "\n");
+  if (Interactive()) std::fprintf(stderr, "\n");
+  if (frames == 0) {
+    fs::remove_all(out);
+    throw std::invalid_argument(rawlog + ": no frame could be judged" +
+                                (player->skipped() ? " (" + player->skip_reasons().front() + ")"
+                                 : pass.last > 0
+                                     ? " (no camera frame in " + std::to_string(pass.first) + "-" +
+                                           std::to_string(pass.last) + ")"
+                                     : " (no camera frame in it)") +
+                                NoFrameHint(poses));
+  }
   const int skipped = ReportSkips(*player, rawlog);
-  if (frames == 0) throw std::invalid_argument(rawlog + ": no frame could be judged");
-  std::ofstream findings(fs::path(out) / "findings.csv");
+  const bool short_range = pass.last > 0 && last < pass.last;
+  if (short_range)
+    std::fprintf(stderr,
+                 "[novelty-illumination-map] %s: frames %d-%d asked, the last one judged is %d\n",
+                 pass.spec.c_str(), pass.first, pass.last, last);
+  std::ofstream findings(out / "findings.csv");
   findings << "finding,value\nframes judged," << frames << "\nframes skipped," << skipped
            << "\nms per frame," << 1000 * seconds / frames << "\n";
   std::string summary = cv::format("%d frames judged, %d skipped, %.1f ms a frame", frames, skipped,
@@ -246,9 +353,18 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
         cv::format("; pixel AUC %.3f, TPR at FPR 1 %% %.1f %%", roc.auc, 100 * roc.TprAtFpr(0.01));
   }
   report.Paragraph(summary);
-  report.Save((fs::path(out) / "report.html").string());
-  std::printf("%s → %s/report.html\n", summary.c_str(), out.c_str());
-  return player->stopped_by().empty() ? 0 : 3;
+  report.Paragraph(
+      "frames.csv: per frame the share of pixels the map covers, the regions of i_Y > T_Y and how "
+      "many a stored highlight or shadow shape explains, the mean and largest novelty Δ (nats, "
+      "eq. 6.24) and, with --groundtruth, the pixel AUC of Δ against the novelty mask. Pictures: "
+      "Δ and i_Y in false colour from 0 to 2·T_Y.");
+  report.Save((out / "report.html").string());
+  findings.close();
+  frames_csv.close();
+  fs::remove_all(out_dir);
+  fs::rename(out, out_dir);
+  std::printf("%s → %s/report.html\n", summary.c_str(), out_dir.c_str());
+  return player->stopped_by().empty() && !short_range ? 0 : 3;
 }
 
 }  // namespace
@@ -260,8 +376,10 @@ int main(int argc, char** argv) {
         "judge a rawlog's frames with a learnt map",
         "0.1");
     TCLAP::MultiArg<std::string> lighting(
-        "", "lighting", "Learning: one lighting's pass, RAWLOG[:FIRST-LAST|:PHASE]; repeat", false,
-        "RAWLOG", cmd);
+        "", "lighting",
+        "Learning: one lighting's pass, RAWLOG[:FIRST-LAST|:PHASE] (camera frames, 1-based, "
+        "inclusive; PHASE of --groundtruth); repeat, at least twice",
+        false, "RAWLOG", cmd);
     TCLAP::ValueArg<std::string> map_out("", "map-out", "Learning: where to save the map", false,
                                          "", "FILE", cmd);
     TCLAP::ValueArg<std::string> ini(
@@ -278,14 +396,15 @@ int main(int argc, char** argv) {
     TCLAP::ValuesConstraint<std::string> pose_names(pose_sources);
     TCLAP::ValueArg<std::string> poses(
         "", "poses",
-        "Camera poses: the rawlog's pose observations (novelty-poses), wheel odometry or the "
-        "ground truth's",
+        "Camera poses: the rawlog's pose observations (novelty-poses; default), wheel odometry or "
+        "the ground truth's (needs --groundtruth)",
         false, "rawlog", &pose_names, cmd);
     TCLAP::ValueArg<std::string> truth_dir(
         "", "groundtruth", "novelty-sim's ground-truth folder (poses, phases, novelty masks)",
         false, "", "DIR", cmd);
-    TCLAP::ValueArg<int> panels_every("", "panels-every", "Judging: a panel every K frames", false,
-                                      10, "K", cmd);
+    TCLAP::ValueArg<int> panels_every("", "panels-every",
+                                      "Judging: a panel every K frames (default 10; 0: none)",
+                                      false, 10, "K", cmd);
     cmd.Parse(argc, argv);
     const bool learning = lighting.isSet(), judging = map_in.isSet();
     if (learning == judging)
@@ -296,6 +415,12 @@ int main(int argc, char** argv) {
           "invariant) and --map-out");
     if (judging && (rawlog.getValue().empty() || out.getValue().empty()))
       throw std::invalid_argument("judging needs --rawlog and --out");
+    if (judging && (ini.isSet() || map_out.isSet()))
+      throw std::invalid_argument(
+          "--ini and --map-out are for learning; a judged map keeps the options it was learnt "
+          "with");
+    if (learning && (rawlog.isSet() || out.isSet()))
+      throw std::invalid_argument("--rawlog and --out are for judging (with --map-in)");
     if (panels_every.getValue() < 0) throw std::invalid_argument("--panels-every must be >= 0");
     std::optional<sim::GroundTruthReader> truth;
     if (truth_dir.isSet()) truth.emplace(truth_dir.getValue());
