@@ -136,9 +136,7 @@ IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
   std::vector<IlluminationComponents> components;
   std::vector<cv::Mat> valid;  // per image: covered by the invariant image and by the image
   std::vector<double> luminance, saturation;
-  std::vector<float> texture;
   std::vector<cv::Mat> hidden;  // per image, with options.missing_texture
-  cv::Mat texture_scale;
   const double texture_floor =
       options.missing_texture ? TextureFloor(invariant, options.texture) : 0.0;
   for (std::size_t m = 0; m < m_count; ++m) {
@@ -151,11 +149,6 @@ IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
       hidden.push_back(HiddenTextureShare(invariant.log_illumination[m] + invariant.log_invariant,
                                           invariant.log_invariant, valid[m], texture_floor,
                                           options.texture));
-  }
-  if (options.missing_texture) {
-    TextureStatistics statistics = LearnTextureStatistics(hidden, valid);
-    texture_scale = statistics.scale;
-    texture = std::move(statistics.samples);
   }
   if (luminance.empty()) throw std::invalid_argument("LearnIlluminationModel: no pixel is covered");
   IlluminationModel model;
@@ -173,10 +166,11 @@ IlluminationModel LearnIlluminationModel(const InvariantImage& invariant,
     if (s.status != stats::GammaFit::Status::kConstant) model.saturation = s;
   }
   if (options.missing_texture) {
-    model.texture = stats::LearnTail(texture);
+    TextureStatistics statistics = LearnTextureStatistics(hidden, valid);
+    model.texture = stats::LearnTail(statistics.samples);
     model.texture_block = options.texture.block;
     model.texture_floor = texture_floor;
-    model.texture_scale = texture_scale;
+    model.texture_scale = statistics.scale;
   }
   std::vector<cv::Mat> information;
   double sum = 0.0, count = 0.0;

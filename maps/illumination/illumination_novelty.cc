@@ -144,7 +144,7 @@ IlluminationNovelty DetectIlluminationNovelty(const cv::Mat& image,
   // Step 4, eq. 6.24.
   cv::Mat magnitude;
   cv::magnitude(out.information_y, out.information_s, magnitude);
-  cv::magnitude(magnitude, out.information_t, magnitude);
+  if (!model.texture.empty()) cv::magnitude(magnitude, out.information_t, magnitude);
   out.novelty = out.shape_factor.mul(magnitude);
   out.novelty.setTo(0.0f, viewpoint.covered == 0);
   return out;
