@@ -3,6 +3,7 @@
 //
 //   novelty-objects --learnt LEARN --learn-groundtruth DIR --rawlog I3.rawlog --groundtruth DIR
 //                   --out OUT [--min-visible-pixels 400] [--frames N] [--panels-every K]
+//                   [--verify-nearest 2]
 //                   [--baseline-map I1.map --learn-rawlog I1I2.rawlog [--baseline-from 361]]
 //
 // LEARN is novelty-run's output folder of the learning run (objects.csv, map.object_database),
@@ -13,7 +14,9 @@
 //   OUT/features.csv       per learnt feature: object, the object's true name, its 3-D place,
 //                          whether the place lies on that object (ground-truth ids and depth)
 //   OUT/recognition.csv    per I3 frame and learnt object: pixels it shows, matches N_k, matches
-//                          that agree on a pose (verified), visible (fig. 5.5 a, b)
+//                          that agree on a pose (verified), the same with the ratio test's
+//                          distinct second, the places where the features' K nearest keypoints
+//                          agree on a pose (verified_nearest), visible (fig. 5.5 a, b)
 //   OUT/findings.csv       finding,value,target,holds — the ROC over (frame, object) decisions
 //                          sweeping the matches required (fig. 5.5 d), TPR at FPR 0.3/1/5 %, AUC,
 //                          the database's size, features on their object
@@ -62,6 +65,7 @@ struct Args {
   int min_visible = 400, frames = 0, panels_every = 20;
   std::string baseline_map, learn_rawlog;  // the baseline's I1 map and I2 rawlog
   int baseline_from = 361;
+  int verify_nearest = 2;
 };
 
 // One row of novelty-run's objects.csv (eval/object_steps_csv.h).
@@ -232,14 +236,15 @@ int FeatureOnObject(const objects::FeatureDatabase& db, int h, const LearningEva
 
 // The recognition scores compared (each an ROC): N_k with the thesis's ratio test, and the
 // matches of N_k that agree on a pose; the same with the ratio test's second candidate of
-// another place (ratio_matches.h).
-constexpr int kScores = 4;
-const char* const kScoreNames[kScores] = {"matches (thesis)", "verified matches",
-                                          "matches, distinct second",
-                                          "verified matches, distinct second"};
+// another place (ratio_matches.h); and the features' nearest keypoints, without the ratio test,
+// that agree on a pose (ObjectRecognitionOptions::verify_nearest).
+constexpr int kScores = 5;
+const char* const kScoreNames[kScores] = {
+    "matches (thesis)", "verified matches", "matches, distinct second",
+    "verified matches, distinct second", "verified nearest keypoints"};
 const char* const kScoreColumns[kScores] = {"matches", "verified_matches", "matches_distinct",
-                                            "verified_matches_distinct"};
-const char* const kScoreColours[kScores] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7"};
+                                            "verified_matches_distinct", "verified_nearest"};
+const char* const kScoreColours[kScores] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00"};
 
 struct RecognitionRow {
   int frame, object, visible_pixels;
@@ -286,6 +291,8 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
   for (const auto& [id, name] : truth.ObjectNames()) ids_by_name[name].push_back(id);
   objects::ObjectRecognitionOptions distinct = thesis;
   distinct.distinct_second = true;
+  objects::ObjectRecognitionOptions nearest = thesis;
+  nearest.verify_nearest = a.verify_nearest;
   RecognitionRun run;
   std::ofstream csv(csv_path);
   csv << "frame,object,name,visible_pixels,visible";
@@ -300,6 +307,7 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
     const objects::FrameRecognition r = objects::MatchObjects(features, db, frame.camera, thesis);
     const objects::FrameRecognition rd =
         objects::MatchObjects(features, db, frame.camera, distinct);
+    const objects::FrameRecognition rn = objects::MatchObjects(features, db, frame.camera, nearest);
     const cv::Mat ids = truth.Ids(frame.index);
     if (ids.empty())
       throw std::runtime_error(a.truth + ": no ids image for frame " + std::to_string(frame.index));
@@ -309,11 +317,12 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
         for (int i : id->second) visible += eval::VisiblePixels(ids, i);
       const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
       const objects::ObjectEvidence& ed = rd.per_object[std::size_t(k)];
+      const objects::VerifiedPose& pn = rn.per_object[std::size_t(k)].pose;
       run.rows.push_back({frame.index,
                           k,
                           visible,
                           {e.matches, e.pose.verified ? e.pose.inliers : 0, ed.matches,
-                           ed.pose.verified ? ed.pose.inliers : 0}});
+                           ed.pose.verified ? ed.pose.inliers : 0, pn.verified ? pn.inliers : 0}});
       csv << frame.index << ',' << k << ',' << names[std::size_t(k)] << ',' << visible << ','
           << (visible >= a.min_visible);
       for (int score : run.rows.back().scores) csv << ',' << score;
@@ -473,16 +482,22 @@ Args Parse(int argc, char** argv) {
   TCLAP::ValueArg<int> baseline_from("", "baseline-from",
                                      "The baseline learns from this frame on (default 361, I2)",
                                      false, 361, "N", cmd);
+  TCLAP::ValueArg<int> verify_nearest(
+      "", "verify-nearest",
+      "The score 'verified nearest keypoints': each database feature's K nearest keypoints, "
+      "without the ratio test, that agree on the object's pose (default 2)",
+      false, 2, "K", cmd);
   cmd.Parse(argc, argv);
-  Args a{learnt.getValue(),       learn_truth.getValue(),  rawlog.getValue(),
-         truth.getValue(),        out.getValue(),          min_visible.getValue(),
-         frames.getValue(),       panels.getValue(),       baseline_map.getValue(),
-         learn_rawlog.getValue(), baseline_from.getValue()};
+  Args a{learnt.getValue(),       learn_truth.getValue(),   rawlog.getValue(),
+         truth.getValue(),        out.getValue(),           min_visible.getValue(),
+         frames.getValue(),       panels.getValue(),        baseline_map.getValue(),
+         learn_rawlog.getValue(), baseline_from.getValue(), verify_nearest.getValue()};
   if (a.baseline_map.empty() != a.learn_rawlog.empty())
     throw std::invalid_argument("--baseline-map and --learn-rawlog go together");
   if (a.min_visible < 1) throw std::invalid_argument("--min-visible-pixels must be >= 1");
   if (a.frames < 0) throw std::invalid_argument("--frames must be >= 0");
   if (a.panels_every < 0) throw std::invalid_argument("--panels-every must be >= 0");
+  if (a.verify_nearest < 1) throw std::invalid_argument("--verify-nearest must be >= 1");
   return a;
 }
 

@@ -19,14 +19,17 @@ VerifiedPose VerifyObjectPose(const std::vector<Eigen::Vector3d>& points_object,
     throw std::invalid_argument("VerifyObjectPose: " + std::to_string(points_object.size()) +
                                 " points for " + std::to_string(pixels.size()) + " pixels");
   if (!(options.reprojection_px > 0.0) || options.min_inliers < 4 || options.max_iterations < 1)
-    throw std::invalid_argument("PoseVerificationOptions: reprojection_px > 0, min_inliers >= 4, "
-                                "max_iterations >= 1");
+    throw std::invalid_argument(
+        "PoseVerificationOptions: reprojection_px > 0, min_inliers >= 4, "
+        "max_iterations >= 1");
   opengv::bearingVectors_t bearings;
   opengv::points_t points;
+  std::vector<int> given;  // per pair used, its index among those given
   for (std::size_t i = 0; i < pixels.size(); ++i) {
     if (!points_object[i].allFinite()) continue;
     bearings.push_back(camera.RayCam(pixels[i].x, pixels[i].y).normalized());
     points.push_back(points_object[i]);
+    given.push_back(int(i));
   }
   VerifiedPose out;
   out.pairs = int(points.size());
@@ -41,8 +44,10 @@ VerifiedPose VerifyObjectPose(const std::vector<Eigen::Vector3d>& points_object,
   ransac.threshold_ = 1.0 - std::cos(std::atan(options.reprojection_px / camera.fx));
   ransac.max_iterations_ = options.max_iterations;
   if (!ransac.computeModel()) return out;
-  out.inliers = int(ransac.inliers_.size());
-  if (out.inliers < options.min_inliers) return out;
+  if (int(ransac.inliers_.size()) < options.min_inliers) {
+    out.inliers = int(ransac.inliers_.size());
+    return out;
+  }
   // RANSAC's pose is one minimal sample's: refined on all its inliers (Levenberg–Marquardt on
   // the bearing errors), it uses every agreeing pair. OpenGV's model: the camera's rotation and
   // position in the object's frame.
@@ -54,7 +59,12 @@ VerifiedPose VerifyObjectPose(const std::vector<Eigen::Vector3d>& points_object,
   T_object_cam.linear() = m.block<3, 3>(0, 0);
   T_object_cam.translation() = m.col(3);
   out.T_cam_object = T_object_cam.inverse();
-  out.verified = true;
+  // The pairs that agree with the refined pose, by the same error RANSAC used.
+  std::vector<int> agreeing;
+  problem->selectWithinDistance(m, ransac.threshold_, agreeing);
+  for (int i : agreeing) out.inlier_pairs.push_back(given[std::size_t(i)]);
+  out.inliers = int(out.inlier_pairs.size());
+  out.verified = out.inliers >= options.min_inliers;
   return out;
 }
 

@@ -29,6 +29,9 @@ struct VerifiedPose {
   bool verified = false;
   int pairs = 0;    ///< 2-D–3-D pairs given with a known 3-D place
   int inliers = 0;  ///< pairs that agree with the pose
+  /// With a pose (RANSAC's, refined): the indices (into the pairs given) of those that agree
+  /// with it; inliers is their number.
+  std::vector<int> inlier_pairs;
   /// The object's frame in the camera's (maps object points into camera coordinates); identity
   /// unless verified.
   Eigen::Isometry3d T_cam_object = Eigen::Isometry3d::Identity();

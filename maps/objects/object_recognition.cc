@@ -1,9 +1,33 @@
 #include "maps/objects/object_recognition.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace novelty::objects {
+
+namespace {
+
+// Agreeing pairs at distinct places: a keypoint farther than `merge_px` from every one counted
+// before. A detector finds one blob at neighbouring scales, a feature may have several
+// candidates there, and a pose that puts the whole object far away collapses it onto one
+// cluster of keypoints: each such place is one piece of evidence.
+int DistinctPlaces(const std::vector<cv::Point2f>& pixels, const std::vector<int>& agreeing,
+                   double merge_px) {
+  std::vector<cv::Point2f> counted;
+  const float merge2 = float(merge_px * merge_px);
+  for (int i : agreeing) {
+    const cv::Point2f& p = pixels[std::size_t(i)];
+    if (std::none_of(counted.begin(), counted.end(), [&](const cv::Point2f& q) {
+          const cv::Point2f d = p - q;
+          return d.dot(d) <= merge2;
+        }))
+      counted.push_back(p);
+  }
+  return int(counted.size());
+}
+
+}  // namespace
 
 VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
                                  const std::vector<RatioMatch>& matches,
@@ -17,7 +41,11 @@ VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
     places.push_back(database.Position(m.reference));
     pixels.push_back(keypoints.at(std::size_t(m.candidate)).pt);
   }
-  return VerifyObjectPose(places, pixels, camera, options);
+  VerifiedPose pose = VerifyObjectPose(places, pixels, camera, options);
+  pose.inliers = DistinctPlaces(pixels, pose.inlier_pairs, 2.0 * options.reprojection_px);
+  pose.verified = pose.verified && pose.inliers >= options.min_inliers;
+  if (!pose.verified) pose.T_cam_object = Eigen::Isometry3d::Identity();
+  return pose;
 }
 
 FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor) {
@@ -42,13 +70,21 @@ FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDataba
       database.Match(any ? features.descriptors : cv::Mat(), options.match_ratio,
                      options.distinct_second && any ? &r.keypoints : nullptr);
   r.matches = m.matches;
+  if (options.verify_nearest < 0)
+    throw std::invalid_argument("ObjectRecognitionOptions: verify_nearest must be >= 0, got " +
+                                std::to_string(options.verify_nearest));
+  // The pairs verification sorts out: the ratio matches, or each feature's nearest keypoints.
+  const std::vector<RatioMatch> nearest =
+      options.verify && options.verify_nearest > 0 && any && database.features() > 0
+          ? NearestMatches(database.descriptors(), features.descriptors, options.verify_nearest)
+          : std::vector<RatioMatch>();
+  const std::vector<RatioMatch>& pairs = options.verify_nearest > 0 ? nearest : r.matches;
   r.per_object.resize(std::size_t(database.objects()));
   for (int k = 0; k < database.objects(); ++k) {
     ObjectEvidence& e = r.per_object[std::size_t(k)];
     e.matches = m.matches_per_object[std::size_t(k)];
-    if (options.verify && e.matches > 0)
-      e.pose =
-          VerifyObjectMatches(database, r.matches, r.keypoints, k, camera, options.verification);
+    if (options.verify && (e.matches > 0 || options.verify_nearest > 0))
+      e.pose = VerifyObjectMatches(database, pairs, r.keypoints, k, camera, options.verification);
   }
   return r;
 }

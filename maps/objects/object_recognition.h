@@ -19,7 +19,7 @@ namespace novelty::objects {
 
 struct ObjectEvidence {
   int matches = 0;    ///< N_k: matched database features whose most probable object is k
-  VerifiedPose pose;  ///< set when verification was asked for and k has matches
+  VerifiedPose pose;  ///< set when verification was asked for and k has matches (or pairs)
 };
 
 struct FrameRecognition {
@@ -29,7 +29,8 @@ struct FrameRecognition {
 };
 
 /// The matches of `object` among `matches` as 2-D–3-D pairs (the database features' learnt
-/// places and the keypoints' pixels), verified by VerifyObjectPose.
+/// places and the keypoints' pixels), verified by VerifyObjectPose. `inliers` counts the
+/// agreeing pairs at distinct places: keypoints more than 2·reprojection_px apart.
 VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
                                  const std::vector<RatioMatch>& matches,
                                  const std::vector<cv::KeyPoint>& keypoints, int object,
@@ -41,6 +42,10 @@ struct ObjectRecognitionOptions {
   /// The ratio test's second candidate of another place (ratio_matches.h); false: the thesis's.
   bool distinct_second = false;
   bool verify = false;  ///< verify each object with matches (object_pose_verification.h)
+  /// With verify: the pairs verified are each database feature's this many nearest keypoints,
+  /// without the ratio test (ratio_matches.h, NearestMatches), and every object is verified;
+  /// 0: the ratio matches, and only objects that have some (eq. 5.4's matches verified).
+  int verify_nearest = 0;
   PoseVerificationOptions verification;
 };
 

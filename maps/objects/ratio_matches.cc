@@ -10,19 +10,27 @@ namespace novelty::objects {
 
 namespace {
 
-// The k nearest candidates of each reference row, or nothing if no test can pass.
+// The k nearest candidates of each reference row; nothing if there are fewer than
+// `min_candidates`.
+std::vector<std::vector<cv::DMatch>> KNearest(const cv::Mat& reference, const cv::Mat& candidates,
+                                              int k, int min_candidates) {
+  std::vector<std::vector<cv::DMatch>> knn;
+  if (reference.empty() || candidates.rows < min_candidates) return knn;
+  if (reference.type() != CV_32FC1 || candidates.type() != CV_32FC1 ||
+      reference.cols != candidates.cols)
+    throw std::invalid_argument(
+        "descriptor matching: descriptors must be CV_32F rows of equal width");
+  cv::BFMatcher(cv::NORM_L2).knnMatch(reference, candidates, knn, std::min(k, candidates.rows));
+  return knn;
+}
+
+// The k nearest candidates of each reference row, or nothing if no ratio test can pass.
 std::vector<std::vector<cv::DMatch>> Nearest(const cv::Mat& reference, const cv::Mat& candidates,
                                              double ratio, int k) {
   if (!(ratio > 0.0 && ratio <= 1.0))
     throw std::invalid_argument("RatioMatches: ratio must be in (0, 1], got " +
                                 std::to_string(ratio));
-  std::vector<std::vector<cv::DMatch>> knn;
-  if (reference.empty() || candidates.rows < 2) return knn;
-  if (reference.type() != CV_32FC1 || candidates.type() != CV_32FC1 ||
-      reference.cols != candidates.cols)
-    throw std::invalid_argument("RatioMatches: descriptors must be CV_32F rows of equal width");
-  cv::BFMatcher(cv::NORM_L2).knnMatch(reference, candidates, knn, std::min(k, candidates.rows));
-  return knn;
+  return KNearest(reference, candidates, k, 2);
 }
 
 }  // namespace
@@ -61,6 +69,15 @@ std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& ca
     if (m[0].distance <= ratio * second)
       out.push_back({m[0].queryIdx, m[0].trainIdx, m[0].distance});
   }
+  return out;
+}
+
+std::vector<RatioMatch> NearestMatches(const cv::Mat& reference, const cv::Mat& candidates, int k) {
+  if (k < 1)
+    throw std::invalid_argument("NearestMatches: k must be >= 1, got " + std::to_string(k));
+  std::vector<RatioMatch> out;
+  for (const auto& m : KNearest(reference, candidates, k, 1))
+    for (const cv::DMatch& d : m) out.push_back({d.queryIdx, d.trainIdx, d.distance});
   return out;
 }
 

@@ -34,4 +34,12 @@ std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& ca
                                      double ratio,
                                      const std::vector<cv::KeyPoint>& candidate_keypoints);
 
+/// Every row of `reference` with each of its `k` nearest rows of `candidates` (fewer if there
+/// are fewer), nearest first, no ratio test: the putative pairs a geometric verification sorts
+/// out (object_pose_verification.h). A descriptor seen from another viewpoint or among repeated
+/// structure often has its true match nearest but not by the ratio test's margin; a pose that
+/// many pairs agree on tells it from chance. Throws std::invalid_argument for mismatched
+/// descriptors or k < 1.
+std::vector<RatioMatch> NearestMatches(const cv::Mat& reference, const cv::Mat& candidates, int k);
+
 }  // namespace novelty::objects

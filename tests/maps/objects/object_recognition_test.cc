@@ -88,6 +88,74 @@ TEST(ObjectRecognition, AnotherPrintIsNotRecognised) {
   EXPECT_LE(two.per_object[0].matches, 3);
 }
 
+// A database of n features at random places on a 20 × 14 × 10 cm object (object frame = camera
+// frame, 0.9 m in front), each with a random unit descriptor.
+FeatureDatabase RandomObject(int n, unsigned seed) {
+  cv::RNG rng(seed);
+  cv::Mat d(n, 64, CV_32F);
+  rng.fill(d, cv::RNG::NORMAL, 0.0, 1.0);
+  for (int i = 0; i < n; ++i) cv::normalize(d.row(i), d.row(i));
+  std::vector<Eigen::Vector3d> places;
+  for (int i = 0; i < n; ++i)
+    places.emplace_back(rng.uniform(-0.1, 0.1), rng.uniform(-0.07, 0.07),
+                        0.9 + rng.uniform(-0.05, 0.05));
+  FeatureDatabase db;
+  db.AddFeatures(d, db.AddObject(), places);
+  return db;
+}
+
+TEST(ObjectRecognition, NearestKeypointsVerifyWhereEachBlobsDuplicateDefeatsTheRatioTest) {
+  const FeatureDatabase db = RandomObject(12, 7);
+  // The frame: each feature's blob detected three times within a pixel (neighbouring scales),
+  // with descriptors a little off the learnt one, plus 100 unrelated keypoints.
+  FrameFeatures f;
+  cv::RNG rng(8);
+  for (int h = 0; h < db.features(); ++h) {
+    const Eigen::Vector2d uv = kCamera.Project(db.Position(h));
+    for (int dup = 0; dup < 3; ++dup) {
+      f.keypoints.emplace_back(cv::Point2f(float(uv.x()) + 0.4f * float(dup), float(uv.y())), 20.f);
+      cv::Mat noise(1, 64, CV_32F);
+      rng.fill(noise, cv::RNG::NORMAL, 0.0, 0.02);
+      f.descriptors.push_back(cv::Mat(db.descriptors().row(h) + noise));
+    }
+  }
+  for (int i = 0; i < 100; ++i) {
+    f.keypoints.emplace_back(cv::Point2f(rng.uniform(0.f, 320.f), rng.uniform(0.f, 240.f)), 20.f);
+    cv::Mat d(1, 64, CV_32F);
+    rng.fill(d, cv::RNG::NORMAL, 0.0, 1.0);
+    f.descriptors.push_back(cv::Mat(d / cv::norm(d)));
+  }
+  ObjectRecognitionOptions thesis;
+  thesis.verify = true;
+  const FrameRecognition r = MatchObjects(f, db, kCamera, thesis);
+  EXPECT_EQ(r.per_object[0].matches, 0) << "every second-nearest is the blob's duplicate";
+  EXPECT_FALSE(r.per_object[0].pose.verified);
+  ObjectRecognitionOptions nearest = thesis;
+  nearest.verify_nearest = 2;
+  const VerifiedPose v = MatchObjects(f, db, kCamera, nearest).per_object[0].pose;
+  ASSERT_TRUE(v.verified);
+  EXPECT_EQ(v.inliers, 12) << "one per place: not the 24 agreeing pairs";
+  EXPECT_GE(v.inlier_pairs.size(), 20u);
+  EXPECT_LT(v.T_cam_object.translation().norm(), 0.01) << "object frame = camera frame";
+  nearest.verify_nearest = -1;
+  EXPECT_THROW(MatchObjects(f, db, kCamera, nearest), std::invalid_argument);
+}
+
+TEST(ObjectRecognition, APoseThatCollapsesTheObjectOntoOneClusterOfKeypointsIsNotVerified) {
+  // Every feature matched into one cluster of keypoints 1 px apart: a pose that puts the object
+  // far away makes them all agree, but they are evidence of one place only.
+  const FeatureDatabase db = RandomObject(10, 9);
+  std::vector<RatioMatch> matches;
+  std::vector<cv::KeyPoint> keypoints;
+  for (int h = 0; h < db.features(); ++h) {
+    keypoints.emplace_back(cv::Point2f(160.f + float(h % 3), 120.f + float(h / 3 % 3)), 20.f);
+    matches.push_back({h, h, 0.1f});
+  }
+  const VerifiedPose v = VerifyObjectMatches(db, matches, keypoints, 0, kCamera, {});
+  EXPECT_FALSE(v.verified);
+  EXPECT_LE(v.inliers, 2);
+}
+
 TEST(ObjectRecognition, ADatabaseOfAnotherWidthIsAClearError) {
   FeatureDatabase db;
   db.AddFeatures(cv::Mat::ones(3, 128, CV_32F), db.AddObject());

@@ -49,5 +49,30 @@ TEST(RatioMatches, CandidatesAllAtOnePlaceLeaveNothingToConfuseAndBadInputThrows
       << "a single candidate passes no ratio test";
 }
 
+TEST(NearestMatches, GivesEachReferenceItsKNearestInOrderWithoutARatioTest) {
+  cv::Mat reference;
+  reference.push_back(Descriptor(1));
+  reference.push_back(Descriptor(5));
+  cv::Mat candidates;
+  candidates.push_back(Descriptor(4));                                   // unrelated
+  candidates.push_back(Descriptor(3, 0.07f, reference.row(0).clone()));  // the blob again
+  candidates.push_back(Descriptor(2, 0.05f, reference.row(0).clone()));  // the match
+  const std::vector<RatioMatch> m = NearestMatches(reference, candidates, 2);
+  ASSERT_EQ(m.size(), 4u);
+  EXPECT_EQ(m[0].reference, 0);
+  EXPECT_EQ(m[0].candidate, 2) << "nearest first";
+  EXPECT_EQ(m[1].candidate, 1);
+  EXPECT_LE(m[0].distance, m[1].distance);
+  EXPECT_NEAR(m[0].distance, cv::norm(reference.row(0), candidates.row(2)), 1e-4);
+  EXPECT_EQ(m[2].reference, 1);
+  EXPECT_LE(m[2].distance, m[3].distance);
+  // The ratio test rejects the match the nearest pairs keep.
+  EXPECT_TRUE(RatioMatches(reference.row(0), candidates, 0.65).empty());
+  EXPECT_EQ(NearestMatches(reference, candidates.row(2), 3).size(), 2u) << "fewer candidates";
+  EXPECT_TRUE(NearestMatches(cv::Mat(), candidates, 2).empty());
+  EXPECT_THROW(NearestMatches(reference, candidates, 0), std::invalid_argument);
+  EXPECT_THROW(NearestMatches(reference, cv::Mat::ones(3, 32, CV_32F), 1), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace novelty::objects
