@@ -17,8 +17,9 @@
 // the map atomically (--map-out replaces an earlier map, nothing else). Judging writes
 // OUT/novelty/FRAME.png (Δ in false colour), OUT/frames.csv
 // (per frame: coverage, regions, matched regions, mean and largest Δ; with --groundtruth the
-// pixel AUC of Δ against the novelty mask), OUT/findings.csv and OUT/report.html with a panel
-// (camera, invariant image, information i_Y, Δ) every --panels-every frames; all of it into
+// pixel AUC of Δ against the novelty mask), OUT/findings.csv and OUT/report.html: plots of Δ,
+// coverage and AUC per frame, the pixel ROC (with --groundtruth), and a panel (camera,
+// invariant image, information i_Y, Δ) every --panels-every frames; all of it into
 // OUT.partial, renamed to OUT at the end (OUT may be an earlier output, nothing else), so a failed
 // run leaves the earlier output whole. Frames that cannot be used are skipped and counted; a
 // rawlog that ends early, or before the frames asked, gives results and exit 3.
@@ -122,8 +123,9 @@ void Open(Multimap& m, const std::string& ini) {
   m.map = m.maps.mapByClass<mrpt_plugins::CIlluminationInvariantMap>();
   if (!m.map) throw std::invalid_argument(ini + " declares no CIlluminationInvariantMap");
   if (m.maps.mapByClass<mrpt_plugins::CIlluminationInvariantMap>(1))
-    throw std::invalid_argument(ini + " declares more than one CIlluminationInvariantMap; "
-                                      "--map-out saves one");
+    throw std::invalid_argument(ini +
+                                " declares more than one CIlluminationInvariantMap; "
+                                "--map-out saves one");
 }
 
 std::unique_ptr<mrpt_plugins::RawlogMapPlayer> MakePlayer(const Pass& pass,
@@ -225,6 +227,22 @@ int Learn(const std::vector<std::string>& lightings, const std::string& ini,
 
 // Pixel AUC of Δ against the truth's novelty mask over the covered pixels (NaN when the frame
 // shows no novelty or no background).
+// The ROC's points up to `max_fpr`, in percent, at most about 400 of them: a pixel ROC has a
+// point per distinct score, far more than a plot can show.
+eval::PlotSeries RocSeries(const eval::Roc& roc, double max_fpr) {
+  eval::PlotSeries s{"novelty Δ", "#0072b2", {}, 0.0};
+  const double step = max_fpr / 400.0;
+  double last = -1.0;
+  for (const eval::RocPoint& p : roc.points) {
+    if (p.fpr > max_fpr) break;
+    if (p.fpr - last >= step || p.fpr == 0.0) {
+      s.points.emplace_back(100 * p.fpr, 100 * p.tpr);
+      last = p.fpr;
+    }
+  }
+  return s;
+}
+
 double FrameAuc(const illumination::IlluminationMapResult& r, const cv::Mat& truth) {
   std::vector<double> scores;
   std::vector<bool> positive;
@@ -269,6 +287,11 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
   eval::HtmlReport report("novelty-illumination-map: " + rawlog + " against " + map_in);
   std::vector<double> scores;
   std::vector<bool> positive;
+  // Per frame for the report's plots: coverage, mean and largest Δ, pixel AUC (NaN: none).
+  eval::PlotSeries coverage_series{"covered share", "#0072b2", {}, 1.0},
+      auc_series{"pixel AUC", "#d55e00", {}, 1.0}, mean_series{"mean Δ", "#009e73", {}, 1.0},
+      max_series{"largest Δ", "#cc79a7", {}, 1.0};
+  std::vector<std::pair<std::string, std::string>> panels;  // (path, caption), after the plots
   int frames = 0, last = 0;
   double seconds = 0.0;
   for (int frame = 0;; last = frame) {
@@ -294,6 +317,10 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
             }
       }
     }
+    coverage_series.points.emplace_back(frame, r.coverage);
+    auc_series.points.emplace_back(frame, auc);
+    mean_series.points.emplace_back(frame, covered ? mean_delta : NAN);
+    max_series.points.emplace_back(frame, covered ? max_delta : NAN);
     frames_csv << frame << ',' << r.coverage << ',' << r.novelty.region_count << ','
                << r.novelty.matched_count << ',' << mean_delta << ',' << max_delta << ','
                << (std::isnan(auc) ? std::string() : std::to_string(auc)) << '\n';
@@ -314,8 +341,8 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
                                              4,
                                              {cv::format("frame %d", frame), "invariant image",
                                               "information i_Y", "novelty (6.3)"}));
-        report.Image(panel, cv::format("frame %d: %.0f %% covered, %d regions", frame,
-                                       100 * r.coverage, r.novelty.region_count));
+        panels.emplace_back(panel, cv::format("frame %d: %.0f %% covered, %d regions", frame,
+                                              100 * r.coverage, r.novelty.region_count));
       }
     }
     if (Interactive())
@@ -345,12 +372,13 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
   std::string summary = cv::format("%d frames judged, %d skipped, %.1f ms a frame", frames, skipped,
                                    1000 * seconds / frames);
   const long n = long(std::count(positive.begin(), positive.end(), true));
+  std::optional<eval::Roc> roc;
   if (n > 0 && n < long(positive.size())) {
-    const eval::Roc roc = eval::ComputeRoc(scores, positive);
-    findings << "pixel AUC of novelty over all frames," << roc.auc << "\nTPR at FPR 1 %,"
-             << roc.TprAtFpr(0.01) << "\n";
-    summary +=
-        cv::format("; pixel AUC %.3f, TPR at FPR 1 %% %.1f %%", roc.auc, 100 * roc.TprAtFpr(0.01));
+    roc = eval::ComputeRoc(scores, positive);
+    findings << "pixel AUC of novelty over all frames," << roc->auc << "\nTPR at FPR 1 %,"
+             << roc->TprAtFpr(0.01) << "\n";
+    summary += cv::format("; pixel AUC %.3f, TPR at FPR 1 %% %.1f %%", roc->auc,
+                          100 * roc->TprAtFpr(0.01));
   }
   report.Paragraph(summary);
   report.Paragraph(
@@ -358,6 +386,21 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
       "many a stored highlight or shadow shape explains, the mean and largest novelty Δ (nats, "
       "eq. 6.24) and, with --groundtruth, the pixel AUC of Δ against the novelty mask. Pictures: "
       "Δ and i_Y in false colour from 0 to 2·T_Y.");
+  report.Heading("Per frame");
+  report.Raw(eval::SvgLinePlot("Novelty Δ over the covered pixels", "frame", "Δ (nats)",
+                               {mean_series, max_series}));
+  std::vector<eval::PlotSeries> shares = {coverage_series};
+  if (roc) shares.push_back(auc_series);
+  report.Raw(
+      eval::SvgLinePlot(roc ? "Coverage and pixel AUC" : "Coverage", "frame", "share", shares));
+  if (roc) {
+    report.Heading("ROC of Δ over the covered pixels of all frames");
+    report.Raw(eval::SvgLinePlot("ROC", "FPR (%)", "TPR (%)", {RocSeries(*roc, 1.0)}));
+    report.Raw(
+        eval::SvgLinePlot("ROC at FPR up to 5 %", "FPR (%)", "TPR (%)", {RocSeries(*roc, 0.05)}));
+  }
+  if (!panels.empty()) report.Heading("Panels");
+  for (const auto& [path, caption] : panels) report.Image(path, caption);
   report.Save((out / "report.html").string());
   findings.close();
   frames_csv.close();

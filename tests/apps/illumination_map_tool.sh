@@ -2,8 +2,8 @@
 # novelty-illumination-map end to end on the four-lightings clip (tests/data/four_lightings.scn):
 # the map learnt from the four passes of one rawlog (phases of the ground truth), saved, loaded
 # and used to judge the fifth pass, where a red box was put down. Asserts the issue's AUC ≥ 0.95
-# over the pass, one novelty picture and one frames.csv row per frame, and clear errors for one
-# lighting and an unknown phase.
+# over the pass, one novelty picture and one frames.csv row per frame, the report's plots, and
+# clear errors for one lighting and an unknown phase.
 #   illumination_map_tool.sh BIN_DIR SOURCE_DIR
 set -euo pipefail
 BIN=$(cd "$1" && pwd)
@@ -28,6 +28,9 @@ awk -v a="${auc:-0}" 'BEGIN { exit !(a >= 0.95) }' || fail "AUC ${auc:-none} < 0
 test "$(ls "$W/judge/novelty" | wc -l)" -eq 10 || fail "not one novelty picture per frame"
 test "$(($(wc -l < "$W/judge/frames.csv") - 1))" -eq 10 || fail "not one frames.csv row per frame"
 test -s "$W/judge/report.html" || fail "no report"
+# The report plots Δ and coverage per frame and the pixel ROC (full and up to FPR 5 %).
+test "$(grep -c '<svg' "$W/judge/report.html")" -eq 4 || fail "report: not the four plots"
+grep -q 'ROC at FPR up to 5 %' "$W/judge/report.html" || fail "report: no ROC plot"
 
 expect_error() {  # expected message, arguments...
   local message=$1
