@@ -42,7 +42,7 @@ VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
     pixels.push_back(keypoints.at(std::size_t(m.candidate)).pt);
   }
   VerifiedPose pose = VerifyObjectPose(places, pixels, camera, options);
-  pose.inliers = DistinctPlaces(pixels, pose.inlier_pairs, 2.0 * options.reprojection_px);
+  pose.inliers = DistinctPlaces(pixels, pose.inlier_pairs, options.reprojection_px);
   pose.verified = pose.verified && pose.inliers >= options.min_inliers;
   if (!pose.verified) pose.T_cam_object = Eigen::Isometry3d::Identity();
   return pose;

@@ -30,7 +30,8 @@ struct FrameRecognition {
 
 /// The matches of `object` among `matches` as 2-D–3-D pairs (the database features' learnt
 /// places and the keypoints' pixels), verified by VerifyObjectPose. `inliers` counts the
-/// agreeing pairs at distinct places: keypoints more than 2·reprojection_px apart.
+/// agreeing pairs at distinct places: keypoints more than reprojection_px apart (pairs nearer
+/// than the tolerance a pose is checked to are one piece of evidence).
 VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
                                  const std::vector<RatioMatch>& matches,
                                  const std::vector<cv::KeyPoint>& keypoints, int object,
