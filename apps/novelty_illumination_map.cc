@@ -225,24 +225,30 @@ int Learn(const std::vector<std::string>& lightings, const std::string& ini,
   return 0;
 }
 
-// Pixel AUC of Δ against the truth's novelty mask over the covered pixels (NaN when the frame
-// shows no novelty or no background).
-// The ROC's points up to `max_fpr`, in percent, at most about 400 of them: a pixel ROC has a
-// point per distinct score, far more than a plot can show.
+// The ROC up to FPR `max_fpr` (a fraction) for a plot, in percent: a pixel ROC has a point per
+// distinct score, far more than a plot shows. Of each of 400 bins of FPR the last point (the
+// highest TPR there, so steps keep their height), the first point, and one interpolated at
+// `max_fpr` so the curve reaches the limit.
 eval::PlotSeries RocSeries(const eval::Roc& roc, double max_fpr) {
   eval::PlotSeries s{"novelty Δ", "#0072b2", {}, 0.0};
-  const double step = max_fpr / 400.0;
-  double last = -1.0;
-  for (const eval::RocPoint& p : roc.points) {
-    if (p.fpr > max_fpr) break;
-    if (p.fpr - last >= step || p.fpr == 0.0) {
-      s.points.emplace_back(100 * p.fpr, 100 * p.tpr);
-      last = p.fpr;
-    }
+  const std::vector<eval::RocPoint>& p = roc.points;
+  const double bin = max_fpr / 400.0;
+  std::size_t i = 0;
+  for (; i < p.size() && p[i].fpr <= max_fpr; ++i) {
+    const bool last_of_bin = i + 1 == p.size() || p[i + 1].fpr > max_fpr ||
+                             std::floor(p[i + 1].fpr / bin) != std::floor(p[i].fpr / bin);
+    if (i == 0 || last_of_bin) s.points.emplace_back(100 * p[i].fpr, 100 * p[i].tpr);
+  }
+  if (i > 0 && i < p.size() && p[i - 1].fpr < max_fpr) {
+    const eval::RocPoint &a = p[i - 1], &b = p[i];
+    const double t = (max_fpr - a.fpr) / (b.fpr - a.fpr);
+    s.points.emplace_back(100 * max_fpr, 100 * (a.tpr + t * (b.tpr - a.tpr)));
   }
   return s;
 }
 
+// Pixel AUC of Δ against the truth's novelty mask over the covered pixels (NaN when the frame
+// shows no novelty or no background).
 double FrameAuc(const illumination::IlluminationMapResult& r, const cv::Mat& truth) {
   std::vector<double> scores;
   std::vector<bool> positive;

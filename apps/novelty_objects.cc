@@ -320,13 +320,15 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
         for (int i : id->second) visible += eval::VisiblePixels(ids, i);
       const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
       const objects::ObjectEvidence& ed = rd.per_object[std::size_t(k)];
-      const objects::VerifiedPose pn =
-          rn.per_object.empty() ? objects::VerifiedPose{} : rn.per_object[std::size_t(k)].pose;
+      const int nearest_score =  // 0 when not computed
+          rn.per_object.empty() || !rn.per_object[std::size_t(k)].pose.verified
+              ? 0
+              : rn.per_object[std::size_t(k)].pose.inliers;
       run.rows.push_back({frame.index,
                           k,
                           visible,
                           {e.matches, e.pose.verified ? e.pose.inliers : 0, ed.matches,
-                           ed.pose.verified ? ed.pose.inliers : 0, pn.verified ? pn.inliers : 0}});
+                           ed.pose.verified ? ed.pose.inliers : 0, nearest_score}});
       csv << frame.index << ',' << k << ',' << names[std::size_t(k)] << ',' << visible << ','
           << (visible >= a.min_visible);
       for (int score : run.rows.back().scores) csv << ',' << score;
@@ -489,7 +491,8 @@ Args Parse(int argc, char** argv) {
   TCLAP::ValueArg<int> verify_nearest(
       "", "verify-nearest",
       "The score 'verified nearest keypoints': each database feature's K nearest keypoints, "
-      "without the ratio test, that agree on the object's pose (default 2)",
+      "without the ratio test, that agree on the object's pose (default 2; 0: not computed, "
+      "scored 0)",
       false, 2, "K", cmd);
   cmd.Parse(argc, argv);
   Args a{learnt.getValue(),       learn_truth.getValue(),   rawlog.getValue(),
@@ -501,7 +504,7 @@ Args Parse(int argc, char** argv) {
   if (a.min_visible < 1) throw std::invalid_argument("--min-visible-pixels must be >= 1");
   if (a.frames < 0) throw std::invalid_argument("--frames must be >= 0");
   if (a.panels_every < 0) throw std::invalid_argument("--panels-every must be >= 0");
-  if (a.verify_nearest < 1) throw std::invalid_argument("--verify-nearest must be >= 1");
+  if (a.verify_nearest < 0) throw std::invalid_argument("--verify-nearest must be >= 0");
   return a;
 }
 

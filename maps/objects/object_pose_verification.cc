@@ -53,18 +53,24 @@ VerifiedPose VerifyObjectPose(const std::vector<Eigen::Vector3d>& points_object,
   // position in the object's frame.
   adapter.setR(ransac.model_coefficients_.block<3, 3>(0, 0));
   adapter.sett(ransac.model_coefficients_.col(3));
-  const opengv::transformation_t m =
-      opengv::absolute_pose::optimize_nonlinear(adapter, ransac.inliers_);
-  Eigen::Isometry3d T_object_cam = Eigen::Isometry3d::Identity();
-  T_object_cam.linear() = m.block<3, 3>(0, 0);
-  T_object_cam.translation() = m.col(3);
-  out.T_cam_object = T_object_cam.inverse();
-  // The pairs that agree with the refined pose, by the same error RANSAC used.
+  opengv::transformation_t m = opengv::absolute_pose::optimize_nonlinear(adapter, ransac.inliers_);
+  // The pairs that agree with the refined pose, by the same error RANSAC used; RANSAC's own pose
+  // and inliers if the refinement agrees with fewer (or failed).
   std::vector<int> agreeing;
-  problem->selectWithinDistance(m, ransac.threshold_, agreeing);
+  if (m.allFinite()) problem->selectWithinDistance(m, ransac.threshold_, agreeing);
+  if (agreeing.size() < ransac.inliers_.size()) {
+    m = ransac.model_coefficients_;
+    agreeing = ransac.inliers_;
+  }
   for (int i : agreeing) out.inlier_pairs.push_back(given[std::size_t(i)]);
   out.inliers = int(out.inlier_pairs.size());
   out.verified = out.inliers >= options.min_inliers;
+  if (out.verified) {
+    Eigen::Isometry3d T_object_cam = Eigen::Isometry3d::Identity();
+    T_object_cam.linear() = m.block<3, 3>(0, 0);
+    T_object_cam.translation() = m.col(3);
+    out.T_cam_object = T_object_cam.inverse();
+  }
   return out;
 }
 

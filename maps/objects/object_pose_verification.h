@@ -27,10 +27,12 @@ struct PoseVerificationOptions {
 
 struct VerifiedPose {
   bool verified = false;
-  int pairs = 0;    ///< 2-D–3-D pairs given with a known 3-D place
-  int inliers = 0;  ///< pairs that agree with the pose
-  /// With a pose (RANSAC's, refined): the indices (into the pairs given) of those that agree
-  /// with it; inliers is their number.
+  int pairs = 0;  ///< 2-D–3-D pairs given with a known 3-D place
+  /// Pairs that agree with the pose (RANSAC's count if it found fewer than min_inliers).
+  int inliers = 0;
+  /// With at least min_inliers found by RANSAC: the indices, into the pairs given (places
+  /// unknown included), of those that agree with the pose — the refined one, or RANSAC's if
+  /// that agrees with more; `inliers` is their number. Empty otherwise.
   std::vector<int> inlier_pairs;
   /// The object's frame in the camera's (maps object points into camera coordinates); identity
   /// unless verified.

@@ -8,21 +8,27 @@ namespace novelty::objects {
 
 namespace {
 
-// Agreeing pairs at distinct places: a keypoint farther than `merge_px` from every one counted
-// before. A detector finds one blob at neighbouring scales, a feature may have several
-// candidates there, and a pose that puts the whole object far away collapses it onto one
-// cluster of keypoints: each such place is one piece of evidence.
-int DistinctPlaces(const std::vector<cv::Point2f>& pixels, const std::vector<int>& agreeing,
-                   double merge_px) {
+// The agreeing matches that are separate pieces of evidence: each database feature once, and a
+// keypoint only if farther than twice the pose check's tolerance from every one counted before —
+// nearer, both could be the image of one projected point. A detector finds one blob at
+// neighbouring scales, a feature may have several candidates there, and a pose that puts the
+// whole object far away collapses it onto one cluster of keypoints.
+int DistinctPlaces(const std::vector<RatioMatch>& matches, const std::vector<int>& agreeing,
+                   const std::vector<cv::KeyPoint>& keypoints, double tolerance_px) {
   std::vector<cv::Point2f> counted;
-  const float merge2 = float(merge_px * merge_px);
+  std::vector<int> references;
+  const float merge2 = float(4.0 * tolerance_px * tolerance_px);
   for (int i : agreeing) {
-    const cv::Point2f& p = pixels[std::size_t(i)];
-    if (std::none_of(counted.begin(), counted.end(), [&](const cv::Point2f& q) {
+    const RatioMatch& m = matches[std::size_t(i)];
+    const cv::Point2f& p = keypoints[std::size_t(m.candidate)].pt;
+    if (std::find(references.begin(), references.end(), m.reference) != references.end() ||
+        std::any_of(counted.begin(), counted.end(), [&](const cv::Point2f& q) {
           const cv::Point2f d = p - q;
           return d.dot(d) <= merge2;
         }))
-      counted.push_back(p);
+      continue;
+    counted.push_back(p);
+    references.push_back(m.reference);
   }
   return int(counted.size());
 }
@@ -36,15 +42,22 @@ VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
                                  const PoseVerificationOptions& options) {
   std::vector<Eigen::Vector3d> places;
   std::vector<cv::Point2f> pixels;
-  for (const RatioMatch& m : matches) {
+  std::vector<int> used;  // per pair, its index in `matches`
+  for (std::size_t i = 0; i < matches.size(); ++i) {
+    const RatioMatch& m = matches[i];
     if (database.MostProbableObject(m.reference) != object) continue;
     places.push_back(database.Position(m.reference));
     pixels.push_back(keypoints.at(std::size_t(m.candidate)).pt);
+    used.push_back(int(i));
   }
   VerifiedPose pose = VerifyObjectPose(places, pixels, camera, options);
-  pose.inliers = DistinctPlaces(pixels, pose.inlier_pairs, options.reprojection_px);
-  pose.verified = pose.verified && pose.inliers >= options.min_inliers;
-  if (!pose.verified) pose.T_cam_object = Eigen::Isometry3d::Identity();
+  for (int& i : pose.inlier_pairs) i = used[std::size_t(i)];
+  if (!pose.verified) return pose;
+  pose.inliers = DistinctPlaces(matches, pose.inlier_pairs, keypoints, options.reprojection_px);
+  if (pose.inliers < options.min_inliers) {
+    pose.verified = false;
+    pose.T_cam_object = Eigen::Isometry3d::Identity();
+  }
   return pose;
 }
 
@@ -59,6 +72,9 @@ FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor
 FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDatabase& database,
                               const core::PinholeCamera& camera,
                               const ObjectRecognitionOptions& options) {
+  if (options.verify_nearest < 0)
+    throw std::invalid_argument("ObjectRecognitionOptions: verify_nearest must be >= 0, got " +
+                                std::to_string(options.verify_nearest));
   FrameRecognition r;
   r.keypoints = features.keypoints;
   const bool any = !r.keypoints.empty();
@@ -70,9 +86,6 @@ FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDataba
       database.Match(any ? features.descriptors : cv::Mat(), options.match_ratio,
                      options.distinct_second && any ? &r.keypoints : nullptr);
   r.matches = m.matches;
-  if (options.verify_nearest < 0)
-    throw std::invalid_argument("ObjectRecognitionOptions: verify_nearest must be >= 0, got " +
-                                std::to_string(options.verify_nearest));
   // The pairs verification sorts out: the ratio matches, or each feature's nearest keypoints.
   const std::vector<RatioMatch> nearest =
       options.verify && options.verify_nearest > 0 && any && database.features() > 0

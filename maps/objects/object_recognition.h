@@ -4,7 +4,8 @@
 // probable object (eq. 5.3). Per object the number of matches N_k is the thesis's score (its
 // ROC sweeps the number of matches required); beyond the thesis, the matches of an object can be
 // verified geometrically (object_pose_verification.h): the score is then the number of matches
-// that agree on one pose of the object.
+// that agree on one pose of the object, counted at distinct places — or, with verify_nearest,
+// of the features' nearest keypoints without the ratio test.
 #pragma once
 
 #include <opencv2/features2d.hpp>
@@ -29,9 +30,11 @@ struct FrameRecognition {
 };
 
 /// The matches of `object` among `matches` as 2-D–3-D pairs (the database features' learnt
-/// places and the keypoints' pixels), verified by VerifyObjectPose. `inliers` counts the
-/// agreeing pairs at distinct places: keypoints more than reprojection_px apart (pairs nearer
-/// than the tolerance a pose is checked to are one piece of evidence).
+/// places and the keypoints' pixels), verified by VerifyObjectPose. When verified, `inliers`
+/// counts the agreeing pairs that are separate evidence: each database feature once, and
+/// keypoints more than 2·reprojection_px apart (nearer, two could be the image of one projected
+/// point); the object is verified only if that count reaches min_inliers. `inlier_pairs` index
+/// `matches`.
 VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
                                  const std::vector<RatioMatch>& matches,
                                  const std::vector<cv::KeyPoint>& keypoints, int object,

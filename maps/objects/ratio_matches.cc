@@ -11,15 +11,15 @@ namespace novelty::objects {
 namespace {
 
 // The k nearest candidates of each reference row; nothing if there are fewer than
-// `min_candidates`.
+// `min_candidates`. `caller` names the function in errors.
 std::vector<std::vector<cv::DMatch>> KNearest(const cv::Mat& reference, const cv::Mat& candidates,
-                                              int k, int min_candidates) {
+                                              int k, int min_candidates, const char* caller) {
   std::vector<std::vector<cv::DMatch>> knn;
   if (reference.empty() || candidates.rows < min_candidates) return knn;
   if (reference.type() != CV_32FC1 || candidates.type() != CV_32FC1 ||
       reference.cols != candidates.cols)
-    throw std::invalid_argument(
-        "descriptor matching: descriptors must be CV_32F rows of equal width");
+    throw std::invalid_argument(std::string(caller) +
+                                ": descriptors must be CV_32F rows of equal width");
   cv::BFMatcher(cv::NORM_L2).knnMatch(reference, candidates, knn, std::min(k, candidates.rows));
   return knn;
 }
@@ -30,7 +30,7 @@ std::vector<std::vector<cv::DMatch>> Nearest(const cv::Mat& reference, const cv:
   if (!(ratio > 0.0 && ratio <= 1.0))
     throw std::invalid_argument("RatioMatches: ratio must be in (0, 1], got " +
                                 std::to_string(ratio));
-  return KNearest(reference, candidates, k, 2);
+  return KNearest(reference, candidates, k, 2, "RatioMatches");
 }
 
 }  // namespace
@@ -76,7 +76,7 @@ std::vector<RatioMatch> NearestMatches(const cv::Mat& reference, const cv::Mat& 
   if (k < 1)
     throw std::invalid_argument("NearestMatches: k must be >= 1, got " + std::to_string(k));
   std::vector<RatioMatch> out;
-  for (const auto& m : KNearest(reference, candidates, k, 1))
+  for (const auto& m : KNearest(reference, candidates, k, 1, "NearestMatches"))
     for (const cv::DMatch& d : m) out.push_back({d.queryIdx, d.trainIdx, d.distance});
   return out;
 }

@@ -1,7 +1,8 @@
 // The thesis's descriptor match (5.1): a reference feature matches the candidate whose descriptor
 // is nearest (Euclidean), if the second-nearest candidate is farther by a factor: d1 ≤ ratio·d2
 // (ratio 0.65 in the thesis). Used against the database, the active features and the other
-// camera's features alike.
+// camera's features alike. Also the nearest candidates without the test (NearestMatches), the
+// putative pairs a geometric verification sorts out: the same search, one filter less.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -38,8 +39,8 @@ std::vector<RatioMatch> RatioMatches(const cv::Mat& reference, const cv::Mat& ca
 /// are fewer), nearest first, no ratio test: the putative pairs a geometric verification sorts
 /// out (object_pose_verification.h). A descriptor seen from another viewpoint or among repeated
 /// structure often has its true match nearest but not by the ratio test's margin; a pose that
-/// many pairs agree on tells it from chance. Throws std::invalid_argument for mismatched
-/// descriptors or k < 1.
+/// many pairs agree on tells it from chance. Empty `reference` or `candidates`: no pairs.
+/// Throws std::invalid_argument for mismatched descriptors or k < 1.
 std::vector<RatioMatch> NearestMatches(const cv::Mat& reference, const cv::Mat& candidates, int k);
 
 }  // namespace novelty::objects

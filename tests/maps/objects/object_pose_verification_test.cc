@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -21,7 +22,8 @@ Scene MakeScene(int n, unsigned seed) {
   Scene s;
   cv::RNG rng(seed);
   for (int i = 0; i < n; ++i)
-    s.points.emplace_back(rng.uniform(-0.1, 0.1), rng.uniform(-0.07, 0.07), rng.uniform(-0.05, 0.05));
+    s.points.emplace_back(rng.uniform(-0.1, 0.1), rng.uniform(-0.07, 0.07),
+                          rng.uniform(-0.05, 0.05));
   s.T_cam_object.linear() = (Eigen::AngleAxisd(0.35, Eigen::Vector3d::UnitY()) *
                              Eigen::AngleAxisd(0.09, Eigen::Vector3d::UnitZ()))
                                 .toRotationMatrix();
@@ -58,6 +60,24 @@ TEST(VerifyObjectPose, RecoversThePoseThroughAThirdOfWrongMatches) {
   EXPECT_LT(AngleDeg(v.T_cam_object, s.T_cam_object), 1.0);
 }
 
+TEST(VerifyObjectPose, TheAgreeingPairsAreNamedByTheirIndexAmongThoseGiven) {
+  // Every other place unknown: the agreeing pairs are the known ones, by their index in the
+  // input (not among the pairs RANSAC was given).
+  const Scene s = MakeScene(20, 7);
+  std::vector<Eigen::Vector3d> places = s.points;
+  for (std::size_t i = 0; i < places.size(); i += 2)
+    places[i] = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  const VerifiedPose v = VerifyObjectPose(places, Project(s, 0.0, 8), kCamera);
+  ASSERT_TRUE(v.verified);
+  EXPECT_EQ(v.pairs, 10);
+  std::vector<int> odd;
+  for (int i = 1; i < 20; i += 2) odd.push_back(i);
+  std::vector<int> got = v.inlier_pairs;
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, odd);
+  EXPECT_EQ(v.inliers, 10);
+}
+
 TEST(VerifyObjectPose, WrongMatchesOnlyOrTooFewPlacesVerifyNothing) {
   const Scene s = MakeScene(30, 4);
   std::vector<cv::Point2f> px(30);
@@ -74,8 +94,7 @@ TEST(VerifyObjectPose, WrongMatchesOnlyOrTooFewPlacesVerifyNothing) {
   EXPECT_THROW(VerifyObjectPose(s.points, {}, kCamera), std::invalid_argument);
   PoseVerificationOptions bad;
   bad.min_inliers = 3;
-  EXPECT_THROW(VerifyObjectPose(s.points, Project(s, 0.0, 6), kCamera, bad),
-               std::invalid_argument);
+  EXPECT_THROW(VerifyObjectPose(s.points, Project(s, 0.0, 6), kCamera, bad), std::invalid_argument);
 }
 
 }  // namespace
