@@ -44,6 +44,7 @@
 #include "core/write_rgb_image.h"
 #include "eval/html_report.h"
 #include "eval/roc.h"
+#include "eval/roc_plot.h"
 #include "eval/side_by_side.h"
 #include "maps/illumination/invariant_image.h"
 #include "mrpt_plugins/c_illumination_invariant_map.h"
@@ -225,28 +226,6 @@ int Learn(const std::vector<std::string>& lightings, const std::string& ini,
   return 0;
 }
 
-// The ROC up to FPR `max_fpr` (a fraction) for a plot, in percent: a pixel ROC has a point per
-// distinct score, far more than a plot shows. Of each of 400 bins of FPR the last point (the
-// highest TPR there, so steps keep their height), the first point, and one interpolated at
-// `max_fpr` so the curve reaches the limit.
-eval::PlotSeries RocSeries(const eval::Roc& roc, double max_fpr) {
-  eval::PlotSeries s{"novelty Δ", "#0072b2", {}, 0.0};
-  const std::vector<eval::RocPoint>& p = roc.points;
-  const double bin = max_fpr / 400.0;
-  std::size_t i = 0;
-  for (; i < p.size() && p[i].fpr <= max_fpr; ++i) {
-    const bool last_of_bin = i + 1 == p.size() || p[i + 1].fpr > max_fpr ||
-                             std::floor(p[i + 1].fpr / bin) != std::floor(p[i].fpr / bin);
-    if (i == 0 || last_of_bin) s.points.emplace_back(100 * p[i].fpr, 100 * p[i].tpr);
-  }
-  if (i > 0 && i < p.size() && p[i - 1].fpr < max_fpr) {
-    const eval::RocPoint &a = p[i - 1], &b = p[i];
-    const double t = (max_fpr - a.fpr) / (b.fpr - a.fpr);
-    s.points.emplace_back(100 * max_fpr, 100 * (a.tpr + t * (b.tpr - a.tpr)));
-  }
-  return s;
-}
-
 // Pixel AUC of Δ against the truth's novelty mask over the covered pixels (NaN when the frame
 // shows no novelty or no background).
 double FrameAuc(const illumination::IlluminationMapResult& r, const cv::Mat& truth) {
@@ -401,9 +380,10 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
       eval::SvgLinePlot(roc ? "Coverage and pixel AUC" : "Coverage", "frame", "share", shares));
   if (roc) {
     report.Heading("ROC of Δ over the covered pixels of all frames");
-    report.Raw(eval::SvgLinePlot("ROC", "FPR (%)", "TPR (%)", {RocSeries(*roc, 1.0)}));
-    report.Raw(
-        eval::SvgLinePlot("ROC at FPR up to 5 %", "FPR (%)", "TPR (%)", {RocSeries(*roc, 0.05)}));
+    report.Raw(eval::SvgLinePlot("ROC", "FPR (%)", "TPR (%)",
+                                 {eval::RocPlotSeries(*roc, "novelty Δ", "#0072b2")}));
+    report.Raw(eval::SvgLinePlot("ROC at FPR up to 5 %", "FPR (%)", "TPR (%)",
+                                 {eval::RocPlotSeries(*roc, "novelty Δ", "#0072b2", {0.05})}));
   }
   if (!panels.empty()) report.Heading("Panels");
   for (const auto& [path, caption] : panels) report.Image(path, caption);

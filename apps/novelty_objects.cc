@@ -19,6 +19,7 @@
 //                          agree on a pose (verified_nearest), visible (fig. 5.5 a, b)
 //   OUT/findings.csv       finding,value,target,holds — the ROC over (frame, object) decisions
 //                          sweeping the matches required (fig. 5.5 d), TPR at FPR 0.3/1/5 %, AUC,
+//                          each object's TPR and false positives at the FPR 0.3 % threshold,
 //                          the database's size, features on their object
 //   OUT/report.html        the same with plots; OUT/panels/ frames with their matches drawn.
 // With --baseline-map (the appearance map after I1: novelty-run --frames 360 --map-out) and the
@@ -47,6 +48,7 @@
 #include "eval/html_report.h"
 #include "eval/object_visibility.h"
 #include "eval/roc.h"
+#include "eval/roc_plot.h"
 #include "maps/color/ycbcr.h"
 #include "maps/objects/eigenbackground.h"
 #include "maps/objects/feature_extractor.h"
@@ -609,6 +611,27 @@ int main(int argc, char** argv) {
       finding("TPR at FPR <= 5 %, " + what, Percent(r.TprAtFpr(0.05)), "(reported)", -1);
       finding("AUC, " + what, Num(r.auc), "(reported)", -1);
     }
+    // Which objects the operating point finds: recall per object at the threshold of eq. 5.4's
+    // matches that keeps FPR ≤ 0.3 %, and the false positives each object adds there.
+    const double threshold = roc.ThresholdAtFpr(0.003);
+    for (int k = 0; k < db.objects(); ++k) {
+      int shown = 0, found = 0, false_positives = 0;
+      for (const RecognitionRow& r : run.rows)
+        if (r.object == k) {
+          const bool is_visible = r.visible_pixels >= a.min_visible,
+                     passes = r.scores[0] >= threshold;
+          shown += is_visible;
+          found += is_visible && passes;
+          false_positives += !is_visible && passes;
+        }
+      finding("TPR of " + learning.names[std::size_t(k)] + " at FPR <= 0.3 % (" +
+                  (std::isinf(threshold) ? std::string("no threshold")
+                                         : ">= " + Num(threshold, "%.0f") + " matches") +
+                  ")",
+              (shown ? Percent(double(found) / shown) + " of " + std::to_string(shown) : "-") +
+                  " (" + std::to_string(false_positives) + " false positives)",
+              "(reported)", -1);
+    }
     if (baseline) {
       const eval::Roc& b = baseline_run->rocs[0];
       finding("baseline: features in the database", std::to_string(baseline->db.features()),
@@ -671,24 +694,14 @@ int main(int argc, char** argv) {
     report.Raw(
         eval::SvgLinePlot("Visible (ground truth), one line per object", "frame", "object", shown));
     std::vector<eval::PlotSeries> curves, zoom;
-    for (int i = 0; i < kScores; ++i) {
-      eval::PlotSeries c{kScoreNames[i], kScoreColours[i], {}, 0}, z = c;
-      for (const eval::RocPoint& p : rocs[std::size_t(i)].points) {
-        c.points.emplace_back(100 * p.fpr, 100 * p.tpr);
-        if (p.fpr <= 0.05) z.points.emplace_back(100 * p.fpr, 100 * p.tpr);
-      }
-      curves.push_back(c);
-      zoom.push_back(z);
-    }
-    if (baseline_run) {
-      eval::PlotSeries c{"baseline (eigenbackground)", "#000000", {}, 0}, z = c;
-      for (const eval::RocPoint& p : baseline_run->rocs[0].points) {
-        c.points.emplace_back(100 * p.fpr, 100 * p.tpr);
-        if (p.fpr <= 0.05) z.points.emplace_back(100 * p.fpr, 100 * p.tpr);
-      }
-      curves.push_back(c);
-      zoom.push_back(z);
-    }
+    const auto add_curve = [&](const eval::Roc& curve, const std::string& name,
+                               const std::string& colour) {
+      curves.push_back(eval::RocPlotSeries(curve, name, colour));
+      zoom.push_back(eval::RocPlotSeries(curve, name, colour, {0.05}));
+    };
+    for (int i = 0; i < kScores; ++i)
+      add_curve(rocs[std::size_t(i)], kScoreNames[i], kScoreColours[i]);
+    if (baseline_run) add_curve(baseline_run->rocs[0], "baseline (eigenbackground)", "#000000");
     report.Raw(
         eval::SvgLinePlot("ROC over (frame, object) decisions, sweeping the matches required",
                           "FPR (%)", "TPR (%)", curves));

@@ -16,6 +16,13 @@ double Roc::TprAtFpr(double max_fpr) const {
   return best;
 }
 
+double Roc::ThresholdAtFpr(double max_fpr) const {
+  const RocPoint* best = nullptr;
+  for (const RocPoint& p : points)
+    if (p.fpr <= max_fpr && (!best || p.tpr > best->tpr)) best = &p;
+  return best ? best->threshold : std::numeric_limits<double>::infinity();
+}
+
 double Roc::FprAtTpr(double min_tpr) const {
   double best = 1.0;
   for (const RocPoint& p : points)

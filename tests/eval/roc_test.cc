@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <opencv2/core.hpp>
 
 namespace novelty::eval {
@@ -23,6 +25,19 @@ TEST(Roc, KnownSmallCase) {
   EXPECT_DOUBLE_EQ(roc.TprAtFpr(0.0), 1.0 / 3);
   EXPECT_DOUBLE_EQ(roc.TprAtFpr(0.5), 1.0);
   EXPECT_DOUBLE_EQ(roc.FprAtTpr(0.9), 0.5);
+  // Thresholds 4, 3, 2, 1 give (0, 1/3), (0.5, 2/3), (0.5, 1), (1, 1): at FPR ≤ 0 the point of
+  // threshold 4; at ≤ 0.5 and ≤ 1 TPR 1 first at threshold 2 (1 ties it at FPR 1).
+  EXPECT_DOUBLE_EQ(roc.ThresholdAtFpr(0.0), 4.0);
+  EXPECT_DOUBLE_EQ(roc.ThresholdAtFpr(0.4), 4.0);
+  EXPECT_DOUBLE_EQ(roc.ThresholdAtFpr(0.5), 2.0);
+  EXPECT_DOUBLE_EQ(roc.ThresholdAtFpr(1.0), 2.0);
+}
+
+TEST(Roc, NoOperatingPointAboveZeroHasAnInfiniteThreshold) {
+  // The negative scores highest: at FPR 0 only (0, 0), which no finite threshold gives.
+  const Roc roc = ComputeRoc({5, 1}, {false, true});
+  EXPECT_DOUBLE_EQ(roc.TprAtFpr(0.0), 0.0);
+  EXPECT_TRUE(std::isinf(roc.ThresholdAtFpr(0.0)));
 }
 
 // The area equals the Mann–Whitney probability counted pair by pair, on random integer scores
