@@ -60,6 +60,11 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "depth test; false: light and noise teach nothing, and an object whose shape the "
             "appearance map took in already is learnt for forget_after_frames after it was added)")
         .Add(
+            "nearer_is_surprising",
+            [](C & c) -> auto& { return c.map.nearer_is_surprising; },
+            "in an added region, pixels nearer than the map's surfaces count as surprising in "
+            "rho_S of eq. 5.5 (false = the thesis: surprise alone)")
+        .Add(
             "distinct_second_match",
             [](C & c) -> auto& { return c.map.learner.distinct_second_match; },
             "ratio test against the second candidate of another place, not a duplicate of the "

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace novelty::objects {
 
@@ -9,19 +10,32 @@ namespace {
 bool Known(float d) {
   return d > 0.0f && std::isfinite(d);
 }
+
+// Nearer than the farthest surface a view saw there: something now stands in front of it.
+bool Nearer(float observed, float farthest, double rel) {
+  return observed <= farthest * (1.0 - rel);
+}
+
+// The predicted depth's channels per pixel (1, or 2 for a nearest/farthest span); throws unless
+// the depths are of the types and the size `what` expects.
+int CheckDepths(const cv::Mat& observed_depth, const cv::Mat& predicted_depth, cv::Size size,
+                const char* what) {
+  const int span = predicted_depth.type() == CV_32FC2 ? 2 : 1;
+  if (observed_depth.type() != CV_32FC1 || (predicted_depth.type() != CV_32FC1 && span == 1) ||
+      observed_depth.size() != size || predicted_depth.size() != size)
+    throw std::invalid_argument(std::string(what) +
+                                ": observed depth CV_32F and the predicted depth CV_32F or "
+                                "CV_32FC2 (nearest, farthest), of one size");
+  return span;
+}
 }  // namespace
 
 ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observed_depth,
                                     const cv::Mat& predicted_depth,
                                     const ChangeKindOptions& options) {
-  const int span = predicted_depth.type() == CV_32FC2 ? 2 : 1;
-  if (region.type() != CV_8UC1 || observed_depth.type() != CV_32FC1 ||
-      (predicted_depth.type() != CV_32FC1 && span == 1) || observed_depth.size() != region.size() ||
-      predicted_depth.size() != region.size())
-    throw std::invalid_argument(
-        "ClassifyChange: region CV_8U, observed depth CV_32F and the "
-        "predicted depth CV_32F or CV_32FC2 (nearest, farthest), of one "
-        "size");
+  if (region.type() != CV_8UC1)
+    throw std::invalid_argument("ClassifyChange: the region must be CV_8U");
+  const int span = CheckDepths(observed_depth, predicted_depth, region.size(), "ClassifyChange");
   ChangeClassification c;
   double observed = 0.0, nearest = 0.0, farthest = 0.0;
   long inside = 0, known = 0, nearer_pixels = 0, farther_pixels = 0;
@@ -39,9 +53,8 @@ ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observ
       observed += o[x];
       nearest += n;
       farthest += f;
-      // Nearer than the farthest surface a view saw there: something now stands in front of
-      // it. Farther than the nearest: something a view saw there has gone.
-      nearer_pixels += o[x] <= f * (1.0 - rel);
+      // Farther than the nearest surface a view saw there: something a view saw has gone.
+      nearer_pixels += Nearer(o[x], f, rel);
       farther_pixels += o[x] >= n * (1.0 + rel);
     }
   }
@@ -66,6 +79,23 @@ ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observ
     c.kind = ChangeKind::kUnchanged;
   }
   return c;
+}
+
+cv::Mat NearerMask(const cv::Mat& observed_depth, const cv::Mat& predicted_depth,
+                   const ChangeKindOptions& options) {
+  const int span =
+      CheckDepths(observed_depth, predicted_depth, observed_depth.size(), "NearerMask");
+  cv::Mat mask(observed_depth.size(), CV_8UC1);
+  for (int y = 0; y < mask.rows; ++y) {
+    const float* o = observed_depth.ptr<float>(y);
+    const float* p = predicted_depth.ptr<float>(y);
+    uchar* m = mask.ptr<uchar>(y);
+    for (int x = 0; x < mask.cols; ++x) {
+      const float f = p[span * x + span - 1];
+      m[x] = Known(o[x]) && Known(f) && Nearer(o[x], f, options.min_relative_difference) ? 255 : 0;
+    }
+  }
+  return mask;
 }
 
 }  // namespace novelty::objects

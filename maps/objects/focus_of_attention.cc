@@ -51,6 +51,16 @@ FocusOfAttention FindFocusOfAttention(const cv::Mat& surprise,
   return f;
 }
 
+FocusOfAttention MarkSurprising(const FocusOfAttention& focus, const cv::Mat& mask) {
+  if (mask.type() != CV_8UC1 || mask.size() != focus.surprise.size())
+    throw std::invalid_argument("MarkSurprising: the mask must be CV_8U of the surprise's size");
+  FocusOfAttention marked = focus;
+  marked.surprise = focus.surprise.clone();
+  cv::Mat raised = cv::max(focus.surprise, focus.threshold);
+  raised.copyTo(marked.surprise, mask);
+  return marked;
+}
+
 double SurprisingShare(const FocusOfAttention& focus, cv::Point2f center, float window,
                        float angle_rad) {
   if (focus.surprise.empty() || !(window > 0.0f)) return 0.0;

@@ -33,6 +33,11 @@ struct FocusOfAttention {
 FocusOfAttention FindFocusOfAttention(const cv::Mat& surprise,
                                       const FocusOfAttentionOptions& options = {});
 
+/// The focus with `mask`'s pixels (CV_8U of the surprise map's size, non-zero) counted as
+/// surprising: their surprise raised to θ_S where it is lower, so that SurprisingShare counts
+/// them. Box, region, seed and θ_S stay. Throws std::invalid_argument for another mask.
+FocusOfAttention MarkSurprising(const FocusOfAttention& focus, const cv::Mat& mask);
+
 /// ρ_S of eq. 5.5: the share of the pixels of the square window of side `window` (px) centred at
 /// `center` and turned by `angle_rad` — the region a descriptor is computed from — whose
 /// (closed and opened) surprise is at least θ_S. Pixels outside the image count as not

@@ -89,7 +89,12 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
   SelectedFeatures features;
   if (step.learning) features = Extract(rgb, depth, step.focus.box, camera, step);
   // A frame that is not learnt from has no features: it counts towards forgetting.
-  step.learner = learner_.Process(step.focus, features, camera, T_world_cam);
+  if (options_.nearer_is_surprising && kind == ChangeKind::kAdded)
+    step.learner = learner_.Process(
+        MarkSurprising(step.focus, NearerMask(depth, expected_depth, options_.change)), features,
+        camera, T_world_cam);
+  else
+    step.learner = learner_.Process(step.focus, features, camera, T_world_cam);
   return step;
 }
 

@@ -70,5 +70,31 @@ TEST(ChangeKind, WithTheViewsSpanAViewThatAlreadyTookTheChangeDoesNotHideIt) {
   EXPECT_THROW(ClassifyChange(s.region, cup, cv::Mat(120, 160, CV_32FC3)), std::invalid_argument);
 }
 
+// The mask marks exactly the pixels ClassifyChange counts nearer: with a span, nearer than the
+// farthest surface by 5 %; unknown depths never. Its count over the region, divided by the
+// known pixels there, is ClassifyChange's nearer_share.
+TEST(ChangeKind, NearerMaskMarksThePixelsCountedNearer) {
+  Scene s;
+  cv::Mat span(s.predicted.size(), CV_32FC2, cv::Scalar(1.2f, 1.5f));  // nearest, farthest
+  cv::Mat observed = s.predicted.clone();
+  observed(cv::Rect(50, 40, 20, 30)).setTo(1.40f);  // 6.7 % nearer than 1.5: nearer
+  observed(cv::Rect(70, 40, 10, 30)).setTo(1.44f);  // 4 %: not
+  observed(cv::Rect(80, 40, 10, 10)).setTo(0.0f);   // unknown
+  observed(cv::Rect(0, 0, 10, 10)).setTo(1.0f);     // nearer, outside the region
+  const cv::Mat mask = NearerMask(observed, span);
+  ASSERT_EQ(mask.type(), CV_8UC1);
+  EXPECT_EQ(cv::countNonZero(mask), 20 * 30 + 10 * 10);
+  EXPECT_EQ(cv::countNonZero(mask(cv::Rect(50, 40, 20, 30))), 20 * 30);
+  EXPECT_EQ(mask.at<uchar>(45, 75), 0);
+  EXPECT_EQ(mask.at<uchar>(45, 85), 0);
+  const ChangeClassification c = ClassifyChange(s.region, observed, span);
+  const int known = 40 * 30 - 10 * 10;
+  EXPECT_NEAR(c.nearer_share, double(cv::countNonZero(mask & s.region)) / known, 1e-12);
+  // A single predicted depth is its own nearest and farthest.
+  EXPECT_EQ(cv::countNonZero(NearerMask(observed, s.predicted) != mask), 0);
+  EXPECT_THROW(NearerMask(observed, cv::Mat(120, 160, CV_32FC3)), std::invalid_argument);
+  EXPECT_THROW(NearerMask(observed, cv::Mat(10, 10, CV_32F)), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace novelty::objects

@@ -70,5 +70,24 @@ TEST(FocusOfAttention, BadInputIsRejected) {
   EXPECT_EQ(empty.seed, cv::Point(-1, -1));
 }
 
+// Marked pixels count as surprising in ρ_S, the rest as before, and the focus given is untouched.
+TEST(FocusOfAttention, MarkedPixelsCountAsSurprising) {
+  cv::Mat surprise(120, 160, CV_32FC1, cv::Scalar(1.0f));
+  surprise(cv::Rect(60, 40, 40, 40)).setTo(20.0f);
+  const FocusOfAttention focus = FindFocusOfAttention(surprise);
+  // A 40 × 40 window centred at (40, 60), left of the surprising square: nothing on surprise.
+  EXPECT_DOUBLE_EQ(SurprisingShare(focus, {40.0f, 60.0f}, 40.0f, 0.0f), 0.0);
+  cv::Mat mask = cv::Mat::zeros(surprise.size(), CV_8UC1);
+  mask(cv::Rect(20, 40, 20, 40)).setTo(255);  // the window's left half
+  const FocusOfAttention marked = MarkSurprising(focus, mask);
+  EXPECT_NEAR(SurprisingShare(marked, {40.0f, 60.0f}, 40.0f, 0.0f), 0.5, 1e-9);
+  EXPECT_DOUBLE_EQ(SurprisingShare(focus, {40.0f, 60.0f}, 40.0f, 0.0f), 0.0);
+  EXPECT_DOUBLE_EQ(SurprisingShare(marked, {80.0f, 60.0f}, 30.0f, 0.0f),
+                   SurprisingShare(focus, {80.0f, 60.0f}, 30.0f, 0.0f));
+  EXPECT_EQ(marked.box, focus.box);
+  EXPECT_EQ(marked.threshold, focus.threshold);
+  EXPECT_THROW(MarkSurprising(focus, cv::Mat::zeros(10, 10, CV_8UC1)), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace novelty::objects
