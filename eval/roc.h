@@ -23,7 +23,7 @@ struct Roc {
   /// The highest TPR among the points with FPR ≤ max_fpr (0 if none reaches above 0).
   double TprAtFpr(double max_fpr) const;
   /// The threshold of the operating point TprAtFpr picks: the highest TPR among the points with
-  /// FPR ≤ max_fpr, the highest threshold among ties (+inf if only (0, 0) qualifies).
+  /// FPR ≤ max_fpr, the highest threshold among ties (+inf if none with TPR > 0 qualifies).
   double ThresholdAtFpr(double max_fpr) const;
   /// The smallest FPR among the points with TPR ≥ min_tpr (1 if only the last point does).
   double FprAtTpr(double min_tpr) const;

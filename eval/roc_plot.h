@@ -14,7 +14,8 @@ namespace novelty::eval {
 struct RocPlotOptions {
   /// Largest FPR shown (a fraction): 1 for the whole curve, e.g. 0.05 to zoom on low FPRs.
   double max_fpr = 1.0;
-  /// FPR bins kept at most (one point each); an ROC over a few hundred decisions keeps all.
+  /// FPR bins of width max_fpr / bins, one point each (a point at max_fpr exactly opens one
+  /// more); an ROC over a few hundred decisions keeps nearly all its points.
   int bins = 400;
 };
 

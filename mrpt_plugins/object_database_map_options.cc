@@ -62,8 +62,8 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
         .Add(
             "nearer_is_surprising",
             [](C & c) -> auto& { return c.map.nearer_is_surprising; },
-            "in an added region, pixels nearer than the map's surfaces count as surprising in "
-            "rho_S of eq. 5.5 (false = the thesis: surprise alone)")
+            "in an added region, pixels nearer than the farthest surface the map saw count as "
+            "surprising in rho_S of eq. 5.5 (false = the thesis: surprise alone)")
         .Add(
             "distinct_second_match",
             [](C & c) -> auto& { return c.map.learner.distinct_second_match; },

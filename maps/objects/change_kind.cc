@@ -53,8 +53,8 @@ ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observ
       observed += o[x];
       nearest += n;
       farthest += f;
-      // Farther than the nearest surface a view saw there: something a view saw has gone.
       nearer_pixels += Nearer(o[x], f, rel);
+      // Farther than the nearest surface a view saw there: something a view saw has gone.
       farther_pixels += o[x] >= n * (1.0 + rel);
     }
   }
@@ -91,8 +91,10 @@ cv::Mat NearerMask(const cv::Mat& observed_depth, const cv::Mat& predicted_depth
     const float* p = predicted_depth.ptr<float>(y);
     uchar* m = mask.ptr<uchar>(y);
     for (int x = 0; x < mask.cols; ++x) {
-      const float f = p[span * x + span - 1];
-      m[x] = Known(o[x]) && Known(f) && Nearer(o[x], f, options.min_relative_difference) ? 255 : 0;
+      const float n = p[span * x], f = p[span * x + span - 1];
+      m[x] = Known(o[x]) && Known(n) && Known(f) && Nearer(o[x], f, options.min_relative_difference)
+                 ? 255
+                 : 0;
     }
   }
   return mask;

@@ -52,9 +52,10 @@ ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observ
                                     const cv::Mat& predicted_depth,
                                     const ChangeKindOptions& options = {});
 
-/// Pixel by pixel, where ClassifyChange counts a pixel nearer: CV_8U, 255 where the observed
-/// depth is known and nearer than the farthest surface predicted there by the factor
-/// (1 − min_relative_difference) — where something now stands in front of what the map knew.
+/// Pixel by pixel, where ClassifyChange counts a pixel nearer: CV_8U, 255 where the observed and
+/// predicted depths are known and the observed is nearer than the farthest surface predicted
+/// there by the factor (1 − min_relative_difference) — where something now stands in front of
+/// a surface a view saw.
 /// The same depths as ClassifyChange; throws std::invalid_argument for other types or sizes.
 cv::Mat NearerMask(const cv::Mat& observed_depth, const cv::Mat& predicted_depth,
                    const ChangeKindOptions& options = {});

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
@@ -54,9 +55,14 @@ FocusOfAttention FindFocusOfAttention(const cv::Mat& surprise,
 FocusOfAttention MarkSurprising(const FocusOfAttention& focus, const cv::Mat& mask) {
   if (mask.type() != CV_8UC1 || mask.size() != focus.surprise.size())
     throw std::invalid_argument("MarkSurprising: the mask must be CV_8U of the surprise's size");
+  // θ_S is a double and the surprise float: raise to the least float not below θ_S, or a marked
+  // pixel could fall short of SurprisingShare's test by the rounding.
+  float threshold = float(focus.threshold);
+  if (double(threshold) < focus.threshold)
+    threshold = std::nextafter(threshold, std::numeric_limits<float>::infinity());
   FocusOfAttention marked = focus;
   marked.surprise = focus.surprise.clone();
-  cv::Mat raised = cv::max(focus.surprise, focus.threshold);
+  cv::Mat raised = cv::max(focus.surprise, threshold);
   raised.copyTo(marked.surprise, mask);
   return marked;
 }

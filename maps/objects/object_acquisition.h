@@ -50,8 +50,8 @@ struct ObjectAcquisitionOptions {
   /// one; later ones count towards forgetting the active features (object_learner.h).
   bool learn_unchanged_change = false;
   /// Beyond the thesis: in a region judged added, ρ_S (eq. 5.5) counts as surprising the pixels
-  /// whose depth is nearer than every surface the map saw there (NearerMask), as well as those
-  /// above θ_S. Surprise on a new object has holes where its print happens to match the colours
+  /// whose depth is nearer than the farthest surface the map's views saw there (NearerMask, the
+  /// pixels that made the region added), as well as those above θ_S. Surprise on a new object has holes where its print happens to match the colours
   /// the map expects behind it, and few descriptor windows lie 80 % on it; the depth says the
   /// object is there all the same (and not on its shadow, which is not nearer). false: ρ_S from
   /// surprise alone (the thesis).

@@ -54,13 +54,13 @@ TEST(RocPlotSeries, BinsKeepTheirHighestTpr) {
   const PlotSeries s = RocPlotSeries(roc, "s", "#000", {1.0, bins});
   std::map<int, double> highest;
   for (const RocPoint& p : roc.points) {
-    const int b = int(std::floor(p.fpr * bins));
+    const int b = int(std::floor(p.fpr / (1.0 / bins)));  // the width RocPlotSeries uses
     highest[b] = std::max(highest.count(b) ? highest[b] : 0.0, 100 * p.tpr);
   }
   ASSERT_EQ(s.points.size(), highest.size() + 1);  // + the first point (0, 0)
   std::size_t i = 1;
   for (const auto& [b, tpr] : highest) {
-    EXPECT_EQ(int(std::floor(s.points[i].first / 100 * bins)), b);
+    EXPECT_EQ(int(std::floor(s.points[i].first / 100 / (1.0 / bins))), b);
     EXPECT_DOUBLE_EQ(s.points[i].second, tpr) << "bin " << b;
     ++i;
   }

@@ -33,6 +33,28 @@ TEST(Roc, KnownSmallCase) {
   EXPECT_DOUBLE_EQ(roc.ThresholdAtFpr(1.0), 2.0);
 }
 
+// Deciding by score ≥ ThresholdAtFpr(f), recounted here decision by decision, gives TprAtFpr(f)
+// at an FPR within f, on random integer scores (many ties).
+TEST(Roc, ThresholdAtFprReproducesTprAtFpr) {
+  cv::RNG rng(17);
+  std::vector<double> scores;
+  std::vector<bool> labels;
+  for (int i = 0; i < 600; ++i) {
+    const bool p = rng.uniform(0, 3) == 0;
+    labels.push_back(p);
+    scores.push_back(double(rng.uniform(0, 20) + (p ? 5 : 0)));
+  }
+  const Roc roc = ComputeRoc(scores, labels);
+  for (double f : {0.0, 0.003, 0.01, 0.05, 0.2, 1.0}) {
+    const double t = roc.ThresholdAtFpr(f);
+    int tp = 0, fp = 0;
+    for (std::size_t i = 0; i < scores.size(); ++i)
+      if (scores[i] >= t) (labels[i] ? tp : fp) += 1;
+    EXPECT_DOUBLE_EQ(double(tp) / roc.positives, roc.TprAtFpr(f)) << f;
+    EXPECT_LE(double(fp) / roc.negatives, f) << f;
+  }
+}
+
 TEST(Roc, NoOperatingPointAboveZeroHasAnInfiniteThreshold) {
   // The negative scores highest: at FPR 0 only (0, 0), which no finite threshold gives.
   const Roc roc = ComputeRoc({5, 1}, {false, true});

@@ -89,5 +89,26 @@ TEST(FocusOfAttention, MarkedPixelsCountAsSurprising) {
   EXPECT_THROW(MarkSurprising(focus, cv::Mat::zeros(10, 10, CV_8UC1)), std::invalid_argument);
 }
 
+// θ_S is a double, the surprise float: on random maps (θ_S rounding either way) every marked
+// pixel passes SurprisingShare's test, so a window inside the mask has ρ_S = 1.
+TEST(FocusOfAttention, MarkedPixelsReachTheThresholdWhateverItsRounding) {
+  cv::RNG rng(5);
+  cv::Mat mask = cv::Mat::zeros(60, 80, CV_8UC1);
+  mask(cv::Rect(10, 10, 30, 30)).setTo(255);
+  int rounded_down = 0;
+  for (int i = 0; i < 50; ++i) {
+    cv::Mat surprise(60, 80, CV_32FC1);
+    rng.fill(surprise, cv::RNG::UNIFORM, 0.0f, 10.0f);
+    const FocusOfAttention focus = FindFocusOfAttention(surprise);
+    rounded_down += double(float(focus.threshold)) < focus.threshold;
+    const FocusOfAttention marked = MarkSurprising(focus, mask);
+    for (int y = 10; y < 40; ++y)
+      for (int x = 10; x < 40; ++x)
+        ASSERT_GE(double(marked.surprise.at<float>(y, x)), focus.threshold) << i;
+    EXPECT_DOUBLE_EQ(SurprisingShare(marked, {25.0f, 25.0f}, 20.0f, 0.0f), 1.0) << i;
+  }
+  EXPECT_GT(rounded_down, 0) << "no map whose θ_S rounds down: the case is not tested";
+}
+
 }  // namespace
 }  // namespace novelty::objects
