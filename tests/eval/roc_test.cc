@@ -3,11 +3,28 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <utility>
 
 #include <opencv2/core.hpp>
 
 namespace novelty::eval {
 namespace {
+
+// `n` decisions, a third of them positive, with integer scores in [0, range) and positives
+// shifted up by `shift`: many ties.
+std::pair<std::vector<double>, std::vector<bool>> RandomIntegerDecisions(std::uint64_t seed, int n,
+                                                                         int range, int shift) {
+  cv::RNG rng(seed);
+  std::vector<double> scores;
+  std::vector<bool> labels;
+  for (int i = 0; i < n; ++i) {
+    const bool p = rng.uniform(0, 3) == 0;
+    labels.push_back(p);
+    scores.push_back(double(rng.uniform(0, range) + (p ? shift : 0)));
+  }
+  return {scores, labels};
+}
 
 TEST(Roc, KnownSmallCase) {
   // Scores 4 3 3 2 1 with labels + + - + -: thresholds 4, 3, 2, 1.
@@ -36,14 +53,7 @@ TEST(Roc, KnownSmallCase) {
 // Deciding by score ≥ ThresholdAtFpr(f), recounted here decision by decision, gives TprAtFpr(f)
 // at an FPR within f, on random integer scores (many ties).
 TEST(Roc, ThresholdAtFprReproducesTprAtFpr) {
-  cv::RNG rng(17);
-  std::vector<double> scores;
-  std::vector<bool> labels;
-  for (int i = 0; i < 600; ++i) {
-    const bool p = rng.uniform(0, 3) == 0;
-    labels.push_back(p);
-    scores.push_back(double(rng.uniform(0, 20) + (p ? 5 : 0)));
-  }
+  const auto [scores, labels] = RandomIntegerDecisions(17, 600, 20, 5);
   const Roc roc = ComputeRoc(scores, labels);
   for (double f : {0.0, 0.003, 0.01, 0.05, 0.2, 1.0}) {
     const double t = roc.ThresholdAtFpr(f);
@@ -65,14 +75,7 @@ TEST(Roc, NoOperatingPointAboveZeroHasAnInfiniteThreshold) {
 // The area equals the Mann–Whitney probability counted pair by pair, on random integer scores
 // (many ties).
 TEST(Roc, AreaIsTheMannWhitneyProbability) {
-  cv::RNG rng(3);
-  std::vector<double> scores;
-  std::vector<bool> labels;
-  for (int i = 0; i < 400; ++i) {
-    const bool p = rng.uniform(0, 3) == 0;
-    labels.push_back(p);
-    scores.push_back(double(rng.uniform(0, 12) + (p ? 4 : 0)));
-  }
+  const auto [scores, labels] = RandomIntegerDecisions(3, 400, 12, 4);
   double wins = 0.0, pairs = 0.0;
   for (std::size_t i = 0; i < scores.size(); ++i)
     for (std::size_t j = 0; j < scores.size(); ++j)
