@@ -359,6 +359,8 @@ struct Played {
   int frames = 0;
   double seconds = 0.0;
   double warp_sigma_sum = 0.0;  // the appearance map's floor s (px), summed over frames
+  double aligned_deg_sum = 0.0;  // align_to_prior: the rotations applied (deg), summed
+  int aligned_frames = 0;
 };
 
 // Plays the rawlog into the maps; per frame the selectivity of every changed region (metrics.csv,
@@ -403,6 +405,10 @@ Played Play(const RunArgs& a, RunMaps& maps, const sim::GroundTruthReader& groun
       run.panel_frames.push_back(index);
     }
     run.warp_sigma_sum += p.warp_sigma_px;
+    if (!p.aligned_rotation.isZero()) {
+      run.aligned_deg_sum += p.aligned_rotation.norm() * 180.0 / M_PI;
+      ++run.aligned_frames;
+    }
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (run.frames % 50 == 0) {
       std::fprintf(stderr, "\r[novelty-run] frame %d, %.1f frames/s, %d views   ", index,
@@ -498,6 +504,9 @@ int main(int argc, char** argv) {
     if (run.warp_sigma_sum > 0.0)
       std::printf("  warp-error floor: s = %.2f px on average over the frames\n",
                   run.warp_sigma_sum / run.frames);
+    if (run.aligned_frames > 0)
+      std::printf("  aligned to the prior: %d frames, by %.3f deg on average\n",
+                  run.aligned_frames, run.aligned_deg_sum / run.aligned_frames);
     return player.stopped_by().empty() ? 0 : kExitPartial;
   } catch (const TCLAP::ArgException& e) {
     std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());

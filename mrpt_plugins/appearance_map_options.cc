@@ -47,6 +47,10 @@ const OptionTable<AppearanceMapConfig>& AppearanceMapConfig::Table() {
         .Add(
             "learn_warp_sigma", [](C & c) -> auto& { return c.map.learn_warp_sigma; },
             "learn that error from the shift of edges against the prior (false = thesis)", 1.0, 0.0)
+        .Add(
+            "align_to_prior", [](C & c) -> auto& { return c.map.align_to_prior; },
+            "correct the pose by the small rotation aligning frame and prior (false = thesis)", 1.0,
+            0.0)
         .Include(
             ViewMapOptionTable(), [](C & c) -> auto& { return c.map.views; })
         .Include(

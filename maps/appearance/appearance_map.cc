@@ -211,8 +211,22 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   // first (a pass more over the frame); without it each tile blends its own rows.
   const std::vector<std::pair<std::string, int>> planes = {{"ab_sigma", 7}, {"tau", 3}};
   const bool floor = options_.warp_sigma_px > 0.0 || options_.learn_warp_sigma;
-  const Prediction prior = floor ? map_.Predict(camera, T_world_cam, planes, predict_depth_)
-                                 : map_.PredictDeferred(camera, T_world_cam, planes, predict_depth_);
+  const bool whole = floor || options_.align_to_prior;
+  Eigen::Isometry3d pose = T_world_cam;
+  Prediction prior = whole ? map_.Predict(camera, pose, planes, predict_depth_)
+                           : map_.PredictDeferred(camera, pose, planes, predict_depth_);
+  Eigen::Vector3d aligned_rotation = Eigen::Vector3d::Zero();
+  if (options_.align_to_prior && prior.warped) {
+    std::vector<cv::Mat> ycbcr, tau;
+    color::RgbToYCbCrPlanes(rgb, ycbcr);
+    cv::split(prior.value[1], tau);
+    const PriorAlignment a = AlignRotationToPrior(ycbcr[0], tau[0], camera, options_.alignment);
+    if (a.aligned) {
+      aligned_rotation = a.rotation;
+      pose = T_world_cam * Eigen::Isometry3d(RotationFromVector(a.rotation));
+      prior = map_.Predict(camera, pose, planes, predict_depth_);
+    }
+  }
   const bool learn = options_.learn_warp_sigma && prior.warped;
   const double warp_sigma =
       prior.warped ? std::max(options_.warp_sigma_px, std::sqrt(learnt_warp_variance_)) : 0.0;
@@ -259,6 +273,8 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   out.expected_depth = prior.warped ? prior.depth : prior.depth.clone();
   out.expected_depth_span = prior.depth_span;  // its own buffer, even for a static camera
   out.warp_sigma_px = warp_sigma;
+  out.aligned_rotation = aligned_rotation;
+  out.T_world_cam = pose;
   out.selected = prior.selected;
   out.surprise = f.surprise;
   out.expected_rgb = f.expected_rgb;
@@ -266,6 +282,10 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   // What this frame teaches of s serves the next frame's floor, never its own.
   if (learn) LearnWarpSigma(f.observed_y, prior.value[1]);
   // The posterior at this viewpoint goes into the map (4.3's update policy).
+  // The view keeps the pose the caller gave (align_to_prior): a view at the aligned pose would
+  // chain each frame to the last one's correction, and the alignments' own errors would add up
+  // (0.16° within seven frames of the table clip at true poses). At the given pose a view
+  // carries the pose source's error, which a later frame's alignment takes out again.
   out.update = map_.Update(camera, T_world_cam, f.stored_depth,
                            {{"ab_sigma", f.stored_ab_sigma}, {"tau", f.stored_tau}}, prior.selected,
                            std::move(plan));

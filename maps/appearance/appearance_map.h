@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/eigen_abi.h"
+#include "maps/appearance/prior_alignment.h"
 #include "maps/appearance/view_based_map.h"
 #include "maps/stats/normal_gamma_batch.h"
 
@@ -39,6 +40,12 @@ struct AppearanceMapOptions {
   /// prior (MeasureWarpSigma), and s² follows it with the forgetting factor f (eq. 4.10's f, a
   /// memory of about five frames); a frame's floor uses what the frames before it taught.
   bool learn_warp_sigma = false;
+  /// Beyond the thesis: predict the prior again at the pose corrected by the small rotation that
+  /// aligns the frame with it (prior_alignment.h), so that a pose error does not shift the prior
+  /// against the frame. The frame is stored at the pose given (Insert). For pose sources whose
+  /// error is mostly rotation (the LED tracker).
+  bool align_to_prior = false;
+  PriorAlignmentOptions alignment;
   ViewBasedMapOptions views;
 };
 
@@ -54,6 +61,10 @@ struct AppearanceProducts {
   /// (Prediction::depth_span); with expected_depth.
   cv::Mat expected_depth_span;
   double warp_sigma_px = 0.0;  ///< s of the prior's floor in this frame (0: none)
+  /// align_to_prior: the rotation ω applied (camera frame, rad; zero if none) and the pose the
+  /// prior was predicted at, T_world_cam·R(ω): the frame's pose relative to the map's views.
+  Eigen::Vector3d aligned_rotation = Eigen::Vector3d::Zero();
+  Eigen::Isometry3d T_world_cam = Eigen::Isometry3d::Identity();
   std::vector<int> selected;
   ViewBasedMap::UpdateResult update;
 };

@@ -1,0 +1,128 @@
+#include "maps/appearance/prior_alignment.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace novelty::appearance {
+
+namespace {
+
+void CheckOptions(const PriorAlignmentOptions& o) {
+  auto fail = [](const std::string& what) {
+    throw std::invalid_argument("PriorAlignmentOptions: " + what);
+  };
+  if (o.max_iterations < 1) fail("max_iterations must be >= 1");
+  if (!(o.blur_sigma_px >= 0.0 && std::isfinite(o.blur_sigma_px))) fail("blur_sigma_px must be >= 0");
+  if (!(o.huber_levels > 0.0 && std::isfinite(o.huber_levels))) fail("huber_levels must be > 0");
+  if (!(o.max_rotation_rad > 0.0 && o.max_rotation_rad < 0.5)) fail("max_rotation_rad must be in (0, 0.5)");
+  if (!(o.min_gradient >= 0.0 && std::isfinite(o.min_gradient))) fail("min_gradient must be >= 0");
+  if (o.min_pixels < 4) fail("min_pixels must be >= 4");
+  if (!(o.converged_rad > 0.0)) fail("converged_rad must be > 0");
+}
+
+cv::Mat Blurred(const cv::Mat& m, double sigma) {
+  if (sigma == 0.0) return m.clone();
+  cv::Mat out;
+  cv::GaussianBlur(m, out, cv::Size(), sigma, sigma, cv::BORDER_REPLICATE);
+  return out;
+}
+
+// x ↦ K·R(ω)·K⁻¹·x, the image motion of a pure camera rotation.
+cv::Matx33d RotationHomography(const core::PinholeCamera& c, const Eigen::Vector3d& omega) {
+  Eigen::Matrix3d K;
+  K << c.fx, 0.0, c.cx, 0.0, c.fy, c.cy, 0.0, 0.0, 1.0;
+  const Eigen::Matrix3d H = K * RotationFromVector(omega) * K.inverse();
+  cv::Matx33d h;
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) h(r, k) = H(r, k);
+  return h;
+}
+
+}  // namespace
+
+Eigen::Matrix3d RotationFromVector(const Eigen::Vector3d& omega) {
+  const double angle = omega.norm();
+  if (angle == 0.0) return Eigen::Matrix3d::Identity();
+  return Eigen::AngleAxisd(angle, omega / angle).toRotationMatrix();
+}
+
+PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& prior_y,
+                                    const core::PinholeCamera& camera,
+                                    const PriorAlignmentOptions& options) {
+  CheckOptions(options);
+  const cv::Size size(camera.width, camera.height);
+  if (observed_y.type() != CV_32FC1 || prior_y.type() != CV_32FC1 || observed_y.size() != size ||
+      prior_y.size() != size)
+    throw std::invalid_argument("AlignRotationToPrior: the planes must be CV_32FC1 of the camera's size");
+
+  // Covered pixels, away from the uncovered ones by the blur's reach (their fill is no colour).
+  cv::Mat covered = prior_y == prior_y;  // false for NaN
+  cv::Mat prior_filled = prior_y.clone();
+  prior_filled.setTo(0.0f, ~covered);
+  const int reach = int(std::ceil(3.0 * options.blur_sigma_px)) + 1;
+  cv::erode(covered, covered, cv::getStructuringElement(cv::MORPH_RECT, {2 * reach + 1, 2 * reach + 1}));
+  const cv::Mat prior = Blurred(prior_filled, options.blur_sigma_px);
+  const cv::Mat frame = Blurred(observed_y, options.blur_sigma_px);
+
+  PriorAlignment out;
+  Eigen::Vector3d omega = Eigen::Vector3d::Zero();
+  double gain = 1.0, bias = 0.0;
+  cv::Mat warped, warped_mask, gx, gy;
+  for (int it = 0; it < options.max_iterations; ++it) {
+    // warped(x) = prior(H·x): the prior as the rotated camera would see it.
+    const cv::Matx33d H = RotationHomography(camera, omega);
+    cv::warpPerspective(prior, warped, H, size, cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
+                        cv::BORDER_REPLICATE);
+    cv::warpPerspective(covered, warped_mask, H, size, cv::INTER_NEAREST | cv::WARP_INVERSE_MAP,
+                        cv::BORDER_CONSTANT, 0);
+    cv::Sobel(warped, gx, CV_32F, 1, 0, 1, 0.5);  // central differences
+    cv::Sobel(warped, gy, CV_32F, 0, 1, 1, 0.5);
+    using Matrix5d = Eigen::Matrix<double, 5, 5>;
+    using Vector5d = Eigen::Matrix<double, 5, 1>;
+    Matrix5d A = Matrix5d::Zero();
+    Vector5d g = Vector5d::Zero();
+    int textured = 0;
+    const float min_g2 = float(options.min_gradient * options.min_gradient);
+    for (int y = 1; y + 1 < size.height; ++y) {
+      const float* w = warped.ptr<float>(y);
+      const float* f = frame.ptr<float>(y);
+      const float* dx = gx.ptr<float>(y);
+      const float* dy = gy.ptr<float>(y);
+      const uchar* m = warped_mask.ptr<uchar>(y);
+      const double v = (y - camera.cy) / camera.fy;
+      for (int x = 1; x + 1 < size.width; ++x) {
+        if (!m[x]) continue;
+        const double u = (x - camera.cx) / camera.fx;
+        // d(pixel)/dω of a rotation at ω = 0, for the ray (u, v, 1).
+        const double ix = gain * dx[x] * camera.fx, iy = gain * dy[x] * camera.fy;
+        Vector5d J;
+        J << -ix * u * v - iy * (1.0 + v * v), ix * (1.0 + u * u) + iy * u * v, -ix * v + iy * u,
+            double(w[x]), 1.0;
+        const double r = gain * double(w[x]) + bias - double(f[x]);
+        const double wt = std::abs(r) <= options.huber_levels ? 1.0 : options.huber_levels / std::abs(r);
+        A.noalias() += wt * J * J.transpose();
+        g.noalias() += wt * r * J;
+        if (dx[x] * dx[x] + dy[x] * dy[x] >= min_g2) ++textured;
+      }
+    }
+    out.pixels = textured;
+    out.iterations = it + 1;
+    if (textured < options.min_pixels) return PriorAlignment{};
+    const Vector5d step = -A.ldlt().solve(g);
+    if (!step.allFinite()) return PriorAlignment{};
+    omega += step.head<3>();
+    gain += step[3];
+    bias += step[4];
+    if (omega.norm() > options.max_rotation_rad) return PriorAlignment{};
+    if (step.head<3>().norm() < options.converged_rad) break;
+  }
+  out.aligned = true;
+  out.rotation = omega;
+  return out;
+}
+
+}  // namespace novelty::appearance
