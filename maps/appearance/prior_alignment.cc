@@ -68,6 +68,13 @@ PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& pr
   const cv::Mat prior = Blurred(prior_filled, options.blur_sigma_px);
   const cv::Mat frame = Blurred(observed_y, options.blur_sigma_px);
 
+  // Where the frame has texture: a pixel textured in the prior alone tells nothing of a rotation.
+  cv::Mat fx_grad, fy_grad, frame_textured;
+  cv::Sobel(frame, fx_grad, CV_32F, 1, 0, 1, 0.5);
+  cv::Sobel(frame, fy_grad, CV_32F, 0, 1, 1, 0.5);
+  cv::magnitude(fx_grad, fy_grad, frame_textured);
+  frame_textured = frame_textured >= options.min_gradient;
+
   PriorAlignment out;
   Eigen::Vector3d omega = Eigen::Vector3d::Zero();
   double gain = 1.0, bias = 0.0;
@@ -93,6 +100,7 @@ PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& pr
       const float* dx = gx.ptr<float>(y);
       const float* dy = gy.ptr<float>(y);
       const uchar* m = warped_mask.ptr<uchar>(y);
+      const uchar* ft = frame_textured.ptr<uchar>(y);
       const double v = (y - camera.cy) / camera.fy;
       for (int x = 1; x + 1 < size.width; ++x) {
         if (!m[x]) continue;
@@ -106,22 +114,27 @@ PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& pr
         const double wt = std::abs(r) <= options.huber_levels ? 1.0 : options.huber_levels / std::abs(r);
         A.noalias() += wt * J * J.transpose();
         g.noalias() += wt * r * J;
-        if (dx[x] * dx[x] + dy[x] * dy[x] >= min_g2) ++textured;
+        if (ft[x] && dx[x] * dx[x] + dy[x] * dy[x] >= min_g2) ++textured;
       }
     }
     out.pixels = textured;
     out.iterations = it + 1;
-    if (textured < options.min_pixels) return PriorAlignment{};
+    // Refused (out.aligned false, no rotation): too little texture to tell a rotation, a solve
+    // that fails or flips the colours, too large a rotation or no convergence — an unrelated
+    // scene rather than a small pose error.
+    if (textured < options.min_pixels) return out;
     const Vector5d step = -A.ldlt().solve(g);
-    if (!step.allFinite()) return PriorAlignment{};
+    if (!step.allFinite() || !(gain + step[3] > 0.0)) return out;
     omega += step.head<3>();
     gain += step[3];
     bias += step[4];
-    if (omega.norm() > options.max_rotation_rad) return PriorAlignment{};
-    if (step.head<3>().norm() < options.converged_rad) break;
+    if (omega.norm() > options.max_rotation_rad) return out;
+    if (step.head<3>().norm() < options.converged_rad) {
+      out.aligned = true;
+      out.rotation = omega;
+      return out;
+    }
   }
-  out.aligned = true;
-  out.rotation = omega;
   return out;
 }
 

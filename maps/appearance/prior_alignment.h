@@ -26,21 +26,25 @@ struct PriorAlignmentOptions {
   double max_rotation_rad = 0.01;  ///< a larger correction (0.57°) is refused: not a small error
   double min_gradient = 2.0;     ///< Y levels per pixel from which a pixel counts as textured
   int min_pixels = 400;          ///< fewer covered, textured pixels: no alignment
-  double converged_rad = 1e-6;   ///< a step smaller than this ends the iterations
+  /// A step smaller than this (0.003 px at a 277 px focal length) ends the iterations;
+  /// max_iterations without one refuses the alignment.
+  double converged_rad = 1e-5;
 };
 
 struct PriorAlignment {
-  bool aligned = false;  ///< false: too few pixels, no convergence or too large; rotation is 0
+  /// False: too few pixels textured in both, a failed solve, no convergence or too large a
+  /// rotation; rotation is then 0 (pixels and iterations say how far it got).
+  bool aligned = false;
   /// ω (rad, camera frame, +X right, +Y down, +Z forward): the frame's camera is the given one
   /// rotated by exp([ω]×), i.e. T_world_cam_true = T_world_cam · R(ω).
   Eigen::Vector3d rotation = Eigen::Vector3d::Zero();
-  int pixels = 0;        ///< covered, textured pixels in the last step
+  int pixels = 0;        ///< covered pixels textured in prior and frame, in the last step
   int iterations = 0;
 };
 
 /// The rotation under which `prior_y` (CV_32FC1, the prior's τ_Y at the given pose, NaN where
-/// not covered) best explains `observed_y` (CV_32FC1, the frame's Y): prior_y(K·R(ω)·K⁻¹·x) ≈
-/// observed_y(x) + b. Throws std::invalid_argument for planes that do not match the camera or
+/// not covered) best explains `observed_y` (CV_32FC1, the frame's Y): a·prior_y(K·R(ω)·K⁻¹·x) + b
+/// ≈ observed_y(x), with a gain a > 0 and a bias b. Throws std::invalid_argument for planes that do not match the camera or
 /// bad options.
 PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& prior_y,
                                     const core::PinholeCamera& camera,

@@ -112,11 +112,13 @@ SevenViewMap MakeSevenViewMap() {
 }
 
 // Argument 1: with the learnt warp-error floor (learn_warp_sigma), which blends the whole prior
-// before the tiles and measures the frame's edges against it.
+// before the tiles and measures the frame's edges against it; 2: also aligned to the prior
+// (align_to_prior: the rotation's Gauss-Newton steps and a second prediction).
 void BM_AppearanceMapSevenViews(benchmark::State& state) {
   static const SevenViewMap seven = MakeSevenViewMap();
   AppearanceMapOptions options;
   options.learn_warp_sigma = state.range(0) != 0;
+  options.align_to_prior = state.range(0) == 2;
   // Every view decoded: a compact map would encode the restored views outside the timing and
   // decode them inside it, which is the storage's cost (BM_DecodeView), not the frame's.
   options.views.storage.decoded_views = 0;
@@ -132,7 +134,7 @@ void BM_AppearanceMapSevenViews(benchmark::State& state) {
   }
   state.counters["views"] = double(selected) / double(n);
 }
-BENCHMARK(BM_AppearanceMapSevenViews)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_AppearanceMapSevenViews)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A compact map (views::ReferenceViewStore, decoded_views > 0) encodes a view when it leaves the
 // decoded cache and decodes it when a prediction selects it again: one 320×240 appearance-map

@@ -133,10 +133,24 @@ TEST(AlignRotationToPrior, RefusesWhatIsNotASmallError) {
   const PriorAlignment n = AlignRotationToPrior(prior, none, c);
   EXPECT_FALSE(n.aligned);
   EXPECT_EQ(n.rotation, Eigen::Vector3d::Zero());
+  // A flat frame, whatever the prior: nothing to align.
+  const PriorAlignment flat = AlignRotationToPrior(cv::Mat(240, 320, CV_32FC1, cv::Scalar(30.0)), prior, c);
+  EXPECT_FALSE(flat.aligned);
+  EXPECT_EQ(flat.pixels, 0);
   // A rotation beyond max_rotation_rad.
   PriorAlignmentOptions o;
   o.max_rotation_rad = 0.001;
   EXPECT_FALSE(AlignRotationToPrior(v.frame, prior, c, o).aligned);
+  // Steps left when the iterations run out: not converged, refused.
+  o = {};
+  o.max_iterations = 1;
+  const PriorAlignment one = AlignRotationToPrior(v.frame, prior, c, o);
+  EXPECT_FALSE(one.aligned);
+  EXPECT_EQ(one.iterations, 1);
+  EXPECT_EQ(one.rotation, Eigen::Vector3d::Zero());
+  // Another scene altogether: no rotation explains it, and none may be applied.
+  const PriorAlignment other = AlignRotationToPrior(Views(6, c, kOmega).frame, prior, c);
+  EXPECT_FALSE(other.aligned) << "rotation " << other.rotation.transpose();
 }
 
 TEST(AlignRotationToPrior, RejectsBadPlanesAndOptions) {
