@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
@@ -21,7 +22,7 @@ void CheckOptions(const PriorAlignmentOptions& o) {
   if (!(o.max_rotation_rad > 0.0 && o.max_rotation_rad < 0.5)) fail("max_rotation_rad must be in (0, 0.5)");
   if (!(o.min_gradient >= 0.0 && std::isfinite(o.min_gradient))) fail("min_gradient must be >= 0");
   if (o.min_pixels < 4) fail("min_pixels must be >= 4");
-  if (!(o.converged_rad > 0.0)) fail("converged_rad must be > 0");
+  if (!(o.converged_px > 0.0)) fail("converged_px must be > 0");
 }
 
 cv::Mat Blurred(const cv::Mat& m, double sigma) {
@@ -40,6 +41,20 @@ cv::Matx33d RotationHomography(const core::PinholeCamera& c, const Eigen::Vector
   for (int r = 0; r < 3; ++r)
     for (int k = 0; k < 3; ++k) h(r, k) = H(r, k);
   return h;
+}
+
+// The largest motion (px) a rotation by `step` gives a pixel of the frame: at its corners, to first
+// order (the rotation's image motion grows towards the border).
+double LargestMotionPx(const core::PinholeCamera& c, const Eigen::Vector3d& step) {
+  double largest = 0.0;
+  for (double x : {0.0, c.width - 1.0})
+    for (double y : {0.0, c.height - 1.0}) {
+      const double u = (x - c.cx) / c.fx, v = (y - c.cy) / c.fy;
+      const double dx = c.fx * (-u * v * step.x() + (1.0 + u * u) * step.y() - v * step.z());
+      const double dy = c.fy * (-(1.0 + v * v) * step.x() + u * v * step.y() + u * step.z());
+      largest = std::max(largest, std::hypot(dx, dy));
+    }
+  return largest;
 }
 
 }  // namespace
@@ -129,7 +144,7 @@ PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& pr
     gain += step[3];
     bias += step[4];
     if (omega.norm() > options.max_rotation_rad) return out;
-    if (step.head<3>().norm() < options.converged_rad) {
+    if (LargestMotionPx(camera, step.head<3>()) < options.converged_px) {
       out.aligned = true;
       out.rotation = omega;
       return out;

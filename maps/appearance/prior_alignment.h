@@ -26,9 +26,10 @@ struct PriorAlignmentOptions {
   double max_rotation_rad = 0.01;  ///< a larger correction (0.57°) is refused: not a small error
   double min_gradient = 2.0;     ///< Y levels per pixel from which a pixel counts as textured
   int min_pixels = 400;          ///< fewer covered, textured pixels: no alignment
-  /// A step smaller than this (0.003 px at a 277 px focal length) ends the iterations;
-  /// max_iterations without one refuses the alignment.
-  double converged_rad = 1e-5;
+  /// A step that moves no pixel farther than this ends the iterations (at an edge of 100 levels
+  /// per pixel a hundredth of a pixel is one level, the sensor's noise); max_iterations without
+  /// one refuses the alignment.
+  double converged_px = 0.01;
 };
 
 struct PriorAlignment {
