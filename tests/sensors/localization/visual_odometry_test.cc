@@ -11,8 +11,11 @@ namespace {
 // issue's budget is < 1 % of the path; measured: final 1.5 % (35 mm), worst 2.0 % (46 mm,
 // 1.8°); the error grows by 0.035° a frame already before any feature is replaced. The direct
 // odometry meets the budget on the same frames (direct_odometry_test); this test holds what the
-// feature-based one reaches so it cannot silently get worse.
-TEST(VisualOdometry, DriftOnAQuarterCircleStaysWithinTwoAndAHalfPercentOfThePath) {
+// feature-based one reaches so it cannot silently get worse. What it reaches depends on the
+// machine, with the same code and packages: the numbers above on the AMD VMs, final 2.6 % and
+// worst 2.7 % (63 mm, 2.58°) on an Intel Xeon VM with AVX-512 (2026-11-28; not OpenCV's SIMD
+// dispatch nor Embree's ISA, both tried). The guard lies above both.
+TEST(VisualOdometry, DriftOnAQuarterCircleStaysWithinThreePercentOfThePath) {
   QuarterCircle run;
   auto [first, first_truth] = run.Frame(0);
   VisualOdometry vo({}, first_truth);
@@ -38,8 +41,8 @@ TEST(VisualOdometry, DriftOnAQuarterCircleStaysWithinTwoAndAHalfPercentOfThePath
           1000 * worst, worst_angle * 180 / M_PI, r->inliers);
   }
   EXPECT_GT(path, 2.0);
-  EXPECT_LT(worst, 0.025 * path);
-  EXPECT_LT(worst_angle * 180 / M_PI, 2.5);
+  EXPECT_LT(worst, 0.03 * path);
+  EXPECT_LT(worst_angle * 180 / M_PI, 3.0);
 }
 
 // After a blackout (tracking lost) the pose comes back from the keyframes.
