@@ -17,9 +17,11 @@ void CheckOptions(const PriorAlignmentOptions& o) {
     throw std::invalid_argument("PriorAlignmentOptions: " + what);
   };
   if (o.max_iterations < 1) fail("max_iterations must be >= 1");
-  if (!(o.blur_sigma_px >= 0.0 && std::isfinite(o.blur_sigma_px))) fail("blur_sigma_px must be >= 0");
+  if (!(o.blur_sigma_px >= 0.0 && std::isfinite(o.blur_sigma_px)))
+    fail("blur_sigma_px must be >= 0");
   if (!(o.huber_levels > 0.0 && std::isfinite(o.huber_levels))) fail("huber_levels must be > 0");
-  if (!(o.max_rotation_rad > 0.0 && o.max_rotation_rad < 0.5)) fail("max_rotation_rad must be in (0, 0.5)");
+  if (!(o.max_rotation_rad > 0.0 && o.max_rotation_rad < 0.5))
+    fail("max_rotation_rad must be in (0, 0.5)");
   if (!(o.min_gradient >= 0.0 && std::isfinite(o.min_gradient))) fail("min_gradient must be >= 0");
   if (o.min_pixels < 4) fail("min_pixels must be >= 4");
   if (!(o.converged_px > 0.0)) fail("converged_px must be > 0");
@@ -57,6 +59,52 @@ double LargestMotionPx(const core::PinholeCamera& c, const Eigen::Vector3d& step
   return largest;
 }
 
+using Matrix5d = Eigen::Matrix<double, 5, 5>;
+using Vector5d = Eigen::Matrix<double, 5, 1>;
+
+// Gauss-Newton's normal equations in (ω, gain, bias) for r = gain·warped + bias − frame, Huber
+// weighted, over the covered pixels; `textured` counts those textured in prior and frame.
+struct NormalEquations {
+  Matrix5d A = Matrix5d::Zero();
+  Vector5d g = Vector5d::Zero();
+  int textured = 0;
+};
+
+NormalEquations Accumulate(const cv::Mat& warped, const cv::Mat& warped_mask, const cv::Mat& frame,
+                           const cv::Mat& frame_textured, const core::PinholeCamera& camera,
+                           double gain, double bias, const PriorAlignmentOptions& options) {
+  cv::Mat gx, gy;
+  cv::Sobel(warped, gx, CV_32F, 1, 0, 1, 0.5);  // central differences
+  cv::Sobel(warped, gy, CV_32F, 0, 1, 1, 0.5);
+  NormalEquations n;
+  const float min_g2 = float(options.min_gradient * options.min_gradient);
+  for (int y = 1; y + 1 < warped.rows; ++y) {
+    const float* w = warped.ptr<float>(y);
+    const float* f = frame.ptr<float>(y);
+    const float* dx = gx.ptr<float>(y);
+    const float* dy = gy.ptr<float>(y);
+    const uchar* m = warped_mask.ptr<uchar>(y);
+    const uchar* ft = frame_textured.ptr<uchar>(y);
+    const double v = (y - camera.cy) / camera.fy;
+    for (int x = 1; x + 1 < warped.cols; ++x) {
+      if (!m[x]) continue;
+      const double u = (x - camera.cx) / camera.fx;
+      // d(pixel)/dω of a rotation at ω = 0, for the ray (u, v, 1).
+      const double ix = gain * dx[x] * camera.fx, iy = gain * dy[x] * camera.fy;
+      Vector5d J;
+      J << -ix * u * v - iy * (1.0 + v * v), ix * (1.0 + u * u) + iy * u * v, -ix * v + iy * u,
+          double(w[x]), 1.0;
+      const double r = gain * double(w[x]) + bias - double(f[x]);
+      const double wt =
+          std::abs(r) <= options.huber_levels ? 1.0 : options.huber_levels / std::abs(r);
+      n.A.noalias() += wt * J * J.transpose();
+      n.g.noalias() += wt * r * J;
+      if (ft[x] && dx[x] * dx[x] + dy[x] * dy[x] >= min_g2) ++n.textured;
+    }
+  }
+  return n;
+}
+
 }  // namespace
 
 Eigen::Matrix3d RotationFromVector(const Eigen::Vector3d& omega) {
@@ -72,14 +120,16 @@ PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& pr
   const cv::Size size(camera.width, camera.height);
   if (observed_y.type() != CV_32FC1 || prior_y.type() != CV_32FC1 || observed_y.size() != size ||
       prior_y.size() != size)
-    throw std::invalid_argument("AlignRotationToPrior: the planes must be CV_32FC1 of the camera's size");
+    throw std::invalid_argument(
+        "AlignRotationToPrior: the planes must be CV_32FC1 of the camera's size");
 
   // Covered pixels, away from the uncovered ones by the blur's reach (their fill is no colour).
   cv::Mat covered = prior_y == prior_y;  // false for NaN
   cv::Mat prior_filled = prior_y.clone();
   prior_filled.setTo(0.0f, ~covered);
   const int reach = int(std::ceil(3.0 * options.blur_sigma_px)) + 1;
-  cv::erode(covered, covered, cv::getStructuringElement(cv::MORPH_RECT, {2 * reach + 1, 2 * reach + 1}));
+  cv::erode(covered, covered,
+            cv::getStructuringElement(cv::MORPH_RECT, {2 * reach + 1, 2 * reach + 1}));
   const cv::Mat prior = Blurred(prior_filled, options.blur_sigma_px);
   const cv::Mat frame = Blurred(observed_y, options.blur_sigma_px);
 
@@ -93,7 +143,7 @@ PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& pr
   PriorAlignment out;
   Eigen::Vector3d omega = Eigen::Vector3d::Zero();
   double gain = 1.0, bias = 0.0;
-  cv::Mat warped, warped_mask, gx, gy;
+  cv::Mat warped, warped_mask;
   for (int it = 0; it < options.max_iterations; ++it) {
     // warped(x) = prior(H·x): the prior as the rotated camera would see it.
     const cv::Matx33d H = RotationHomography(camera, omega);
@@ -101,44 +151,15 @@ PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& pr
                         cv::BORDER_REPLICATE);
     cv::warpPerspective(covered, warped_mask, H, size, cv::INTER_NEAREST | cv::WARP_INVERSE_MAP,
                         cv::BORDER_CONSTANT, 0);
-    cv::Sobel(warped, gx, CV_32F, 1, 0, 1, 0.5);  // central differences
-    cv::Sobel(warped, gy, CV_32F, 0, 1, 1, 0.5);
-    using Matrix5d = Eigen::Matrix<double, 5, 5>;
-    using Vector5d = Eigen::Matrix<double, 5, 1>;
-    Matrix5d A = Matrix5d::Zero();
-    Vector5d g = Vector5d::Zero();
-    int textured = 0;
-    const float min_g2 = float(options.min_gradient * options.min_gradient);
-    for (int y = 1; y + 1 < size.height; ++y) {
-      const float* w = warped.ptr<float>(y);
-      const float* f = frame.ptr<float>(y);
-      const float* dx = gx.ptr<float>(y);
-      const float* dy = gy.ptr<float>(y);
-      const uchar* m = warped_mask.ptr<uchar>(y);
-      const uchar* ft = frame_textured.ptr<uchar>(y);
-      const double v = (y - camera.cy) / camera.fy;
-      for (int x = 1; x + 1 < size.width; ++x) {
-        if (!m[x]) continue;
-        const double u = (x - camera.cx) / camera.fx;
-        // d(pixel)/dω of a rotation at ω = 0, for the ray (u, v, 1).
-        const double ix = gain * dx[x] * camera.fx, iy = gain * dy[x] * camera.fy;
-        Vector5d J;
-        J << -ix * u * v - iy * (1.0 + v * v), ix * (1.0 + u * u) + iy * u * v, -ix * v + iy * u,
-            double(w[x]), 1.0;
-        const double r = gain * double(w[x]) + bias - double(f[x]);
-        const double wt = std::abs(r) <= options.huber_levels ? 1.0 : options.huber_levels / std::abs(r);
-        A.noalias() += wt * J * J.transpose();
-        g.noalias() += wt * r * J;
-        if (ft[x] && dx[x] * dx[x] + dy[x] * dy[x] >= min_g2) ++textured;
-      }
-    }
-    out.pixels = textured;
+    const NormalEquations n =
+        Accumulate(warped, warped_mask, frame, frame_textured, camera, gain, bias, options);
+    out.pixels = n.textured;
     out.iterations = it + 1;
     // Refused (out.aligned false, no rotation): too little texture to tell a rotation, a solve
     // that fails or flips the colours, too large a rotation or no convergence — an unrelated
     // scene rather than a small pose error.
-    if (textured < options.min_pixels) return out;
-    const Vector5d step = -A.ldlt().solve(g);
+    if (n.textured < options.min_pixels) return out;
+    const Vector5d step = -n.A.ldlt().solve(n.g);
     if (!step.allFinite() || !(gain + step[3] > 0.0)) return out;
     omega += step.head<3>();
     gain += step[3];

@@ -20,12 +20,12 @@
 namespace novelty::appearance {
 
 struct PriorAlignmentOptions {
-  int max_iterations = 20;       ///< Gauss-Newton steps at most
-  double blur_sigma_px = 1.0;    ///< both images are smoothed first: a basin wider than a pixel
-  double huber_levels = 10.0;    ///< residual (Y levels) beyond which a pixel's weight falls as 1/|r|
+  int max_iterations = 20;     ///< Gauss-Newton steps at most
+  double blur_sigma_px = 1.0;  ///< both images are smoothed first: a basin wider than a pixel
+  double huber_levels = 10.0;  ///< residual (Y levels) beyond which a pixel's weight falls as 1/|r|
   double max_rotation_rad = 0.01;  ///< a larger correction (0.57°) is refused: not a small error
-  double min_gradient = 2.0;     ///< Y levels per pixel from which a pixel counts as textured
-  int min_pixels = 400;          ///< fewer covered, textured pixels: no alignment
+  double min_gradient = 2.0;       ///< Y levels per pixel from which a pixel counts as textured
+  int min_pixels = 400;            ///< fewer covered, textured pixels: no alignment
   /// A step that moves no pixel farther than this ends the iterations (at an edge of 100 levels
   /// per pixel a hundredth of a pixel is one level, the sensor's noise); max_iterations without
   /// one refuses the alignment.
@@ -39,14 +39,14 @@ struct PriorAlignment {
   /// ω (rad, camera frame, +X right, +Y down, +Z forward): the frame's camera is the given one
   /// rotated by exp([ω]×), i.e. T_world_cam_true = T_world_cam · R(ω).
   Eigen::Vector3d rotation = Eigen::Vector3d::Zero();
-  int pixels = 0;        ///< covered pixels textured in prior and frame, in the last step
+  int pixels = 0;  ///< covered pixels textured in prior and frame, in the last step
   int iterations = 0;
 };
 
 /// The rotation under which `prior_y` (CV_32FC1, the prior's τ_Y at the given pose, NaN where
 /// not covered) best explains `observed_y` (CV_32FC1, the frame's Y): a·prior_y(K·R(ω)·K⁻¹·x) + b
-/// ≈ observed_y(x), with a gain a > 0 and a bias b. Throws std::invalid_argument for planes that do not match the camera or
-/// bad options.
+/// ≈ observed_y(x), with a gain a > 0 and a bias b. Throws std::invalid_argument for planes that do
+/// not match the camera or bad options.
 PriorAlignment AlignRotationToPrior(const cv::Mat& observed_y, const cv::Mat& prior_y,
                                     const core::PinholeCamera& camera,
                                     const PriorAlignmentOptions& options = {});

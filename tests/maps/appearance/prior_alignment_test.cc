@@ -5,15 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
-#include <vector>
 #include <opencv2/imgproc.hpp>
+#include <sstream>
 #include <stdexcept>
+#include <vector>
 
-#include "sim/scenario/scenario_parser.h"
-#include "sim/scenario/simulate_frames.h"
 #include "eval/attentional_selectivity.h"
 #include "maps/appearance/appearance_map.h"
+#include "sim/scenario/scenario_parser.h"
+#include "sim/scenario/simulate_frames.h"
 #include "tests/maps/appearance/table_clip.h"
 
 namespace novelty::appearance {
@@ -127,14 +127,16 @@ TEST(AlignRotationToPrior, RefusesWhatIsNotASmallError) {
   const PriorAndFrame v = Views(4, c, kOmega);
   const cv::Mat& prior = v.prior;
   // A flat prior has nothing to align on.
-  EXPECT_FALSE(AlignRotationToPrior(prior, cv::Mat(240, 320, CV_32FC1, cv::Scalar(90.0)), c).aligned);
+  EXPECT_FALSE(
+      AlignRotationToPrior(prior, cv::Mat(240, 320, CV_32FC1, cv::Scalar(90.0)), c).aligned);
   // Everything uncovered.
   const cv::Mat none(240, 320, CV_32FC1, cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
   const PriorAlignment n = AlignRotationToPrior(prior, none, c);
   EXPECT_FALSE(n.aligned);
   EXPECT_EQ(n.rotation, Eigen::Vector3d::Zero());
   // A flat frame, whatever the prior: nothing to align.
-  const PriorAlignment flat = AlignRotationToPrior(cv::Mat(240, 320, CV_32FC1, cv::Scalar(30.0)), prior, c);
+  const PriorAlignment flat =
+      AlignRotationToPrior(cv::Mat(240, 320, CV_32FC1, cv::Scalar(30.0)), prior, c);
   EXPECT_FALSE(flat.aligned);
   EXPECT_EQ(flat.pixels, 0);
   // A rotation beyond max_rotation_rad.
@@ -156,7 +158,8 @@ TEST(AlignRotationToPrior, RefusesWhatIsNotASmallError) {
 TEST(AlignRotationToPrior, RejectsBadPlanesAndOptions) {
   const core::PinholeCamera c = Camera();
   const cv::Mat prior = Views(5, c, Eigen::Vector3d::Zero()).prior;
-  EXPECT_THROW(AlignRotationToPrior(prior(cv::Rect(0, 0, 100, 100)), prior, c), std::invalid_argument);
+  EXPECT_THROW(AlignRotationToPrior(prior(cv::Rect(0, 0, 100, 100)), prior, c),
+               std::invalid_argument);
   cv::Mat bytes;
   prior.convertTo(bytes, CV_8U);
   EXPECT_THROW(AlignRotationToPrior(bytes, prior, c), std::invalid_argument);
@@ -172,7 +175,8 @@ TEST(RotationFromVector, IsTheExponentialMap) {
   EXPECT_TRUE(RotationFromVector(Eigen::Vector3d::Zero()).isIdentity());
   const Eigen::Vector3d w(0.0, 0.0, M_PI / 2);
   // A quarter turn about +Z takes +X to +Y.
-  EXPECT_TRUE((RotationFromVector(w) * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY()));
+  EXPECT_TRUE(
+      (RotationFromVector(w) * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY()));
 }
 
 struct AlignedRun {
@@ -226,10 +230,11 @@ TEST(AppearanceMapAlignedToPrior, TakesOutARotationError) {
   const AlignedRun aligned = PlayWithRotationError(true, true);
   const AlignedRun plain = PlayWithRotationError(false, true);
   const AlignedRun exact = PlayWithRotationError(false, false);
-  std::printf("mean surprise %.3f aligned, %.3f without, %.3f at the true poses; cup AS %.2f, "
-              "%.2f, %.2f dB\n",
-              aligned.quiet_surprise, plain.quiet_surprise, exact.quiet_surprise, aligned.as_cup,
-              plain.as_cup, exact.as_cup);
+  std::printf(
+      "mean surprise %.3f aligned, %.3f without, %.3f at the true poses; cup AS %.2f, "
+      "%.2f, %.2f dB\n",
+      aligned.quiet_surprise, plain.quiet_surprise, exact.quiet_surprise, aligned.as_cup,
+      plain.as_cup, exact.as_cup);
   EXPECT_GT(plain.quiet_surprise, 1.1 * exact.quiet_surprise) << "the error must show";
   EXPECT_LT(plain.as_cup, exact.as_cup - 0.5) << "the error must show";
   EXPECT_LT(aligned.quiet_surprise, 1.1 * exact.quiet_surprise);
