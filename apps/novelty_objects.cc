@@ -16,7 +16,9 @@
 //   OUT/recognition.csv    per I3 frame and learnt object: pixels it shows, matches N_k, matches
 //                          that agree on a pose (verified), the same with the ratio test's
 //                          distinct second, the places where the features' K nearest keypoints
-//                          agree on a pose (verified_nearest), visible (fig. 5.5 a, b)
+//                          agree on a pose (verified_nearest), visible (fig. 5.5 a, b); where
+//                          visible, the keypoints on the object (ground truth), N_k among them
+//                          alone and the mean nearest distance (eval/matches_on_object.h)
 //   OUT/findings.csv       finding,value,target,holds — the ROC over (frame, object) decisions
 //                          sweeping the matches required (fig. 5.5 d), TPR at FPR 0.3/1/5 %, AUC,
 //                          each object's TPR and false positives at the FPR 0.3 % threshold,
@@ -46,6 +48,7 @@
 #include "apps/command_line.h"
 #include "core/frame_stem.h"
 #include "eval/html_report.h"
+#include "eval/matches_on_object.h"
 #include "eval/object_visibility.h"
 #include "eval/roc.h"
 #include "eval/roc_plot.h"
@@ -252,7 +255,12 @@ const char* const kScoreColours[kScores] = {"#0072b2", "#d55e00", "#009e73", "#c
 struct RecognitionRow {
   int frame, object, visible_pixels;
   int scores[kScores];
+  eval::MatchesOnObject on_object;  // visible decisions only: eq. 5.4 among its own keypoints
 };
+
+// Keypoints this close to the object's pixels count as on it (matches_on_object.h): the
+// smallest M-SURF blob's radius at 320 x 240 (size 10 s, s ≥ 1.2 → 6 px), and some.
+constexpr int kOnObjectMarginPx = 10;
 
 void DrawPanel(const core::Frame& f, const objects::FrameRecognition& r,
                const objects::FeatureDatabase& db, const std::vector<std::string>& names,
@@ -300,7 +308,7 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
   std::ofstream csv(csv_path);
   csv << "frame,object,name,visible_pixels,visible";
   for (const char* c : kScoreColumns) csv << ',' << c;
-  csv << '\n';
+  csv << ",keypoints_on_object,matches_on_object,nearest_on_object\n";
   sensors::RawlogFrameReader reader(a.rawlog);
   for (core::Frame frame; (a.frames == 0 || run.frames < a.frames) && reader.Next(frame);) {
     ++run.frames;
@@ -318,8 +326,12 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
       throw std::runtime_error(a.truth + ": no ids image for frame " + std::to_string(frame.index));
     for (int k = 0; k < db.objects(); ++k) {
       int visible = 0;
+      cv::Mat on_object(ids.size(), CV_8UC1, cv::Scalar(0));
       if (const auto id = ids_by_name.find(names[std::size_t(k)]); id != ids_by_name.end())
-        for (int i : id->second) visible += eval::VisiblePixels(ids, i);
+        for (int i : id->second) {
+          visible += eval::VisiblePixels(ids, i);
+          on_object |= ids == i;
+        }
       const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
       const objects::ObjectEvidence& ed = rd.per_object[std::size_t(k)];
       const int nearest_score =  // 0 when not computed
@@ -330,11 +342,17 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
                           k,
                           visible,
                           {e.matches, e.pose.verified ? e.pose.inliers : 0, ed.matches,
-                           ed.pose.verified ? ed.pose.inliers : 0, nearest_score}});
+                           ed.pose.verified ? ed.pose.inliers : 0, nearest_score},
+                          {}});
+      RecognitionRow& row = run.rows.back();
+      if (visible >= a.min_visible)
+        row.on_object =
+            eval::MatchOnObject(db, k, features, on_object, kOnObjectMarginPx, thesis.match_ratio);
       csv << frame.index << ',' << k << ',' << names[std::size_t(k)] << ',' << visible << ','
           << (visible >= a.min_visible);
-      for (int score : run.rows.back().scores) csv << ',' << score;
-      csv << '\n';
+      for (int score : row.scores) csv << ',' << score;
+      csv << ',' << row.on_object.keypoints << ',' << row.on_object.matches << ','
+          << row.on_object.mean_nearest_distance << '\n';
     }
     if (!panels.empty() && a.panels_every > 0 && (run.frames - 1) % a.panels_every == 0) {
       DrawPanel(frame, r, db, names, panels + "/" + core::FrameStem(frame.index) + ".png");
@@ -631,6 +649,28 @@ int main(int argc, char** argv) {
               (shown ? Percent(double(found) / shown) + " of " + std::to_string(shown) : "-") +
                   " (" + std::to_string(false_positives) + " false positives)",
               "(reported)", -1);
+    }
+    // Where the misses come from: the same matching among only the object's own keypoints.
+    for (int k = 0; k < db.objects(); ++k) {
+      int shown = 0, in_frame = 0, on_own = 0, distances = 0;
+      double distance = 0.0;
+      for (const RecognitionRow& r : run.rows)
+        if (r.object == k && r.visible_pixels >= a.min_visible) {
+          ++shown;
+          in_frame += r.scores[0] >= 1;
+          on_own += r.on_object.matches >= 1;
+          if (std::isfinite(r.on_object.mean_nearest_distance))
+            distance += r.on_object.mean_nearest_distance, ++distances;
+        }
+      if (shown == 0) continue;
+      finding(learning.names[std::size_t(k)] +
+                  ": visible decisions with a match among its own keypoints (ground truth; in "
+                  "the whole frame)",
+              Percent(double(on_own) / shown) + " (" + Percent(double(in_frame) / shown) + ")",
+              "(diagnostic)", -1);
+      finding(learning.names[std::size_t(k)] +
+                  ": mean distance of a learnt feature to its nearest keypoint on the object",
+              distances ? Num(distance / distances) : "-", "(diagnostic)", -1);
     }
     if (baseline) {
       const eval::Roc& b = baseline_run->rocs[0];
