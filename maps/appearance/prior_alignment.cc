@@ -45,16 +45,22 @@ cv::Matx33d RotationHomography(const core::PinholeCamera& c, const Eigen::Vector
   return h;
 }
 
+// d(u, v)/dω at ω = 0: how the normalised image point (u, v) of a ray moves under a small
+// camera rotation ω, whatever the ray's depth.
+Eigen::Matrix<double, 2, 3> RotationMotion(double u, double v) {
+  Eigen::Matrix<double, 2, 3> m;
+  m << -u * v, 1.0 + u * u, -v, -(1.0 + v * v), u * v, u;
+  return m;
+}
+
 // The largest motion (px) a rotation by `step` gives a pixel of the frame: at its corners, to first
 // order (the rotation's image motion grows towards the border).
 double LargestMotionPx(const core::PinholeCamera& c, const Eigen::Vector3d& step) {
   double largest = 0.0;
   for (double x : {0.0, c.width - 1.0})
     for (double y : {0.0, c.height - 1.0}) {
-      const double u = (x - c.cx) / c.fx, v = (y - c.cy) / c.fy;
-      const double dx = c.fx * (-u * v * step.x() + (1.0 + u * u) * step.y() - v * step.z());
-      const double dy = c.fy * (-(1.0 + v * v) * step.x() + u * v * step.y() + u * step.z());
-      largest = std::max(largest, std::hypot(dx, dy));
+      const Eigen::Vector2d d = RotationMotion((x - c.cx) / c.fx, (y - c.cy) / c.fy) * step;
+      largest = std::max(largest, std::hypot(c.fx * d.x(), c.fy * d.y()));
     }
   return largest;
 }
@@ -89,11 +95,10 @@ NormalEquations Accumulate(const cv::Mat& warped, const cv::Mat& warped_mask, co
     for (int x = 1; x + 1 < warped.cols; ++x) {
       if (!m[x]) continue;
       const double u = (x - camera.cx) / camera.fx;
-      // d(pixel)/dω of a rotation at ω = 0, for the ray (u, v, 1).
-      const double ix = gain * dx[x] * camera.fx, iy = gain * dy[x] * camera.fy;
+      // The intensity's gradient (per unit of u, v) times the pixel's motion under ω.
+      const Eigen::RowVector2d i(gain * dx[x] * camera.fx, gain * dy[x] * camera.fy);
       Vector5d J;
-      J << -ix * u * v - iy * (1.0 + v * v), ix * (1.0 + u * u) + iy * u * v, -ix * v + iy * u,
-          double(w[x]), 1.0;
+      J << (i * RotationMotion(u, v)).transpose(), double(w[x]), 1.0;
       const double r = gain * double(w[x]) + bias - double(f[x]);
       const double wt =
           std::abs(r) <= options.huber_levels ? 1.0 : options.huber_levels / std::abs(r);
