@@ -154,7 +154,9 @@ eval::NewObjectView NewObjectAt(const sim::GroundTruthReader& truth, int frame) 
 struct LearningEvaluation {
   std::vector<std::string> names;               // per database object
   std::vector<int> name_ids;                    // its id in the learning ground truth, −1 unknown
-  std::vector<std::vector<int>> learnt_frames;  // per database object
+  // Per database feature, the frame it was learnt in (the database appends each frame's
+  // learnt features in frame order); empty if objects.csv's counts are not the database's.
+  std::vector<int> feature_frames;
   std::vector<eval::PlotSeries> plots_x, plots_y, plots_features;
   double median_centre_error_px = NAN;
   int compared_frames = 0, centre_inside = 0;
@@ -164,7 +166,6 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
                                     const sim::GroundTruthReader& truth, int objects,
                                     const std::string& out) {
   LearningEvaluation e;
-  e.learnt_frames.resize(std::size_t(objects));
   std::vector<std::map<int, int>> votes(static_cast<std::size_t>(objects));
   eval::PlotSeries mx{"focus box", "#0072b2", {}, 1}, tx{"true box", "#000000", {}, 1};
   eval::PlotSeries my = mx, ty = tx, feats{"features in the box", "#d55e00", {}, 1};
@@ -173,10 +174,10 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
   csv << "frame,box_cx,box_cy,true_cx,true_cy,true_object,arm_in_view,extracted\n";
   for (const StepRow& r : steps) {
     const eval::NewObjectView view = NewObjectAt(truth, r.frame);
-    if (r.learnt > 0 && r.object >= 0 && r.object < objects) {
-      e.learnt_frames[std::size_t(r.object)].push_back(r.frame);
-      if (view.id >= 0) ++votes[std::size_t(r.object)][view.id];
-    }
+    if (r.learnt > 0)
+      e.feature_frames.insert(e.feature_frames.end(), std::size_t(r.learnt), r.frame);
+    if (r.learnt > 0 && r.object >= 0 && r.object < objects && view.id >= 0)
+      ++votes[std::size_t(r.object)][view.id];
     const double bx = r.has_box ? r.box.x + 0.5 * r.box.width : NAN;
     const double by = r.has_box ? r.box.y + 0.5 * r.box.height : NAN;
     // As the thesis: the truth where the object stands still (no arm in view).
@@ -223,9 +224,12 @@ int FeatureOnObject(const objects::FeatureDatabase& db, int h, const LearningEva
                     const sim::GroundTruthReader& truth, const core::PinholeCamera& camera) {
   const int k = db.MostProbableObject(h);
   const Eigen::Vector3d& p = db.Position(h);
-  const std::vector<int>& frames = e.learnt_frames[std::size_t(k)];
-  if (!p.allFinite() || frames.empty() || e.name_ids[std::size_t(k)] < 0) return -1;
-  const int frame = frames[frames.size() / 2];
+  // In the frame it was learnt in: a class that took in several objects (one passed for
+  // another by eq. 5.4) is judged feature by feature, each on the object the class is named for.
+  if (!p.allFinite() || int(e.feature_frames.size()) != db.features() ||
+      e.name_ids[std::size_t(k)] < 0)
+    return -1;
+  const int frame = e.feature_frames[std::size_t(h)];
   const auto pose = truth.CameraPoses().find(frame);
   const cv::Mat ids = truth.Ids(frame), depth = truth.Depth(frame);
   if (pose == truth.CameraPoses().end() || ids.empty() || depth.empty()) return -1;
