@@ -27,8 +27,8 @@
 // With --baseline-map (the appearance map after I1: novelty-run --frames 360 --map-out) and the
 // learning rawlog, also the baseline of 5.2 — the eigenbackground of the seven nearest views
 // segments the new object, whose features are all learnt — recognised the same way
-// (OUT/recognition_baseline.csv, without verified_nearest: 0) and compared in findings.csv and
-// the ROC plots.
+// (OUT/recognition_baseline.csv, without verified_nearest and the on-object columns: 0, NaN)
+// and compared in findings.csv and the ROC plots.
 #include <tclap/CmdLine.h>
 
 #include <algorithm>
@@ -81,6 +81,7 @@ struct StepRow {
   cv::Rect box;
   std::string change;
   int extracted = 0, learnt = 0, object = -1;
+  int database_features = 0;  // after the step
 };
 
 std::vector<std::string> SplitCsv(const std::string& line) {
@@ -115,6 +116,7 @@ std::vector<StepRow> ReadSteps(const std::string& path) {
       r.extracted = std::stoi(c[8]);
       r.learnt = std::stoi(c[11]);
       r.object = std::stoi(c[13]);
+      r.database_features = std::stoi(c[14]);
       rows.push_back(r);
     } catch (const std::exception& e) {
       throw std::runtime_error(path + ":" + std::to_string(n) + ": malformed row (" + e.what() +
@@ -154,9 +156,6 @@ eval::NewObjectView NewObjectAt(const sim::GroundTruthReader& truth, int frame) 
 struct LearningEvaluation {
   std::vector<std::string> names;               // per database object
   std::vector<int> name_ids;                    // its id in the learning ground truth, −1 unknown
-  // Per database feature, the frame it was learnt in (the database appends each frame's
-  // learnt features in frame order); empty if objects.csv's counts are not the database's.
-  std::vector<int> feature_frames;
   std::vector<eval::PlotSeries> plots_x, plots_y, plots_features;
   double median_centre_error_px = NAN;
   int compared_frames = 0, centre_inside = 0;
@@ -174,8 +173,6 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
   csv << "frame,box_cx,box_cy,true_cx,true_cy,true_object,arm_in_view,extracted\n";
   for (const StepRow& r : steps) {
     const eval::NewObjectView view = NewObjectAt(truth, r.frame);
-    if (r.learnt > 0)
-      e.feature_frames.insert(e.feature_frames.end(), std::size_t(r.learnt), r.frame);
     if (r.learnt > 0 && r.object >= 0 && r.object < objects && view.id >= 0)
       ++votes[std::size_t(r.object)][view.id];
     const double bx = r.has_box ? r.box.x + 0.5 * r.box.width : NAN;
@@ -218,18 +215,27 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
   return e;
 }
 
-// Whether feature h's learnt place lies on its object: seen from the middle frame its object was
-// learnt in, it projects onto that object's ids at the true depth (2 cm).
-int FeatureOnObject(const objects::FeatureDatabase& db, int h, const LearningEvaluation& e,
-                    const sim::GroundTruthReader& truth, const core::PinholeCamera& camera) {
+// Per database feature, the frame it was learnt in (−1 unknown): the database appends each
+// step's learnt features, so a step's are the rows [database_features − learnt,
+// database_features) — also after a database loaded with --objects-in, whose own are unknown.
+std::vector<int> FeatureFrames(const std::vector<StepRow>& steps, int features) {
+  std::vector<int> frames(std::size_t(features), -1);
+  for (const StepRow& r : steps)
+    for (int h = r.database_features - r.learnt; h < r.database_features; ++h)
+      if (h >= 0 && h < features) frames[std::size_t(h)] = r.frame;
+  return frames;
+}
+
+// Whether feature h's learnt place lies on its object (−1: cannot tell): seen from the frame it
+// was learnt in, it projects onto the ids of the object its class is named for, at the true
+// depth (2 cm). Feature by feature, so that a class that took in several objects (one passed
+// for another by eq. 5.4) counts those of the others as off.
+int FeatureOnObject(const objects::FeatureDatabase& db, int h, int frame,
+                    const LearningEvaluation& e, const sim::GroundTruthReader& truth,
+                    const core::PinholeCamera& camera) {
   const int k = db.MostProbableObject(h);
   const Eigen::Vector3d& p = db.Position(h);
-  // In the frame it was learnt in: a class that took in several objects (one passed for
-  // another by eq. 5.4) is judged feature by feature, each on the object the class is named for.
-  if (!p.allFinite() || int(e.feature_frames.size()) != db.features() ||
-      e.name_ids[std::size_t(k)] < 0)
-    return -1;
-  const int frame = e.feature_frames[std::size_t(h)];
+  if (!p.allFinite() || frame < 0 || e.name_ids[std::size_t(k)] < 0) return -1;
   const auto pose = truth.CameraPoses().find(frame);
   const cv::Mat ids = truth.Ids(frame), depth = truth.Depth(frame);
   if (pose == truth.CameraPoses().end() || ids.empty() || depth.empty()) return -1;
@@ -289,7 +295,7 @@ void DrawPanel(const core::Frame& f, const objects::FrameRecognition& r,
 }
 
 // Recognition of `db`'s objects over the I3 rawlog: a row per frame and object, and the ROC of
-// each score.
+// each score. With on_object_diagnostic, also MatchOnObject for each visible decision.
 struct RecognitionRun {
   std::vector<RecognitionRow> rows;
   std::vector<eval::Roc> rocs;
@@ -301,7 +307,7 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
                               const std::vector<std::string>& names, cv::Feature2D& extractor,
                               const objects::ObjectRecognitionOptions& thesis, const Args& a,
                               const sim::GroundTruthReader& truth, const std::string& csv_path,
-                              const std::string& panels) {
+                              const std::string& panels, bool on_object_diagnostic) {
   std::map<std::string, std::vector<int>> ids_by_name;  // names may repeat ("mug", "mug")
   for (const auto& [id, name] : truth.ObjectNames()) ids_by_name[name].push_back(id);
   objects::ObjectRecognitionOptions distinct = thesis;
@@ -328,6 +334,9 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
     const cv::Mat ids = truth.Ids(frame.index);
     if (ids.empty())
       throw std::runtime_error(a.truth + ": no ids image for frame " + std::to_string(frame.index));
+    if (ids.size() != frame.rgb.size())
+      throw std::runtime_error(a.truth + ": the ids image of frame " + std::to_string(frame.index) +
+                               " is not the size of its RGB image");
     for (int k = 0; k < db.objects(); ++k) {
       int visible = 0;
       cv::Mat on_object(ids.size(), CV_8UC1, cv::Scalar(0));
@@ -349,7 +358,7 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
                            ed.pose.verified ? ed.pose.inliers : 0, nearest_score},
                           {}});
       RecognitionRow& row = run.rows.back();
-      if (visible >= a.min_visible)
+      if (on_object_diagnostic && visible >= a.min_visible)
         row.on_object =
             eval::MatchOnObject(db, k, features, on_object, kOnObjectMarginPx, thesis.match_ratio);
       csv << frame.index << ',' << k << ',' << names[std::size_t(k)] << ',' << visible << ','
@@ -555,11 +564,13 @@ int main(int argc, char** argv) {
       throw std::runtime_error(a.rawlog + ": no RGB-D frame");
     int on_object = 0, judged = 0;
     {
+      const std::vector<int> feature_frames = FeatureFrames(steps, db.features());
       std::ofstream csv(a.out + "/features.csv");
       csv << "feature,object,name,x,y,z,on_object\n";
       for (int h = 0; h < db.features(); ++h) {
         const int k = db.MostProbableObject(h);
-        const int on = FeatureOnObject(db, h, learning, learn_truth, frame.camera);
+        const int on = FeatureOnObject(db, h, feature_frames[std::size_t(h)], learning, learn_truth,
+                                       frame.camera);
         const Eigen::Vector3d& p = db.Position(h);
         csv << h << ',' << k << ',' << learning.names[std::size_t(k)] << ',' << p.x() << ','
             << p.y() << ',' << p.z() << ',' << on << '\n';
@@ -574,7 +585,7 @@ int main(int argc, char** argv) {
     thesis.verify = true;  // N_k is the same; the pose adds the verified score
     thesis.verification = options.learner.verification;
     const RecognitionRun run = RunRecognition(db, learning.names, *extractor, thesis, a, truth,
-                                              a.out + "/recognition.csv", a.out + "/panels");
+                                              a.out + "/recognition.csv", a.out + "/panels", true);
     const std::vector<RecognitionRow>& rows = run.rows;
     const std::vector<eval::Roc>& rocs = run.rocs;
     const int n = run.frames;
@@ -590,7 +601,7 @@ int main(int argc, char** argv) {
       without_nearest.verify_nearest = 0;
       baseline_run =
           RunRecognition(baseline->db, baseline->names, *extractor, thesis, without_nearest, truth,
-                         a.out + "/recognition_baseline.csv", "");
+                         a.out + "/recognition_baseline.csv", "", false);
     }
     const eval::Roc& roc = rocs[0];
 
@@ -615,7 +626,11 @@ int main(int argc, char** argv) {
         db.objects(), db.features(), n, roc.positives + roc.negatives, roc.positives);
     finding("objects learnt", std::to_string(db.objects()), "3 (thesis)", db.objects() == 3);
     finding("features in the database", std::to_string(db.features()), "88 (thesis)", -1);
-    finding("learnt features on their object", judged ? Percent(double(on_object) / judged) : "-",
+    finding("learnt features on their object",
+            judged ? Percent(double(on_object) / judged) +
+                         (judged < db.features() ? " of " + std::to_string(judged) + " judged"
+                                                 : std::string())
+                   : "-",
             "100 % (none from background)", judged ? on_object == judged : -1);
     finding("focus box centre inside the new object's true box",
             learning.compared_frames

@@ -6,6 +6,7 @@
 // light), and no change to the ratio test can find it.
 #pragma once
 
+#include <limits>
 #include <opencv2/core.hpp>
 
 #include "maps/objects/feature_database.h"
@@ -17,13 +18,15 @@ struct MatchesOnObject {
   int keypoints = 0;  ///< the frame's keypoints on the object
   int matches = 0;    ///< N_k among those keypoints alone (eq. 5.4's ratio test)
   /// Mean over the object's database features of the descriptor distance to the nearest
-  /// keypoint on the object; NaN without features or keypoints.
-  double mean_nearest_distance = 0.0;
+  /// keypoint on the object; NaN without features or keypoints (and where not computed).
+  double mean_nearest_distance = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// `on_object` CV_8U, the frame's size, nonzero where the object is seen; a keypoint within
-/// `margin_px` of such a pixel counts as on it (a blob centred just outside the outline still
-/// describes the object). `ratio`: the ratio test's bound (0.65 in the thesis). Throws
+/// about `margin_px` of such a pixel (the mask dilated by an ellipse of that radius, keypoints
+/// rounded to a pixel) counts as on it: a blob centred just outside the outline still describes
+/// the object. `ratio`: the ratio test's bound (0.65 in the thesis); as in the whole frame, a
+/// single keypoint on the object cannot pass it. Throws
 /// std::invalid_argument for a bad mask, `object` not in `database`, margin_px < 0, or
 /// descriptors of another width than the database's.
 MatchesOnObject MatchOnObject(const objects::FeatureDatabase& database, int object,

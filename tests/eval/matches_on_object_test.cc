@@ -32,6 +32,7 @@ TEST(MatchOnObject, ClutterThatSpoilsTheWholeFramesRatioTestIsLeftOut) {
   Add(f, 15, 15, (cv::Mat_<float>(1, 4) << 1, 0.3f, 0, 0));   // on the object, 0.3 from A
   Add(f, 60, 40, (cv::Mat_<float>(1, 4) << 1, 0, 0.35f, 0));  // clutter, 0.35 from A
   Add(f, 20, 25, (cv::Mat_<float>(1, 4) << 0, 0, 0, 1));      // on the object, √2 from A
+  Add(f, 60, 45, (cv::Mat_<float>(1, 4) << 0, 1, 0, 0.1f));   // clutter, 0.1 from B, 1.42 from A
   // The whole frame: 0.3 / 0.35 > 0.65, no match.
   EXPECT_EQ(db.Match(f.descriptors, 0.65).matches_per_object[0], 0);
   // The object's own keypoints: 0.3 / √2 < 0.65.
@@ -39,7 +40,8 @@ TEST(MatchOnObject, ClutterThatSpoilsTheWholeFramesRatioTestIsLeftOut) {
   EXPECT_EQ(a.keypoints, 2);
   EXPECT_EQ(a.matches, 1);
   EXPECT_NEAR(a.mean_nearest_distance, 0.3, 1e-6);
-  // B's nearest on the object is the first keypoint, √1.49 away; √1.49 / √2 > 0.65.
+  // B's nearest on the object is the first keypoint, √1.49 away (in the frame, the clutter
+  // 0.1 away); √1.49 / √2 > 0.65.
   const MatchesOnObject b = MatchOnObject(db, 1, f, ObjectMask(), 0, 0.65);
   EXPECT_EQ(b.matches, 0);
   EXPECT_NEAR(b.mean_nearest_distance, std::sqrt(1.49), 1e-6);
@@ -52,6 +54,11 @@ TEST(MatchOnObject, AKeypointWithinTheMarginCountsAsOnTheObject) {
   Add(f, 33, 15, (cv::Mat_<float>(1, 4) << 0, 0, 1, 0));  // 4 px right of the last column, 29
   EXPECT_EQ(MatchOnObject(db, 0, f, ObjectMask(), 3, 0.65).keypoints, 1);
   EXPECT_EQ(MatchOnObject(db, 0, f, ObjectMask(), 4, 0.65).keypoints, 2);
+  // 4 px right of and below the corner (29, 29): 5.7 px away, out at 4 px (a square would take
+  // it in), in at 6.
+  Add(f, 33, 33, (cv::Mat_<float>(1, 4) << 0, 0, 1, 0));
+  EXPECT_EQ(MatchOnObject(db, 0, f, ObjectMask(), 4, 0.65).keypoints, 2);
+  EXPECT_EQ(MatchOnObject(db, 0, f, ObjectMask(), 6, 0.65).keypoints, 3);
 }
 
 TEST(MatchOnObject, AnObjectWithoutKeypointsHasNoDistance) {
