@@ -339,12 +339,9 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
                                " is not the size of its RGB image");
     for (int k = 0; k < db.objects(); ++k) {
       int visible = 0;
-      cv::Mat on_object(ids.size(), CV_8UC1, cv::Scalar(0));
-      if (const auto id = ids_by_name.find(names[std::size_t(k)]); id != ids_by_name.end())
-        for (int i : id->second) {
-          visible += eval::VisiblePixels(ids, i);
-          on_object |= ids == i;
-        }
+      const auto id = ids_by_name.find(names[std::size_t(k)]);
+      if (id != ids_by_name.end())
+        for (int i : id->second) visible += eval::VisiblePixels(ids, i);
       const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
       const objects::ObjectEvidence& ed = rd.per_object[std::size_t(k)];
       const int nearest_score =  // 0 when not computed
@@ -358,9 +355,12 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
                            ed.pose.verified ? ed.pose.inliers : 0, nearest_score},
                           {}});
       RecognitionRow& row = run.rows.back();
-      if (on_object_diagnostic && visible >= a.min_visible)
+      if (on_object_diagnostic && visible >= a.min_visible) {  // visible: the object has ids
+        cv::Mat on_object(ids.size(), CV_8UC1, cv::Scalar(0));
+        for (int i : id->second) on_object |= ids == i;
         row.on_object =
             eval::MatchOnObject(db, k, features, on_object, kOnObjectMarginPx, thesis.match_ratio);
+      }
       csv << frame.index << ',' << k << ',' << names[std::size_t(k)] << ',' << visible << ','
           << (visible >= a.min_visible);
       for (int score : row.scores) csv << ',' << score;
