@@ -165,10 +165,13 @@ void CObjectDatabaseMap::saveMetricMapRepresentationToFile(const std::string& pr
   SaveToFile(prefix + ".object_database");
 }
 
-// Map file, version 0: every option by key (option_table.h); the object count; the descriptors
+// Map file, version 1: every option by key (option_table.h); the object count; the descriptors
 // (rows, width, floats); per feature its counts (object, n) and its 3-D place; per object where it
-// was learnt.
-uint8_t CObjectDatabaseMap::serializeGetVersion() const { return 0; }
+// was learnt; per feature its learnt keypoint's orientation and metric size (NaN unknown).
+// Version 0 ends before the keypoints: they read as unknown.
+uint8_t CObjectDatabaseMap::serializeGetVersion() const {
+  return 1;
+}
 
 void CObjectDatabaseMap::serializeTo(mrpt::serialization::CArchive& out) const {
   ObjectDatabaseMapConfig::Table().Write(out, config_);
@@ -182,11 +185,12 @@ void CObjectDatabaseMap::serializeTo(mrpt::serialization::CArchive& out) const {
   }
   for (int h = 0; h < d.rows; ++h) WriteVector(out, db.Position(h));
   for (const Eigen::Vector3d& at : learntAt()) WriteVector(out, at);
+  for (int h = 0; h < d.rows; ++h) out << db.Keypoint(h).angle_deg << db.Keypoint(h).size_m;
 }
 
 void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-  if (version > 0)
-    Corrupt("format version " + std::to_string(version) + ", newer than this program's (0)");
+  if (version > 1)
+    Corrupt("format version " + std::to_string(version) + ", newer than this program's (1)");
   ObjectDatabaseMapConfig config;
   ObjectDatabaseMapConfig::Table().Read(in, config);
   int32_t objects = 0, rows = 0, cols = 0;
@@ -220,10 +224,15 @@ void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
   std::vector<Eigen::Vector3d> positions, learnt_at;
   for (int h = 0; h < rows; ++h) positions.push_back(ReadVector(in));
   for (int k = 0; k < objects; ++k) learnt_at.push_back(ReadVector(in));
+  std::vector<objects::LearntKeypoint> keypoints;
+  for (int h = 0; version >= 1 && h < rows; ++h) {
+    keypoints.emplace_back();
+    in >> keypoints.back().angle_deg >> keypoints.back().size_m;
+  }
   auto acquisition = std::make_unique<objects::ObjectAcquisition>(config.map);
   try {
     acquisition->learner().database() =
-        objects::FeatureDatabase::FromParts(objects, d, counts, positions);
+        objects::FeatureDatabase::FromParts(objects, d, counts, positions, keypoints);
   } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
     Corrupt(e.what());
   }

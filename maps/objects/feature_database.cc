@@ -13,7 +13,8 @@ constexpr int kMaxCount = 1 << 30;
 }  // namespace
 
 void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
-                                  const std::vector<Eigen::Vector3d>& positions) {
+                                  const std::vector<Eigen::Vector3d>& positions,
+                                  const std::vector<LearntKeypoint>& keypoints) {
   if (object < 0 || object >= objects_)
     throw std::invalid_argument("FeatureDatabase::AddFeatures: object " + std::to_string(object) +
                                 " of " + std::to_string(objects_));
@@ -26,18 +27,24 @@ void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
     throw std::invalid_argument("FeatureDatabase::AddFeatures: " +
                                 std::to_string(positions.size()) + " positions for " +
                                 std::to_string(descriptors.rows) + " descriptors");
+  if (!keypoints.empty() && int(keypoints.size()) != descriptors.rows)
+    throw std::invalid_argument(
+        "FeatureDatabase::AddFeatures: " + std::to_string(keypoints.size()) + " keypoints for " +
+        std::to_string(descriptors.rows) + " descriptors");
   descriptors_.push_back(descriptors);
   for (int i = 0; i < descriptors.rows; ++i) {
     n_.push_back({{object, 1}});  // eq. 5.6, 5.7
     positions_.push_back(positions.empty() ? Eigen::Vector3d::Constant(
                                                  std::numeric_limits<double>::quiet_NaN())
                                            : positions[std::size_t(i)]);
+    keypoints_.push_back(keypoints.empty() ? LearntKeypoint() : keypoints[std::size_t(i)]);
   }
 }
 
 FeatureDatabase FeatureDatabase::FromParts(int objects, const cv::Mat& descriptors,
                                            const Counts& counts,
-                                           const std::vector<Eigen::Vector3d>& positions) {
+                                           const std::vector<Eigen::Vector3d>& positions,
+                                           const std::vector<LearntKeypoint>& keypoints) {
   const auto fail = [](const std::string& what) {
     throw std::invalid_argument("feature database: " + what);
   };
@@ -47,6 +54,8 @@ FeatureDatabase FeatureDatabase::FromParts(int objects, const cv::Mat& descripto
   if (counts.size() != n || positions.size() != n)
     fail(std::to_string(n) + " descriptors, " + std::to_string(counts.size()) + " count lists, " +
          std::to_string(positions.size()) + " positions");
+  if (!keypoints.empty() && keypoints.size() != n)
+    fail(std::to_string(n) + " descriptors, " + std::to_string(keypoints.size()) + " keypoints");
   for (std::size_t h = 0; h < n; ++h) {
     if (counts[h].empty()) fail("feature " + std::to_string(h) + " belongs to no object");
     for (std::size_t a = 0; a < counts[h].size(); ++a)
@@ -65,12 +74,18 @@ FeatureDatabase FeatureDatabase::FromParts(int objects, const cv::Mat& descripto
   db.descriptors_ = descriptors.clone();
   db.n_ = counts;
   db.positions_ = positions;
+  db.keypoints_ = keypoints.empty() ? std::vector<LearntKeypoint>(n) : keypoints;
   return db;
 }
 
 const Eigen::Vector3d& FeatureDatabase::Position(int h) const {
   CheckFeature(h);
   return positions_[std::size_t(h)];
+}
+
+const LearntKeypoint& FeatureDatabase::Keypoint(int h) const {
+  CheckFeature(h);
+  return keypoints_[std::size_t(h)];
 }
 
 void FeatureDatabase::CheckFeature(int h) const {
@@ -104,10 +119,14 @@ int FeatureDatabase::MostProbableObject(int h) const {
 
 FeatureDatabase::Recognition FeatureDatabase::Match(
     const cv::Mat& selected, double ratio, const std::vector<cv::KeyPoint>* keypoints) const {
+  return Tally(keypoints ? RatioMatches(descriptors_, selected, ratio, *keypoints)
+                         : RatioMatches(descriptors_, selected, ratio));
+}
+
+FeatureDatabase::Recognition FeatureDatabase::Tally(std::vector<RatioMatch> matches) const {
   Recognition r;
   r.matches_per_object.assign(std::size_t(objects_), 0);
-  r.matches = keypoints ? RatioMatches(descriptors_, selected, ratio, *keypoints)
-                        : RatioMatches(descriptors_, selected, ratio);
+  r.matches = std::move(matches);
   for (const RatioMatch& m : r.matches) ++r.matches_per_object[std::size_t(MostProbableObject(m.reference))];
   int best = 0;
   for (int k = 0; k < objects_; ++k) {  // eq. 5.4

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/eigen_abi.h"
+#include "maps/objects/keypoint_consistency.h"
 #include "maps/objects/ratio_matches.h"
 
 namespace novelty::objects {
@@ -39,10 +40,12 @@ class FeatureDatabase {
   int AddObject() { return objects_++; }
   /// Adds the rows of `descriptors` (CV_32F, the database's width) as features learnt on
   /// `object` (eq. 5.6, 5.7), with their 3-D positions (world frame, where the object stood when
-  /// they were learnt; NaN or none given: unknown). Throws std::invalid_argument for an unknown
-  /// object, bad rows or a position count that is not the row count.
+  /// they were learnt; NaN or none given: unknown) and their keypoints' orientation and metric
+  /// size (keypoint_consistency.h; none given: unknown). Throws std::invalid_argument for an
+  /// unknown object, bad rows or a position or keypoint count that is not the row count.
   void AddFeatures(const cv::Mat& descriptors, int object,
-                   const std::vector<Eigen::Vector3d>& positions = {});
+                   const std::vector<Eigen::Vector3d>& positions = {},
+                   const std::vector<LearntKeypoint>& keypoints = {});
 
   /// Matches the selected features' descriptors against the database and updates the counts
   /// (eq. 5.4 and the n_{h,M} increments). `ratio`: the thesis's 0.65.
@@ -54,6 +57,9 @@ class FeatureDatabase {
   /// longer learns (the thesis's I3).
   Recognition Match(const cv::Mat& selected, double ratio = 0.65,
                     const std::vector<cv::KeyPoint>* keypoints = nullptr) const;
+  /// N_k and c of eq. 5.4 for given matches (reference = database feature): what Match counts,
+  /// for a subset of its matches. Throws std::out_of_range for a reference not in the database.
+  Recognition Tally(std::vector<RatioMatch> matches) const;
 
   /// n_{h,k}.
   int Count(int h, int k) const;
@@ -63,14 +69,19 @@ class FeatureDatabase {
   int MostProbableObject(int h) const;
   /// Feature h's position (world frame where it was learnt); NaN if unknown.
   const Eigen::Vector3d& Position(int h) const;
+  /// Feature h's keypoint when it was learnt (NaN members: unknown).
+  const LearntKeypoint& Keypoint(int h) const;
 
   /// Per feature its non-zero counts (object, n_{h,k}), for saving.
   using Counts = std::vector<std::vector<std::pair<int, int>>>;
   const Counts& counts() const { return n_; }
-  /// A database from what a saved one held. Throws std::invalid_argument naming what is
-  /// inconsistent (widths, counts per feature, objects out of range, counts < 1).
+  /// A database from what a saved one held (`keypoints` empty: all unknown, as in files written
+  /// before they were kept). Throws std::invalid_argument naming what is inconsistent (widths,
+  /// counts per feature, objects out of range, counts < 1, a keypoint count that is not the
+  /// feature count).
   static FeatureDatabase FromParts(int objects, const cv::Mat& descriptors, const Counts& counts,
-                                   const std::vector<Eigen::Vector3d>& positions);
+                                   const std::vector<Eigen::Vector3d>& positions,
+                                   const std::vector<LearntKeypoint>& keypoints = {});
 
  private:
   void CheckFeature(int h) const;
@@ -78,6 +89,7 @@ class FeatureDatabase {
   cv::Mat descriptors_;                               // DF, one row per feature
   Counts n_;                                          // per feature: (object, n_{h,k} > 0)
   std::vector<Eigen::Vector3d> positions_;            // per feature, NaN unknown
+  std::vector<LearntKeypoint> keypoints_;             // per feature, NaN unknown
   int objects_ = 0;
 };
 

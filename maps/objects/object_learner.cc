@@ -95,14 +95,17 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus, const Selected
   if (step.object >= 0) {
     cv::Mat learnt;
     std::vector<Eigen::Vector3d> positions;
+    std::vector<LearntKeypoint> keypoints;
     for (int i : on_surprise) {
       if (in_database[std::size_t(i)]) continue;
       learnt.push_back(f.descriptors.row(i));
       const std::optional<Eigen::Vector3d>& p = f.p_cam[std::size_t(i)];
       positions.push_back(p ? Eigen::Vector3d(T_world_cam * *p)
                             : Eigen::Vector3d::Constant(std::nan("")));
+      keypoints.push_back(
+          ToLearntKeypoint(f.keypoints[std::size_t(i)], p ? p->z() : std::nan(""), camera));
     }
-    if (!learnt.empty()) database_.AddFeatures(learnt, step.object, positions);
+    if (!learnt.empty()) database_.AddFeatures(learnt, step.object, positions, keypoints);
     step.learnt = learnt.rows;
     learning_object_ = step.object;
   }

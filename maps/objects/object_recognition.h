@@ -14,6 +14,7 @@
 #include "core/eigen_abi.h"
 #include "core/pinhole_camera.h"
 #include "maps/objects/feature_database.h"
+#include "maps/objects/keypoint_consistency.h"
 #include "maps/objects/object_pose_verification.h"
 
 namespace novelty::objects {
@@ -51,18 +52,27 @@ struct ObjectRecognitionOptions {
   /// 0: the ratio matches, and only objects that have some (eq. 5.4's matches verified).
   int verify_nearest = 0;
   PoseVerificationOptions verification;
+  /// Count only matches whose keypoint agrees with the learnt one's orientation and metric size
+  /// (keypoint_consistency.h); they are also the matches verified. Not enabled: the thesis.
+  KeypointConsistencyOptions consistency;
 };
 
 struct FrameFeatures {
   std::vector<cv::KeyPoint> keypoints;
   cv::Mat descriptors;  ///< CV_32F, one row per keypoint
+  /// Per keypoint its size in metres (MetricSizes; NaN unknown), or empty: all unknown.
+  std::vector<double> metric_sizes;
 };
 
-/// The features of a whole frame, `grey` CV_8UC1.
-FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor);
+/// The features of a whole frame, `grey` CV_8UC1; with `depth` (CV_32FC1 metres, may be empty)
+/// also their metric sizes.
+FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor,
+                                   const cv::Mat& depth = cv::Mat(),
+                                   const core::PinholeCamera& camera = {});
 
 /// Matches a frame's features with `database` (counts unchanged). Throws std::invalid_argument
-/// for a descriptor width that is not the database's.
+/// for a descriptor width that is not the database's, metric sizes that are not one per
+/// keypoint, or bad options.
 FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDatabase& database,
                               const core::PinholeCamera& camera,
                               const ObjectRecognitionOptions& options = {});

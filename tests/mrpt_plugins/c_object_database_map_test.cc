@@ -152,9 +152,16 @@ TEST(CObjectDatabaseMap, SavedAndLoadedItIsTheSameDatabase) {
   EXPECT_EQ(cv::norm(loaded.database().descriptors(), p.objects.database().descriptors(),
                      cv::NORM_INF),
             0.0);
-  for (int h = 0; h < loaded.database().features(); ++h)
+  for (int h = 0; h < loaded.database().features(); ++h) {
     EXPECT_EQ(loaded.database().counts()[std::size_t(h)],
               p.objects.database().counts()[std::size_t(h)]);
+    // The learnt keypoints (keypoint_consistency.h): known from RGB-D and kept in the file.
+    const objects::LearntKeypoint& a = loaded.database().Keypoint(h);
+    const objects::LearntKeypoint& b = p.objects.database().Keypoint(h);
+    EXPECT_TRUE(std::isfinite(b.angle_deg) && b.size_m > 0.0) << h;
+    EXPECT_EQ(a.angle_deg, b.angle_deg);
+    EXPECT_EQ(a.size_m, b.size_m);
+  }
   EXPECT_EQ(loaded.asString(), p.objects.asString());
   // A truncated file and a foreign one: clear errors naming the file, the map kept.
   fs::resize_file(file, fs::file_size(file) / 2);
@@ -212,6 +219,27 @@ TEST(CObjectDatabaseMap, AFileWhoseDescriptorsAreNotItsExtractorsIsRefused) {
   auto in3 = mrpt::serialization::archiveFrom(short_file);
   EXPECT_ANY_THROW(reader.serializeFrom(in3, 0));
   EXPECT_EQ(reader.database().features(), 0);
+}
+
+// A file of format version 0 has no learnt keypoints: it is read, with them unknown.
+TEST(CObjectDatabaseMap, AVersionZeroFileReadsWithUnknownKeypoints) {
+  mrpt::io::CMemoryStream buffer;
+  auto out = mrpt::serialization::archiveFrom(buffer);
+  ObjectDatabaseMapConfig::Table().Write(out, ObjectDatabaseMapConfig());
+  out << int32_t(1) << int32_t(1) << int32_t(64);  // one object, one 64-wide M-SURF descriptor
+  const std::vector<float> descriptor(64, 0.125f);
+  out.WriteBufferFixEndianness(descriptor.data(), descriptor.size());
+  out << uint32_t(1) << int32_t(0) << int32_t(3);            // n = 3 on object 0
+  for (double v : {0.1, 0.2, 0.8, 0.0, 0.0, 0.7}) out << v;  // its place; the object's
+  buffer.Seek(0);
+  auto in = mrpt::serialization::archiveFrom(buffer);
+  FileReader reader;
+  reader.serializeFrom(in, 0);
+  ASSERT_EQ(reader.database().features(), 1);
+  EXPECT_EQ(reader.database().Count(0, 0), 3);
+  EXPECT_DOUBLE_EQ(reader.database().Position(0).z(), 0.8);
+  EXPECT_TRUE(std::isnan(reader.database().Keypoint(0).angle_deg));
+  EXPECT_TRUE(std::isnan(reader.database().Keypoint(0).size_m));
 }
 
 // Objects added to the database by hand have no place they were learnt from.

@@ -86,6 +86,31 @@ TEST(FeatureDatabase, BadUseIsRejected) {
   EXPECT_THROW(db.AddFeatures(Descriptors(2, 1), 0, {Eigen::Vector3d::Zero()}),
                std::invalid_argument)
       << "one position for two features";
+  EXPECT_THROW(db.AddFeatures(Descriptors(2, 1), 0, {}, {LearntKeypoint()}), std::invalid_argument)
+      << "one keypoint for two features";
+}
+
+// Tally counts N_k and c of eq. 5.4 as Match does, for any subset of its matches.
+TEST(FeatureDatabase, TallyCountsASubsetOfMatchesAsMatchDoes) {
+  FeatureDatabase db;
+  const cv::Mat cup = Descriptors(5, 3), box = Descriptors(4, 4);
+  db.AddFeatures(cup, db.AddObject());
+  db.AddFeatures(box, db.AddObject());
+  cv::Mat seen;
+  cv::vconcat(Perturbed(cup.rowRange(0, 2), 0.02, 5), Perturbed(box.rowRange(0, 3), 0.02, 6), seen);
+  const FeatureDatabase::Recognition all = db.Match(seen);
+  ASSERT_EQ(all.matches_per_object, std::vector<int>({2, 3}));
+  EXPECT_EQ(all.object, 1);
+  const FeatureDatabase::Recognition same = db.Tally(all.matches);
+  EXPECT_EQ(same.matches_per_object, all.matches_per_object);
+  EXPECT_EQ(same.object, 1);
+  std::vector<RatioMatch> cup_only;
+  for (const RatioMatch& m : all.matches)
+    if (m.reference < 5) cup_only.push_back(m);
+  const FeatureDatabase::Recognition subset = db.Tally(cup_only);
+  EXPECT_EQ(subset.matches_per_object, std::vector<int>({2, 0}));
+  EXPECT_EQ(subset.object, 0);
+  EXPECT_EQ(db.Tally({}).object, -1);
 }
 
 // A database rebuilt from its parts (what a map file holds) is the same database, and parts that
@@ -107,6 +132,18 @@ TEST(FeatureDatabase, RebuiltFromItsPartsItIsTheSame) {
   EXPECT_EQ(copy.Count(0, 0), 2);
   EXPECT_EQ(copy.Position(1), Eigen::Vector3d(0, 0.1, 1));
   EXPECT_TRUE(std::isnan(copy.Position(6).x())) << "learnt without a position";
+  EXPECT_TRUE(std::isnan(copy.Keypoint(6).angle_deg)) << "rebuilt without keypoints";
+  LearntKeypoint k;
+  k.angle_deg = 30;
+  k.size_m = 0.02;
+  const FeatureDatabase with =
+      FeatureDatabase::FromParts(1, Descriptors(1, 9), {{{0, 1}}}, {Eigen::Vector3d::Zero()}, {k});
+  EXPECT_EQ(with.Keypoint(0).angle_deg, 30);
+  EXPECT_EQ(with.Keypoint(0).size_m, 0.02);
+  EXPECT_THROW(FeatureDatabase::FromParts(1, Descriptors(1, 9), {{{0, 1}}},
+                                          {Eigen::Vector3d::Zero()}, {k, k}),
+               std::invalid_argument)
+      << "two keypoints for one feature";
 
   const std::vector<Eigen::Vector3d> one(1, Eigen::Vector3d::Zero());
   const cv::Mat d = Descriptors(1, 9);

@@ -33,8 +33,12 @@ FeatureDatabase Learn(cv::Feature2D& extractor, bool two_objects) {
     cv::Mat d;
     extractor.detectAndCompute(Print(seed), cv::noArray(), k, d);
     std::vector<Eigen::Vector3d> places;
-    for (const cv::KeyPoint& p : k) places.push_back(kCamera.RayCam(p.pt.x, p.pt.y));  // z = 1
-    db.AddFeatures(d, db.AddObject(), places);
+    std::vector<LearntKeypoint> learnt;
+    for (const cv::KeyPoint& p : k) {
+      places.push_back(kCamera.RayCam(p.pt.x, p.pt.y));  // z = 1
+      learnt.push_back(ToLearntKeypoint(p, 1.0, kCamera));
+    }
+    db.AddFeatures(d, db.AddObject(), places, learnt);
   }
   return db;
 }
@@ -173,6 +177,43 @@ TEST(ObjectRecognition, APoseThatCollapsesTheObjectOntoOneClusterOfKeypointsIsNo
                        kCamera, four)
           .verified)
       << "the pose check alone accepts the collapse: the count of places is what refuses it";
+}
+
+// The learnt keypoints' check (keypoint_consistency.h): the print turned upside down still
+// matches M-SURF's rotation-invariant descriptors, but not the learnt orientations; seen at twice
+// the depth with its blobs the same size in pixels (a print twice as large), not the learnt
+// metric sizes. Unturned at the learnt depth, or without depth, the matches stay.
+TEST(ObjectRecognition, ConsistentKeypointsRejectATurnedPrintAndOneOfAnotherSize) {
+  cv::Ptr<cv::Feature2D> extractor = CreateFeatureExtractor(FeatureExtractor::kMSurf);
+  const FeatureDatabase db = Learn(*extractor, false);
+  ObjectRecognitionOptions consistent;
+  consistent.consistency.enabled = true;
+  const cv::Mat at_1m(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(1.0f));
+  const auto matches = [&](const cv::Mat& grey, const cv::Mat& depth,
+                           const ObjectRecognitionOptions& options) {
+    return MatchObjects(ExtractFrameFeatures(grey, *extractor, depth, kCamera), db, kCamera,
+                        options)
+        .per_object[0]
+        .matches;
+  };
+  cv::Mat turned;
+  cv::rotate(Print(1), turned, cv::ROTATE_180);
+  const int all = matches(Print(1), at_1m, {});
+  ASSERT_GE(all, db.features() / 2);
+  EXPECT_GE(matches(Print(1), at_1m, consistent), all * 9 / 10);
+  EXPECT_GE(matches(Print(1), cv::Mat(), consistent), all * 9 / 10);
+  const int turned_all = matches(turned, at_1m, {});
+  ASSERT_GE(turned_all, db.features() / 4) << "M-SURF matches the turned print";
+  EXPECT_LE(matches(turned, at_1m, consistent), turned_all / 20);
+  EXPECT_LE(matches(Print(1), 2.0 * at_1m, consistent), all / 20);
+  // The matches kept are the ones counted: FrameRecognition's list agrees with N_k.
+  const FrameRecognition r = MatchObjects(ExtractFrameFeatures(turned, *extractor, at_1m, kCamera),
+                                          db, kCamera, consistent);
+  EXPECT_EQ(int(r.matches.size()), r.per_object[0].matches);
+  // Metric sizes that are not one per keypoint are refused.
+  FrameFeatures bad = ExtractFrameFeatures(Print(1), *extractor, at_1m, kCamera);
+  bad.metric_sizes.pop_back();
+  EXPECT_THROW(MatchObjects(bad, db, kCamera, consistent), std::invalid_argument);
 }
 
 TEST(ObjectRecognition, ADatabaseOfAnotherWidthIsAClearError) {

@@ -1,0 +1,61 @@
+#include "maps/objects/keypoint_consistency.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace novelty::objects {
+
+double MetricSize(const cv::KeyPoint& keypoint, double depth, const core::PinholeCamera& camera) {
+  if (!(std::isfinite(depth) && depth > 0.0)) return std::nan("");
+  return double(keypoint.size) * depth / camera.fx;
+}
+
+std::vector<double> MetricSizes(const std::vector<cv::KeyPoint>& keypoints, const cv::Mat& depth,
+                                const core::PinholeCamera& camera) {
+  if (!depth.empty() && depth.type() != CV_32FC1)
+    throw std::invalid_argument("MetricSizes: the depth image must be CV_32FC1");
+  std::vector<double> sizes(keypoints.size(), std::nan(""));
+  if (depth.empty()) return sizes;
+  for (std::size_t i = 0; i < keypoints.size(); ++i) {
+    const int u = int(std::lround(keypoints[i].pt.x)), v = int(std::lround(keypoints[i].pt.y));
+    if (u >= 0 && v >= 0 && u < depth.cols && v < depth.rows)
+      sizes[i] = MetricSize(keypoints[i], depth.at<float>(v, u), camera);
+  }
+  return sizes;
+}
+
+LearntKeypoint ToLearntKeypoint(const cv::KeyPoint& keypoint, double depth,
+                                const core::PinholeCamera& camera) {
+  LearntKeypoint k;
+  if (keypoint.angle >= 0.0f) k.angle_deg = keypoint.angle;
+  k.size_m = MetricSize(keypoint, depth, camera);
+  return k;
+}
+
+bool ConsistentKeypoint(const LearntKeypoint& learnt, const cv::KeyPoint& seen, double seen_size_m,
+                        const KeypointConsistencyOptions& options) {
+  if (!options.enabled) return true;
+  if (std::isfinite(learnt.angle_deg) && seen.angle >= 0.0f) {
+    const double d = std::fmod(std::abs(double(seen.angle) - learnt.angle_deg), 360.0);
+    if (std::min(d, 360.0 - d) > options.max_angle_deg) return false;
+  }
+  if (std::isfinite(learnt.size_m) && std::isfinite(seen_size_m) && learnt.size_m > 0.0 &&
+      seen_size_m > 0.0) {
+    if (std::abs(std::log(seen_size_m / learnt.size_m)) > std::log(options.max_size_ratio))
+      return false;
+  }
+  return true;
+}
+
+void CheckKeypointConsistencyOptions(const KeypointConsistencyOptions& options) {
+  if (!(options.max_angle_deg > 0.0 && options.max_angle_deg <= 180.0))
+    throw std::invalid_argument(
+        "KeypointConsistencyOptions: max_angle_deg must be in (0, 180], got " +
+        std::to_string(options.max_angle_deg));
+  if (!(options.max_size_ratio >= 1.0 && std::isfinite(options.max_size_ratio)))
+    throw std::invalid_argument("KeypointConsistencyOptions: max_size_ratio must be >= 1, got " +
+                                std::to_string(options.max_size_ratio));
+}
+
+}  // namespace novelty::objects
