@@ -3,7 +3,7 @@
 //
 //   novelty-objects --learnt LEARN --learn-groundtruth DIR --rawlog I3.rawlog --groundtruth DIR
 //                   --out OUT [--min-visible-pixels 400] [--frames N] [--panels-every K]
-//                   [--verify-nearest 2]
+//                   [--verify-nearest 2] [--consistent-angle 20] [--consistent-size-ratio 1.3]
 //                   [--baseline-map I1.map --learn-rawlog I1I2.rawlog [--baseline-from 361]]
 //
 // LEARN is novelty-run's output folder of the learning run (objects.csv, map.object_database),
@@ -17,11 +17,11 @@
 //                          that agree on a pose (verified), the same with the ratio test's
 //                          distinct second, the places where the features' K nearest keypoints
 //                          agree on a pose (verified_nearest), the matches whose keypoints agree
-//                          in orientation and metric size with the learnt ones
-//                          (matches_consistent, keypoint_consistency.h), visible (fig. 5.5 a,
-//                          b); where
-//                          visible, the keypoints on the object (ground truth), N_k among them
-//                          alone and the mean nearest distance (eval/matches_on_object.h)
+//                          in orientation and metric size with the learnt ones within
+//                          --consistent-angle and --consistent-size-ratio (matches_consistent,
+//                          keypoint_consistency.h), visible (fig. 5.5 a, b); where visible, the
+//                          keypoints on the object (ground truth), N_k among them alone and the
+//                          mean nearest distance (eval/matches_on_object.h)
 //   OUT/findings.csv       finding,value,target,holds — the ROC over (frame, object) decisions
 //                          sweeping the matches required (fig. 5.5 d), TPR at FPR 0.3/1/5 %, AUC,
 //                          each object's TPR and false positives at the FPR 0.3 % threshold,
@@ -75,6 +75,7 @@ struct Args {
   std::string baseline_map, learn_rawlog;  // the baseline's I1 map and I2 rawlog
   int baseline_from = 361;
   int verify_nearest = 2;
+  objects::KeypointConsistencyOptions consistency;  // the score "matches of consistent keypoints"
 };
 
 // One row of novelty-run's objects.csv (eval/object_steps_csv.h).
@@ -307,12 +308,23 @@ struct RecognitionRun {
   std::vector<eval::Roc> rocs;
   std::vector<int> panels;  // frames whose panel was written
   int frames = 0, skipped = 0;
+  // Per ratio match, how its keypoint turned and changed metric size from the learnt one's
+  // (keypoint_consistency.h): [1] for matches on the object of their feature's class (ground
+  // truth), [0] elsewhere. What the tolerances of "matches of consistent keypoints" rest on.
+  std::vector<double> turn_deg[2], size_ratio[2];
 };
+
+// Median and 95th percentile of `v` ("-" if empty).
+std::string MedianAnd95(std::vector<double> v, const char* format) {
+  if (v.empty()) return "-";
+  std::sort(v.begin(), v.end());
+  const auto at = [&](double q) { return Num(v[std::size_t(q * double(v.size() - 1))], format); };
+  return at(0.5) + " / " + at(0.95) + " (" + std::to_string(v.size()) + ")";
+}
 
 RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
                               const std::vector<std::string>& names, cv::Feature2D& extractor,
-                              const objects::ObjectRecognitionOptions& thesis,
-                              const objects::KeypointConsistencyOptions& consistency, const Args& a,
+                              const objects::ObjectRecognitionOptions& thesis, const Args& a,
                               const sim::GroundTruthReader& truth, const std::string& csv_path,
                               const std::string& panels, bool on_object_diagnostic) {
   std::map<std::string, std::vector<int>> ids_by_name;  // names may repeat ("mug", "mug")
@@ -321,10 +333,6 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
   distinct.distinct_second = true;
   objects::ObjectRecognitionOptions nearest = thesis;
   nearest.verify_nearest = a.verify_nearest;
-  objects::ObjectRecognitionOptions consistent = thesis;
-  consistent.consistency = consistency;
-  consistent.consistency.enabled = true;
-  consistent.verify = false;
   RecognitionRun run;
   std::ofstream csv(csv_path);
   csv << "frame,object,name,visible_pixels,visible";
@@ -343,8 +351,8 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
     const objects::FrameRecognition rn =
         nearest.verify_nearest > 0 ? objects::MatchObjects(features, db, frame.camera, nearest)
                                    : objects::FrameRecognition{};
-    const objects::FrameRecognition rc =
-        objects::MatchObjects(features, db, frame.camera, consistent);
+    const objects::FeatureDatabase::Recognition consistent =
+        objects::KeepConsistentMatches(db, features, a.consistency, r.matches);
     const cv::Mat ids = truth.Ids(frame.index);
     if (ids.empty())
       throw std::runtime_error(a.truth + ": no ids image for frame " + std::to_string(frame.index));
@@ -358,6 +366,22 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
         for (int i : id->second) visible += eval::VisiblePixels(ids, i);
       const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
       const objects::ObjectEvidence& ed = rd.per_object[std::size_t(k)];
+      for (const objects::RatioMatch& m : r.matches) {
+        if (db.MostProbableObject(m.reference) != k) continue;
+        const std::size_t c = std::size_t(m.candidate);
+        const cv::Point2f& p = features.keypoints[c].pt;
+        const int at = ids.at<int>(std::clamp(int(std::lround(p.y)), 0, ids.rows - 1),
+                                   std::clamp(int(std::lround(p.x)), 0, ids.cols - 1));
+        const bool on =
+            id != ids_by_name.end() && std::count(id->second.begin(), id->second.end(), at) > 0;
+        const objects::LearntKeypoint& learnt = db.Keypoint(m.reference);
+        const double turn = objects::TurnDeg(learnt, features.keypoints[c]),
+                     ratio = objects::SizeRatio(learnt, features.metric_sizes.empty()
+                                                            ? std::nan("")
+                                                            : features.metric_sizes[c]);
+        if (std::isfinite(turn)) run.turn_deg[on].push_back(turn);
+        if (std::isfinite(ratio)) run.size_ratio[on].push_back(ratio);
+      }
       const int nearest_score =  // 0 when not computed
           rn.per_object.empty() || !rn.per_object[std::size_t(k)].pose.verified
               ? 0
@@ -367,7 +391,7 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
                           visible,
                           {e.matches, e.pose.verified ? e.pose.inliers : 0, ed.matches,
                            ed.pose.verified ? ed.pose.inliers : 0, nearest_score,
-                           rc.per_object[std::size_t(k)].matches},
+                           consistent.matches_per_object[std::size_t(k)]},
                           {}});
       RecognitionRow& row = run.rows.back();
       if (on_object_diagnostic && visible >= a.min_visible) {  // visible: the object has ids
@@ -476,7 +500,8 @@ Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth,
     const cv::Mat& descriptors = features.descriptors;
     cv::Mat learnt;
     std::vector<Eigen::Vector3d> places;
-    std::vector<objects::LearntKeypoint> learnt_keypoints;  // as the learner keeps them
+    std::vector<objects::LearntKeypoint> learnt_keypoints;
+    const std::vector<double> sizes = objects::MetricSizes(keypoints, frame.depth, frame.camera);
     for (std::size_t i = 0; i < keypoints.size(); ++i) {
       const cv::Point p(int(keypoints[i].pt.x), int(keypoints[i].pt.y));
       if (!object.at<uchar>(p)) continue;
@@ -486,7 +511,7 @@ Baseline LearnBaseline(const Args& a, const sim::GroundTruthReader& truth,
           z > 0.0f ? Eigen::Vector3d(pose->second * frame.camera.Unproject(keypoints[i].pt.x,
                                                                            keypoints[i].pt.y, z))
                    : Eigen::Vector3d::Constant(std::nan("")));
-      learnt_keypoints.push_back(objects::ToLearntKeypoint(keypoints[i], z, frame.camera));
+      learnt_keypoints.push_back(objects::ToLearntKeypoint(keypoints[i], sizes[i]));
     }
     if (learnt.empty()) continue;
     if (!class_of_id.count(view.id)) {
@@ -544,17 +569,46 @@ Args Parse(int argc, char** argv) {
       "without the ratio test, that agree on the object's pose (default 2; 0: not computed, "
       "scored 0)",
       false, 2, "K", cmd);
+  const objects::KeypointConsistencyOptions defaults;
+  TCLAP::ValueArg<double> consistent_angle(
+      "", "consistent-angle",
+      "The score 'matches of consistent keypoints': degrees a match's keypoint may turn from the "
+      "learnt one's (default 20)",
+      false, defaults.max_angle_deg, "DEG", cmd);
+  TCLAP::ValueArg<double> consistent_size(
+      "", "consistent-size-ratio",
+      "The same score: factor its metric size (size x depth / fx) may differ either way "
+      "(default 1.3)",
+      false, defaults.max_size_ratio, "R", cmd);
   cmd.Parse(argc, argv);
-  Args a{learnt.getValue(),       learn_truth.getValue(),   rawlog.getValue(),
-         truth.getValue(),        out.getValue(),           min_visible.getValue(),
-         frames.getValue(),       panels.getValue(),        baseline_map.getValue(),
-         learn_rawlog.getValue(), baseline_from.getValue(), verify_nearest.getValue()};
+  Args a{learnt.getValue(),
+         learn_truth.getValue(),
+         rawlog.getValue(),
+         truth.getValue(),
+         out.getValue(),
+         min_visible.getValue(),
+         frames.getValue(),
+         panels.getValue(),
+         baseline_map.getValue(),
+         learn_rawlog.getValue(),
+         baseline_from.getValue(),
+         verify_nearest.getValue(),
+         {}};
   if (a.baseline_map.empty() != a.learn_rawlog.empty())
     throw std::invalid_argument("--baseline-map and --learn-rawlog go together");
   if (a.min_visible < 1) throw std::invalid_argument("--min-visible-pixels must be >= 1");
   if (a.frames < 0) throw std::invalid_argument("--frames must be >= 0");
   if (a.panels_every < 0) throw std::invalid_argument("--panels-every must be >= 0");
   if (a.verify_nearest < 0) throw std::invalid_argument("--verify-nearest must be >= 0");
+  a.consistency.enabled = true;
+  a.consistency.max_angle_deg = consistent_angle.getValue();
+  a.consistency.max_size_ratio = consistent_size.getValue();
+  try {
+    objects::CheckKeypointConsistencyOptions(a.consistency);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("--consistent-angle / --consistent-size-ratio: ") +
+                                e.what());
+  }
   return a;
 }
 
@@ -601,9 +655,8 @@ int main(int argc, char** argv) {
     thesis.match_ratio = options.learner.match_ratio;
     thesis.verify = true;  // N_k is the same; the pose adds the verified score
     thesis.verification = options.learner.verification;
-    const RecognitionRun run =
-        RunRecognition(db, learning.names, *extractor, thesis, map.config().consistency, a, truth,
-                       a.out + "/recognition.csv", a.out + "/panels", true);
+    const RecognitionRun run = RunRecognition(db, learning.names, *extractor, thesis, a, truth,
+                                              a.out + "/recognition.csv", a.out + "/panels", true);
     const std::vector<RecognitionRow>& rows = run.rows;
     const std::vector<eval::Roc>& rocs = run.rocs;
     const int n = run.frames;
@@ -617,9 +670,9 @@ int main(int argc, char** argv) {
       // RANSAC over some 18 000 pairs per object and frame (most of the run's time).
       Args without_nearest = a;
       without_nearest.verify_nearest = 0;
-      baseline_run = RunRecognition(baseline->db, baseline->names, *extractor, thesis,
-                                    map.config().consistency, without_nearest, truth,
-                                    a.out + "/recognition_baseline.csv", "", false);
+      baseline_run =
+          RunRecognition(baseline->db, baseline->names, *extractor, thesis, without_nearest, truth,
+                         a.out + "/recognition_baseline.csv", "", false);
     }
     const eval::Roc& roc = rocs[0];
 
@@ -665,6 +718,14 @@ int main(int argc, char** argv) {
       finding("TPR at FPR <= 1 %, " + what, Percent(r.TprAtFpr(0.01)), "(reported)", -1);
       finding("TPR at FPR <= 5 %, " + what, Percent(r.TprAtFpr(0.05)), "(reported)", -1);
       finding("AUC, " + what, Num(r.auc), "(reported)", -1);
+    }
+    // What the consistent keypoints' tolerances rest on (keypoint_consistency.h).
+    for (int on : {1, 0}) {
+      const std::string where = on ? "ratio matches on their object" : "ratio matches elsewhere";
+      finding(where + ": keypoint turn, median / 95th percentile (deg; matches)",
+              MedianAnd95(run.turn_deg[on], "%.1f"), "(diagnostic)", -1);
+      finding(where + ": metric size ratio, median / 95th percentile (matches)",
+              MedianAnd95(run.size_ratio[on], "%.2f"), "(diagnostic)", -1);
     }
     // Which objects the operating point finds: recall per object at the threshold of eq. 5.4's
     // matches that keeps FPR ≤ 0.3 %, and the false positives each object adds there.

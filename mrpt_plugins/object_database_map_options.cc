@@ -81,18 +81,6 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "verify_min_inliers",
             [](C & c) -> auto& { return c.map.learner.verification.min_inliers; },
             "matches that must agree (chosen: P3P's 3, one to choose, two against chance)")
-        .Add(
-            "consistent_keypoints", [](C & c) -> auto& { return c.consistency.enabled; },
-            "recognition counts only matches whose keypoint orientation and metric size agree "
-            "with the learnt keypoint's (false = the thesis)")
-        .Add(
-            "consistent_angle_deg", [](C & c) -> auto& { return c.consistency.max_angle_deg; },
-            "deg, orientation difference allowed (chosen: 95 % of true matches in the learning "
-            "room)")
-        .Add(
-            "consistent_size_ratio", [](C & c) -> auto& { return c.consistency.max_size_ratio; },
-            "metric size ratio allowed either way (chosen: 95 % of true matches in the learning "
-            "room)")
         .Check([](const C& c) {
           const objects::ObjectAcquisitionOptions& o = c.map;
           CheckInRange(o.learner.verification.reprojection_px, 1e-3, 100, "verify_reprojection_px");
@@ -107,8 +95,6 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
           CheckInRange(o.change.min_relative_difference, 1e-3, 10, "min_relative_depth_change");
           CheckInRange(o.change.min_known_share, 0, 1, "min_known_depth_share");
           CheckInRange(o.change.min_changed_share, 1e-3, 1, "min_changed_depth_share");
-          CheckInRange(c.consistency.max_angle_deg, 1e-3, 180, "consistent_angle_deg");
-          CheckInRange(c.consistency.max_size_ratio, 1, 1e6, "consistent_size_ratio");
         });
     return t;
   }();

@@ -3,7 +3,6 @@
 // share/object_database.ini is the dump of them (tested).
 #pragma once
 
-#include "maps/objects/keypoint_consistency.h"
 #include "maps/objects/object_acquisition.h"
 #include "mrpt_plugins/option_table.h"
 
@@ -11,8 +10,6 @@ namespace novelty::mrpt_plugins {
 
 struct ObjectDatabaseMapConfig : public TabledOptions<ObjectDatabaseMapConfig> {
   objects::ObjectAcquisitionOptions map;
-  /// Recognition (novelty-objects, MatchObjects): matches checked against the learnt keypoints.
-  objects::KeypointConsistencyOptions consistency;
 
   static const OptionTable<ObjectDatabaseMapConfig>& Table();
   static constexpr const char* kClass = "CObjectDatabaseMap";

@@ -1,5 +1,7 @@
 #include "maps/objects/feature_database.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -10,6 +12,12 @@ namespace {
 // A feature seen on every frame of a year at 30 Hz stays far below; sums over the objects of a
 // feature stay within 64 bits.
 constexpr int kMaxCount = 1 << 30;
+
+// An angle in [0, 360) and a positive finite size, each or both unknown (NaN).
+bool Valid(const LearntKeypoint& k) {
+  return (std::isnan(k.angle_deg) || (k.angle_deg >= 0.0 && k.angle_deg < 360.0)) &&
+         (std::isnan(k.size_m) || (std::isfinite(k.size_m) && k.size_m > 0.0));
+}
 }  // namespace
 
 void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
@@ -27,6 +35,10 @@ void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
     throw std::invalid_argument("FeatureDatabase::AddFeatures: " +
                                 std::to_string(positions.size()) + " positions for " +
                                 std::to_string(descriptors.rows) + " descriptors");
+  if (!std::all_of(keypoints.begin(), keypoints.end(), Valid))
+    throw std::invalid_argument(
+        "FeatureDatabase::AddFeatures: a keypoint angle outside [0, 360) "
+        "or a size that is not positive");
   if (!keypoints.empty() && int(keypoints.size()) != descriptors.rows)
     throw std::invalid_argument(
         "FeatureDatabase::AddFeatures: " + std::to_string(keypoints.size()) + " keypoints for " +
@@ -56,6 +68,11 @@ FeatureDatabase FeatureDatabase::FromParts(int objects, const cv::Mat& descripto
          std::to_string(positions.size()) + " positions");
   if (!keypoints.empty() && keypoints.size() != n)
     fail(std::to_string(n) + " descriptors, " + std::to_string(keypoints.size()) + " keypoints");
+  for (std::size_t h = 0; h < keypoints.size(); ++h)
+    if (!Valid(keypoints[h]))
+      fail("feature " + std::to_string(h) + ": a keypoint angle of " +
+           std::to_string(keypoints[h].angle_deg) + " deg or size of " +
+           std::to_string(keypoints[h].size_m) + " m");
   for (std::size_t h = 0; h < n; ++h) {
     if (counts[h].empty()) fail("feature " + std::to_string(h) + " belongs to no object");
     for (std::size_t a = 0; a < counts[h].size(); ++a)
@@ -127,10 +144,12 @@ FeatureDatabase::Recognition FeatureDatabase::Tally(std::vector<RatioMatch> matc
   Recognition r;
   r.matches_per_object.assign(std::size_t(objects_), 0);
   r.matches = std::move(matches);
-  for (const RatioMatch& m : r.matches) ++r.matches_per_object[std::size_t(MostProbableObject(m.reference))];
+  for (const RatioMatch& m : r.matches)
+    ++r.matches_per_object[std::size_t(MostProbableObject(m.reference))];
   int best = 0;
   for (int k = 0; k < objects_; ++k) {  // eq. 5.4
-    if (r.matches_per_object[std::size_t(k)] > best) best = r.matches_per_object[std::size_t(k)], r.object = k;
+    const int n = r.matches_per_object[std::size_t(k)];
+    if (n > best) best = n, r.object = k;
   }
   return r;
 }

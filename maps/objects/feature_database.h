@@ -42,7 +42,8 @@ class FeatureDatabase {
   /// `object` (eq. 5.6, 5.7), with their 3-D positions (world frame, where the object stood when
   /// they were learnt; NaN or none given: unknown) and their keypoints' orientation and metric
   /// size (keypoint_consistency.h; none given: unknown). Throws std::invalid_argument for an
-  /// unknown object, bad rows or a position or keypoint count that is not the row count.
+  /// unknown object, bad rows, a position or keypoint count that is not the row count, or a
+  /// keypoint angle outside [0, 360) or size that is not positive (NaN is unknown).
   void AddFeatures(const cv::Mat& descriptors, int object,
                    const std::vector<Eigen::Vector3d>& positions = {},
                    const std::vector<LearntKeypoint>& keypoints = {});
@@ -78,7 +79,7 @@ class FeatureDatabase {
   /// A database from what a saved one held (`keypoints` empty: all unknown, as in files written
   /// before they were kept). Throws std::invalid_argument naming what is inconsistent (widths,
   /// counts per feature, objects out of range, counts < 1, a keypoint count that is not the
-  /// feature count).
+  /// feature count, keypoints as AddFeatures refuses).
   static FeatureDatabase FromParts(int objects, const cv::Mat& descriptors, const Counts& counts,
                                    const std::vector<Eigen::Vector3d>& positions,
                                    const std::vector<LearntKeypoint>& keypoints = {});

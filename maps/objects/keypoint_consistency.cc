@@ -1,5 +1,6 @@
 #include "maps/objects/keypoint_consistency.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -8,7 +9,7 @@ namespace novelty::objects {
 
 double MetricSize(const cv::KeyPoint& keypoint, double depth, const core::PinholeCamera& camera) {
   if (!(std::isfinite(depth) && depth > 0.0)) return std::nan("");
-  return double(keypoint.size) * depth / camera.fx;
+  return double(keypoint.size) * depth / std::abs(camera.fx);
 }
 
 std::vector<double> MetricSizes(const std::vector<cv::KeyPoint>& keypoints, const cv::Mat& depth,
@@ -25,27 +26,30 @@ std::vector<double> MetricSizes(const std::vector<cv::KeyPoint>& keypoints, cons
   return sizes;
 }
 
-LearntKeypoint ToLearntKeypoint(const cv::KeyPoint& keypoint, double depth,
-                                const core::PinholeCamera& camera) {
+LearntKeypoint ToLearntKeypoint(const cv::KeyPoint& keypoint, double size_m) {
   LearntKeypoint k;
-  if (keypoint.angle >= 0.0f) k.angle_deg = keypoint.angle;
-  k.size_m = MetricSize(keypoint, depth, camera);
+  // fmod: a float just below 0 wrapped to [0, 360) can round to 360.
+  if (keypoint.angle >= 0.0f) k.angle_deg = std::fmod(double(keypoint.angle), 360.0);
+  k.size_m = size_m;
   return k;
+}
+
+double TurnDeg(const LearntKeypoint& learnt, const cv::KeyPoint& seen) {
+  if (!std::isfinite(learnt.angle_deg) || !(seen.angle >= 0.0f)) return std::nan("");
+  const double d = std::fmod(std::abs(double(seen.angle) - learnt.angle_deg), 360.0);
+  return std::min(d, 360.0 - d);
+}
+
+double SizeRatio(const LearntKeypoint& learnt, double seen_size_m) {
+  if (!(learnt.size_m > 0.0 && seen_size_m > 0.0)) return std::nan("");  // NaN fails too
+  return std::max(seen_size_m / learnt.size_m, learnt.size_m / seen_size_m);
 }
 
 bool ConsistentKeypoint(const LearntKeypoint& learnt, const cv::KeyPoint& seen, double seen_size_m,
                         const KeypointConsistencyOptions& options) {
   if (!options.enabled) return true;
-  if (std::isfinite(learnt.angle_deg) && seen.angle >= 0.0f) {
-    const double d = std::fmod(std::abs(double(seen.angle) - learnt.angle_deg), 360.0);
-    if (std::min(d, 360.0 - d) > options.max_angle_deg) return false;
-  }
-  if (std::isfinite(learnt.size_m) && std::isfinite(seen_size_m) && learnt.size_m > 0.0 &&
-      seen_size_m > 0.0) {
-    if (std::abs(std::log(seen_size_m / learnt.size_m)) > std::log(options.max_size_ratio))
-      return false;
-  }
-  return true;
+  const double turn = TurnDeg(learnt, seen), ratio = SizeRatio(learnt, seen_size_m);
+  return !(turn > options.max_angle_deg) && !(ratio > options.max_size_ratio);  // NaN passes
 }
 
 void CheckKeypointConsistencyOptions(const KeypointConsistencyOptions& options) {

@@ -24,15 +24,16 @@ struct LearntKeypoint {
 struct KeypointConsistencyOptions {
   bool enabled = false;  ///< false: every ratio match counts (the thesis)
   /// Degrees a matched keypoint's orientation may differ from the learnt one's. In the learning
-  /// room 95 % of the matches on their object differ by less than 20° (docs/experiments.md).
+  /// room of thesis 5.2, 95 % of the matches on their object turn by less than 13.4°; 20° leaves
+  /// half as much again for other views' tilt (docs/experiments.md).
   double max_angle_deg = 20.0;
-  /// Factor a matched keypoint's metric size may differ from the learnt one's, either way.
-  /// In the learning room 95 % of the matches on their object differ by less than 1.3.
+  /// Factor a matched keypoint's metric size may differ from the learnt one's, either way: 95 %
+  /// of the matches on their object there stay within 1.3.
   double max_size_ratio = 1.3;
 };
 
-/// The keypoint's diameter in metres at `depth` (metres along +Z): size · depth / fx. NaN for a
-/// depth that is not positive and finite.
+/// The keypoint's diameter in metres at `depth` (metres along +Z): size · depth / |fx|. NaN for
+/// a depth that is not positive and finite.
 double MetricSize(const cv::KeyPoint& keypoint, double depth, const core::PinholeCamera& camera);
 
 /// Per keypoint its MetricSize with the depth at its (rounded) pixel of `depth` (CV_32FC1,
@@ -41,10 +42,15 @@ double MetricSize(const cv::KeyPoint& keypoint, double depth, const core::Pinhol
 std::vector<double> MetricSizes(const std::vector<cv::KeyPoint>& keypoints, const cv::Mat& depth,
                                 const core::PinholeCamera& camera);
 
-/// The learnt keypoint of a keypoint seen at `depth` (MetricSize; an angle < 0, OpenCV's "none",
-/// is unknown).
-LearntKeypoint ToLearntKeypoint(const cv::KeyPoint& keypoint, double depth,
-                                const core::PinholeCamera& camera);
+/// The learnt keypoint of `keypoint` of metric size `size_m` (MetricSize; NaN unknown). An angle
+/// < 0, OpenCV's "none", is unknown.
+LearntKeypoint ToLearntKeypoint(const cv::KeyPoint& keypoint, double size_m);
+
+/// Degrees `seen` turned from `learnt`, in [0, 180]; NaN if either orientation is unknown.
+double TurnDeg(const LearntKeypoint& learnt, const cv::KeyPoint& seen);
+/// Factor ≥ 1 between the learnt and the seen metric size, either way; NaN if either is unknown
+/// (NaN or not positive).
+double SizeRatio(const LearntKeypoint& learnt, double seen_size_m);
 
 /// Whether `seen` (with `seen_size_m` from MetricSize, NaN unknown) agrees with `learnt` within
 /// the options' tolerances; true when the options are not enabled.

@@ -102,8 +102,8 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus, const Selected
       const std::optional<Eigen::Vector3d>& p = f.p_cam[std::size_t(i)];
       positions.push_back(p ? Eigen::Vector3d(T_world_cam * *p)
                             : Eigen::Vector3d::Constant(std::nan("")));
-      keypoints.push_back(
-          ToLearntKeypoint(f.keypoints[std::size_t(i)], p ? p->z() : std::nan(""), camera));
+      const cv::KeyPoint& k = f.keypoints[std::size_t(i)];
+      keypoints.push_back(ToLearntKeypoint(k, MetricSize(k, p ? p->z() : std::nan(""), camera)));
     }
     if (!learnt.empty()) database_.AddFeatures(learnt, step.object, positions, keypoints);
     step.learnt = learnt.rows;

@@ -34,23 +34,6 @@ int DistinctPlaces(const std::vector<RatioMatch>& matches, const std::vector<int
   return int(counted.size());
 }
 
-// The matches whose keypoint agrees with the learnt one (keypoint_consistency.h), counted as
-// FeatureDatabase::Match counts them.
-FeatureDatabase::Recognition KeepConsistentMatches(const FeatureDatabase& database,
-                                                   const FrameFeatures& features,
-                                                   const KeypointConsistencyOptions& options,
-                                                   const std::vector<RatioMatch>& matches) {
-  std::vector<RatioMatch> kept;
-  for (const RatioMatch& match : matches) {
-    const std::size_t c = std::size_t(match.candidate);
-    const double size = features.metric_sizes.empty() ? std::nan("") : features.metric_sizes[c];
-    if (ConsistentKeypoint(database.Keypoint(match.reference), features.keypoints[c], size,
-                           options))
-      kept.push_back(match);
-  }
-  return database.Tally(std::move(kept));
-}
-
 }  // namespace
 
 VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
@@ -79,14 +62,39 @@ VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
   return pose;
 }
 
-FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor,
-                                   const cv::Mat& depth, const core::PinholeCamera& camera) {
+FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor) {
   FrameFeatures f;
   extractor.detectAndCompute(grey, cv::noArray(), f.keypoints, f.descriptors);
   if (!f.keypoints.empty() && f.descriptors.type() != CV_32F)
     f.descriptors.convertTo(f.descriptors, CV_32F);
+  return f;
+}
+
+FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor,
+                                   const cv::Mat& depth, const core::PinholeCamera& camera) {
+  FrameFeatures f = ExtractFrameFeatures(grey, extractor);
   if (!depth.empty()) f.metric_sizes = MetricSizes(f.keypoints, depth, camera);
   return f;
+}
+
+FeatureDatabase::Recognition KeepConsistentMatches(const FeatureDatabase& database,
+                                                   const FrameFeatures& features,
+                                                   const KeypointConsistencyOptions& options,
+                                                   const std::vector<RatioMatch>& matches) {
+  if (options.enabled) CheckKeypointConsistencyOptions(options);
+  if (!features.metric_sizes.empty() && features.metric_sizes.size() != features.keypoints.size())
+    throw std::invalid_argument(
+        "KeepConsistentMatches: " + std::to_string(features.metric_sizes.size()) +
+        " metric sizes for " + std::to_string(features.keypoints.size()) + " keypoints");
+  std::vector<RatioMatch> kept;
+  for (const RatioMatch& match : matches) {
+    const std::size_t c = std::size_t(match.candidate);
+    const double size = features.metric_sizes.empty() ? std::nan("") : features.metric_sizes.at(c);
+    if (ConsistentKeypoint(database.Keypoint(match.reference), features.keypoints.at(c), size,
+                           options))
+      kept.push_back(match);
+  }
+  return database.Tally(std::move(kept));
 }
 
 FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDatabase& database,
@@ -95,11 +103,6 @@ FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDataba
   if (options.verify_nearest < 0)
     throw std::invalid_argument("ObjectRecognitionOptions: verify_nearest must be >= 0, got " +
                                 std::to_string(options.verify_nearest));
-  if (options.consistency.enabled) CheckKeypointConsistencyOptions(options.consistency);
-  if (!features.metric_sizes.empty() && features.metric_sizes.size() != features.keypoints.size())
-    throw std::invalid_argument("MatchObjects: " + std::to_string(features.metric_sizes.size()) +
-                                " metric sizes for " + std::to_string(features.keypoints.size()) +
-                                " keypoints");
   FrameRecognition r;
   r.keypoints = features.keypoints;
   const bool any = !r.keypoints.empty();

@@ -53,7 +53,8 @@ struct ObjectRecognitionOptions {
   int verify_nearest = 0;
   PoseVerificationOptions verification;
   /// Count only matches whose keypoint agrees with the learnt one's orientation and metric size
-  /// (keypoint_consistency.h); they are also the matches verified. Not enabled: the thesis.
+  /// (keypoint_consistency.h); with verify_nearest = 0 they are also the pairs verified. Not
+  /// enabled: the thesis.
   KeypointConsistencyOptions consistency;
 };
 
@@ -64,15 +65,25 @@ struct FrameFeatures {
   std::vector<double> metric_sizes;
 };
 
-/// The features of a whole frame, `grey` CV_8UC1; with `depth` (CV_32FC1 metres, may be empty)
-/// also their metric sizes.
+/// The features of a whole frame, `grey` CV_8UC1.
+FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor);
+/// The same with their metric sizes, from `depth` (CV_32FC1 metres; empty: unknown) seen by
+/// `camera`.
 FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor,
-                                   const cv::Mat& depth = cv::Mat(),
-                                   const core::PinholeCamera& camera = {});
+                                   const cv::Mat& depth, const core::PinholeCamera& camera);
+
+/// Of `matches` (reference = database feature, candidate = a keypoint of `features`), those
+/// whose keypoint agrees with the feature's learnt one (keypoint_consistency.h), with N_k and c
+/// counted over them as FeatureDatabase::Match counts (Tally). Throws std::invalid_argument for
+/// metric sizes that are not one per keypoint or bad enabled options, std::out_of_range for a
+/// match out of range.
+FeatureDatabase::Recognition KeepConsistentMatches(const FeatureDatabase& database,
+                                                   const FrameFeatures& features,
+                                                   const KeypointConsistencyOptions& options,
+                                                   const std::vector<RatioMatch>& matches);
 
 /// Matches a frame's features with `database` (counts unchanged). Throws std::invalid_argument
-/// for a descriptor width that is not the database's, metric sizes that are not one per
-/// keypoint, or bad options.
+/// for a descriptor width that is not the database's, or as KeepConsistentMatches.
 FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDatabase& database,
                               const core::PinholeCamera& camera,
                               const ObjectRecognitionOptions& options = {});

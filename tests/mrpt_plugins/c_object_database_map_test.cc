@@ -242,6 +242,30 @@ TEST(CObjectDatabaseMap, AVersionZeroFileReadsWithUnknownKeypoints) {
   EXPECT_TRUE(std::isnan(reader.database().Keypoint(0).size_m));
 }
 
+// Version 1 keeps each feature's learnt keypoint, known or not.
+TEST(CObjectDatabaseMap, AVersionOneFileKeepsTheLearntKeypoints) {
+  FileReader writer;
+  objects::LearntKeypoint k;
+  k.angle_deg = 123.5;
+  k.size_m = 0.031;
+  const int object = writer.database().AddObject();
+  writer.database().AddFeatures(cv::Mat(2, 64, CV_32F, cv::Scalar(0.125f)), object,
+                                {Eigen::Vector3d(0.1, 0.2, 0.8), Eigen::Vector3d(0, 0, 1)},
+                                {k, objects::LearntKeypoint()});
+  mrpt::io::CMemoryStream buffer;
+  auto out = mrpt::serialization::archiveFrom(buffer);
+  writer.serializeTo(out);
+  buffer.Seek(0);
+  auto in = mrpt::serialization::archiveFrom(buffer);
+  FileReader reader;
+  reader.serializeFrom(in, 1);
+  ASSERT_EQ(reader.database().features(), 2);
+  EXPECT_EQ(reader.database().Keypoint(0).angle_deg, 123.5);
+  EXPECT_EQ(reader.database().Keypoint(0).size_m, 0.031);
+  EXPECT_TRUE(std::isnan(reader.database().Keypoint(1).angle_deg));
+  EXPECT_TRUE(std::isnan(reader.database().Keypoint(1).size_m));
+}
+
 // Objects added to the database by hand have no place they were learnt from.
 TEST(CObjectDatabaseMap, ObjectsAddedByHandAreListedWithoutAPlace) {
   CObjectDatabaseMap map;

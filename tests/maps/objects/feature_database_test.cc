@@ -144,6 +144,19 @@ TEST(FeatureDatabase, RebuiltFromItsPartsItIsTheSame) {
                                           {Eigen::Vector3d::Zero()}, {k, k}),
                std::invalid_argument)
       << "two keypoints for one feature";
+  for (const auto& [angle, size] :
+       {std::pair<double, double>{-1, 0.02}, {360, 0.02}, {30, 0}, {30, -0.1}, {30, INFINITY}}) {
+    k.angle_deg = angle;
+    k.size_m = size;
+    EXPECT_THROW(FeatureDatabase::FromParts(1, Descriptors(1, 9), {{{0, 1}}},
+                                            {Eigen::Vector3d::Zero()}, {k}),
+                 std::invalid_argument)
+        << angle << " deg, " << size << " m";
+    FeatureDatabase direct;
+    EXPECT_THROW(direct.AddFeatures(Descriptors(1, 9), direct.AddObject(), {}, {k}),
+                 std::invalid_argument)
+        << angle << " deg, " << size << " m";
+  }
 
   const std::vector<Eigen::Vector3d> one(1, Eigen::Vector3d::Zero());
   const cv::Mat d = Descriptors(1, 9);

@@ -18,6 +18,9 @@ cv::KeyPoint At(float x, float y, float size, float angle) {
 TEST(KeypointConsistency, MetricSizeIsSizeTimesDepthOverFocalLength) {
   // A 20 px blob at 2 m with fx = 400 spans 0.1 m.
   EXPECT_DOUBLE_EQ(MetricSize(At(10, 10, 20, 0), 2.0, kCamera), 0.1);
+  core::PinholeCamera mirrored = kCamera;
+  mirrored.fx = -400;  // a mirrored image: the size is still positive
+  EXPECT_DOUBLE_EQ(MetricSize(At(10, 10, 20, 0), 2.0, mirrored), 0.1);
   for (double bad : {0.0, -1.0, std::nan(""), double(INFINITY)})
     EXPECT_TRUE(std::isnan(MetricSize(At(10, 10, 20, 0), bad, kCamera))) << bad;
 }
@@ -41,7 +44,8 @@ TEST(KeypointConsistency, MetricSizesReadTheDepthAtTheRoundedPixel) {
 TEST(KeypointConsistency, OrientationIsComparedRoundTheCircle) {
   KeypointConsistencyOptions o;
   o.enabled = true;  // 20°, 1.3
-  const LearntKeypoint learnt = ToLearntKeypoint(At(0, 0, 20, 355), 1.0, kCamera);
+  const LearntKeypoint learnt =
+      ToLearntKeypoint(At(0, 0, 20, 355), MetricSize(At(0, 0, 20, 355), 1.0, kCamera));
   EXPECT_DOUBLE_EQ(learnt.angle_deg, 355);
   EXPECT_DOUBLE_EQ(learnt.size_m, 0.05);
   EXPECT_TRUE(ConsistentKeypoint(learnt, At(0, 0, 20, 10), 0.05, o));     // 15° across 0
@@ -67,7 +71,19 @@ TEST(KeypointConsistency, MetricSizeMayDifferByTheRatioEitherWay) {
   EXPECT_TRUE(ConsistentKeypoint(learnt, seen, std::nan(""), o));
   EXPECT_TRUE(ConsistentKeypoint(LearntKeypoint(), At(0, 0, 20, 300), 0.5, o));
   EXPECT_TRUE(ConsistentKeypoint(learnt, At(0, 0, 20, -1), 0.1, o));
-  EXPECT_TRUE(std::isnan(ToLearntKeypoint(At(0, 0, 20, -1), 1.0, kCamera).angle_deg));
+  EXPECT_TRUE(std::isnan(ToLearntKeypoint(At(0, 0, 20, -1), 0.1).angle_deg));
+  EXPECT_EQ(ToLearntKeypoint(At(0, 0, 20, 360.0f), 0.1).angle_deg, 0.0) << "kept in [0, 360)";
+  // Exactly at the tolerances: still consistent.
+  LearntKeypoint at;
+  at.angle_deg = 0;
+  at.size_m = 1.0;
+  EXPECT_TRUE(ConsistentKeypoint(at, At(0, 0, 20, 20), 1.0, o));
+  EXPECT_TRUE(ConsistentKeypoint(at, At(0, 0, 20, 0), 1.3, o));
+  EXPECT_DOUBLE_EQ(TurnDeg(at, At(0, 0, 20, 350)), 10.0);
+  EXPECT_TRUE(std::isnan(TurnDeg(LearntKeypoint(), At(0, 0, 20, 350))));
+  EXPECT_DOUBLE_EQ(SizeRatio(at, 0.5), 2.0);
+  EXPECT_DOUBLE_EQ(SizeRatio(at, 2.0), 2.0);
+  EXPECT_TRUE(std::isnan(SizeRatio(at, 0.0)));
 }
 
 TEST(KeypointConsistency, BadTolerancesAreNamed) {

@@ -36,7 +36,7 @@ FeatureDatabase Learn(cv::Feature2D& extractor, bool two_objects) {
     std::vector<LearntKeypoint> learnt;
     for (const cv::KeyPoint& p : k) {
       places.push_back(kCamera.RayCam(p.pt.x, p.pt.y));  // z = 1
-      learnt.push_back(ToLearntKeypoint(p, 1.0, kCamera));
+      learnt.push_back(ToLearntKeypoint(p, MetricSize(p, 1.0, kCamera)));
     }
     db.AddFeatures(d, db.AddObject(), places, learnt);
   }
@@ -179,39 +179,54 @@ TEST(ObjectRecognition, APoseThatCollapsesTheObjectOntoOneClusterOfKeypointsIsNo
       << "the pose check alone accepts the collapse: the count of places is what refuses it";
 }
 
-// The learnt keypoints' check (keypoint_consistency.h): the print turned upside down still
-// matches M-SURF's rotation-invariant descriptors, but not the learnt orientations; seen at twice
-// the depth with its blobs the same size in pixels (a print twice as large), not the learnt
-// metric sizes. Unturned at the learnt depth, or without depth, the matches stay.
+// The learnt keypoints' check (keypoint_consistency.h), on the print seen after the camera moved
+// 1 cm (so that keypoints are not numbered as learnt): turned upside down it still matches
+// M-SURF's rotation-invariant descriptors, but not the learnt orientations; seen at twice the
+// depth with its blobs the same size in pixels (a print twice as large), not the learnt metric
+// sizes. Unturned at the learnt depth, or without depth, the matches stay — and each one kept
+// pairs a feature with the keypoint at its learnt place.
 TEST(ObjectRecognition, ConsistentKeypointsRejectATurnedPrintAndOneOfAnotherSize) {
   cv::Ptr<cv::Feature2D> extractor = CreateFeatureExtractor(FeatureExtractor::kMSurf);
   const FeatureDatabase db = Learn(*extractor, false);
+  std::vector<cv::KeyPoint> learnt_keypoints;
+  cv::Mat unused;
+  extractor->detectAndCompute(Print(1), cv::noArray(), learnt_keypoints, unused);
+  const double shift = kCamera.fx * 0.01;
+  cv::Mat moved, turned;
+  const cv::Mat M = (cv::Mat_<double>(2, 3) << 1, 0, shift, 0, 1, 0);
+  cv::warpAffine(Print(1), moved, M, Print(1).size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
+  cv::rotate(moved, turned, cv::ROTATE_180);
   ObjectRecognitionOptions consistent;
   consistent.consistency.enabled = true;
   const cv::Mat at_1m(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(1.0f));
-  const auto matches = [&](const cv::Mat& grey, const cv::Mat& depth,
-                           const ObjectRecognitionOptions& options) {
+  const cv::Mat at_2m = 2.0 * at_1m;
+  const auto recognise = [&](const cv::Mat& grey, const cv::Mat& depth,
+                             const ObjectRecognitionOptions& options) {
     return MatchObjects(ExtractFrameFeatures(grey, *extractor, depth, kCamera), db, kCamera,
-                        options)
-        .per_object[0]
-        .matches;
+                        options);
   };
-  cv::Mat turned;
-  cv::rotate(Print(1), turned, cv::ROTATE_180);
-  const int all = matches(Print(1), at_1m, {});
-  ASSERT_GE(all, db.features() / 2);
-  EXPECT_GE(matches(Print(1), at_1m, consistent), all * 9 / 10);
-  EXPECT_GE(matches(Print(1), cv::Mat(), consistent), all * 9 / 10);
-  const int turned_all = matches(turned, at_1m, {});
+  const FrameRecognition all = recognise(moved, at_1m, {});
+  ASSERT_GE(all.per_object[0].matches, db.features() / 2);
+  const FrameRecognition kept = recognise(moved, at_1m, consistent);
+  EXPECT_GE(kept.per_object[0].matches, all.per_object[0].matches * 9 / 10);
+  EXPECT_EQ(int(kept.matches.size()), kept.per_object[0].matches);
+  int at_learnt_place = 0;
+  for (const RatioMatch& m : kept.matches) {
+    const cv::Point2f d = kept.keypoints[std::size_t(m.candidate)].pt -
+                          learnt_keypoints[std::size_t(m.reference)].pt -
+                          cv::Point2f(float(shift), 0.0f);
+    at_learnt_place += d.dot(d) < 1.0f;
+  }
+  EXPECT_GE(at_learnt_place, int(kept.matches.size()) * 9 / 10);
+  EXPECT_GE(recognise(moved, cv::Mat(), consistent).per_object[0].matches,
+            all.per_object[0].matches * 9 / 10);
+  const int turned_all = recognise(turned, at_1m, {}).per_object[0].matches;
   ASSERT_GE(turned_all, db.features() / 4) << "M-SURF matches the turned print";
-  EXPECT_LE(matches(turned, at_1m, consistent), turned_all / 20);
-  EXPECT_LE(matches(Print(1), 2.0 * at_1m, consistent), all / 20);
-  // The matches kept are the ones counted: FrameRecognition's list agrees with N_k.
-  const FrameRecognition r = MatchObjects(ExtractFrameFeatures(turned, *extractor, at_1m, kCamera),
-                                          db, kCamera, consistent);
-  EXPECT_EQ(int(r.matches.size()), r.per_object[0].matches);
+  EXPECT_LE(recognise(turned, at_1m, consistent).per_object[0].matches, turned_all / 20);
+  EXPECT_LE(recognise(moved, at_2m, consistent).per_object[0].matches,
+            all.per_object[0].matches / 20);
   // Metric sizes that are not one per keypoint are refused.
-  FrameFeatures bad = ExtractFrameFeatures(Print(1), *extractor, at_1m, kCamera);
+  FrameFeatures bad = ExtractFrameFeatures(moved, *extractor, at_1m, kCamera);
   bad.metric_sizes.pop_back();
   EXPECT_THROW(MatchObjects(bad, db, kCamera, consistent), std::invalid_argument);
 }
