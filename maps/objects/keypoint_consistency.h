@@ -24,7 +24,7 @@ struct LearntKeypoint {
 struct KeypointConsistencyOptions {
   bool enabled = false;  ///< false: every ratio match counts (the thesis)
   /// Degrees a matched keypoint's orientation may differ from the learnt one's. In the learning
-  /// room of thesis 5.2, 95 % of the matches on their object turn by less than 13.4°; 20° leaves
+  /// room of thesis 5.2, 95 % of the matches on their object turn by less than 13.3°; 20° leaves
   /// half as much again for other views' tilt (docs/experiments.md).
   double max_angle_deg = 20.0;
   /// Factor a matched keypoint's metric size may differ from the learnt one's, either way: 95 %
