@@ -339,6 +339,7 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
   for (const char* c : kScoreColumns) csv << ',' << c;
   csv << ",keypoints_on_object,matches_on_object,nearest_on_object\n";
   sensors::RawlogFrameReader reader(a.rawlog);
+  const std::vector<objects::RatioMatch> none;  // the diagnostics are read for `db` only
   for (core::Frame frame; (a.frames == 0 || run.frames < a.frames) && reader.Next(frame);) {
     ++run.frames;
     cv::Mat grey;
@@ -366,7 +367,7 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
         for (int i : id->second) visible += eval::VisiblePixels(ids, i);
       const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
       const objects::ObjectEvidence& ed = rd.per_object[std::size_t(k)];
-      for (const objects::RatioMatch& m : r.matches) {
+      for (const objects::RatioMatch& m : on_object_diagnostic ? r.matches : none) {
         if (db.MostProbableObject(m.reference) != k) continue;
         const std::size_t c = std::size_t(m.candidate);
         const cv::Point2f& p = features.keypoints[c].pt;
