@@ -50,6 +50,7 @@
 
 #include "apps/command_line.h"
 #include "core/frame_stem.h"
+#include "core/nearest_pixel.h"
 #include "eval/html_report.h"
 #include "eval/matches_on_object.h"
 #include "eval/object_visibility.h"
@@ -371,8 +372,8 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
         if (db.MostProbableObject(m.reference) != k) continue;
         const std::size_t c = std::size_t(m.candidate);
         const cv::Point2f& p = features.keypoints[c].pt;
-        const int at = ids.at<int>(std::clamp(int(std::lround(p.y)), 0, ids.rows - 1),
-                                   std::clamp(int(std::lround(p.x)), 0, ids.cols - 1));
+        const std::optional<cv::Point> pixel = core::NearestPixel(p, ids.size());
+        const int at = pixel ? ids.at<int>(*pixel) : -1;
         const bool on =
             id != ids_by_name.end() && std::count(id->second.begin(), id->second.end(), at) > 0;
         const objects::LearntKeypoint& learnt = db.Keypoint(m.reference);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/nearest_pixel.h"
 #include "maps/objects/ratio_matches.h"
 
 namespace novelty::eval {
@@ -38,10 +39,9 @@ MatchesOnObject MatchOnObject(const objects::FeatureDatabase& database, int obje
                                          cv::Size(2 * margin_px + 1, 2 * margin_px + 1)));
   cv::Mat descriptors;
   for (std::size_t i = 0; i < frame.keypoints.size(); ++i) {
-    const cv::Point p(int(std::lround(frame.keypoints[i].pt.x)),
-                      int(std::lround(frame.keypoints[i].pt.y)));
-    if (p.inside(cv::Rect(0, 0, near_object.cols, near_object.rows)) && near_object.at<uchar>(p))
-      descriptors.push_back(frame.descriptors.row(int(i)));
+    const std::optional<cv::Point> p =
+        core::NearestPixel(frame.keypoints[i].pt, near_object.size());
+    if (p && near_object.at<uchar>(*p)) descriptors.push_back(frame.descriptors.row(int(i)));
   }
 
   MatchesOnObject out;

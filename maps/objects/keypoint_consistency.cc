@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/nearest_pixel.h"
+
 namespace novelty::objects {
 
 double MetricSize(const cv::KeyPoint& keypoint, double depth, const core::PinholeCamera& camera) {
@@ -18,11 +20,9 @@ std::vector<double> MetricSizes(const std::vector<cv::KeyPoint>& keypoints, cons
     throw std::invalid_argument("MetricSizes: the depth image must be CV_32FC1");
   std::vector<double> sizes(keypoints.size(), std::nan(""));
   if (depth.empty()) return sizes;
-  for (std::size_t i = 0; i < keypoints.size(); ++i) {
-    const int u = int(std::lround(keypoints[i].pt.x)), v = int(std::lround(keypoints[i].pt.y));
-    if (u >= 0 && v >= 0 && u < depth.cols && v < depth.rows)
-      sizes[i] = MetricSize(keypoints[i], depth.at<float>(v, u), camera);
-  }
+  for (std::size_t i = 0; i < keypoints.size(); ++i)
+    if (const std::optional<cv::Point> at = core::NearestPixel(keypoints[i].pt, depth.size()))
+      sizes[i] = MetricSize(keypoints[i], depth.at<float>(*at), camera);
   return sizes;
 }
 

@@ -36,9 +36,9 @@ struct KeypointConsistencyOptions {
 /// a depth that is not positive and finite.
 double MetricSize(const cv::KeyPoint& keypoint, double depth, const core::PinholeCamera& camera);
 
-/// Per keypoint its MetricSize with the depth at its (rounded) pixel of `depth` (CV_32FC1,
-/// metres; 0 or NaN unknown). An empty `depth` gives NaN for all. Throws std::invalid_argument
-/// for a non-empty `depth` that is not CV_32FC1.
+/// Per keypoint its MetricSize with the depth at its pixel of `depth` (core::NearestPixel;
+/// CV_32FC1, metres; 0 or NaN unknown). An empty `depth` gives NaN for all. Throws
+/// std::invalid_argument for a non-empty `depth` that is not CV_32FC1.
 std::vector<double> MetricSizes(const std::vector<cv::KeyPoint>& keypoints, const cv::Mat& depth,
                                 const core::PinholeCamera& camera);
 

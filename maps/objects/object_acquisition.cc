@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/nearest_pixel.h"
 #include "maps/objects/feature_extractor.h"
 
 namespace novelty::objects {
@@ -113,9 +114,8 @@ SelectedFeatures ObjectAcquisition::Extract(const cv::Mat& rgb, const cv::Mat& d
   step.extracted = int(f.keypoints.size());
   for (std::size_t i = 0; i < f.keypoints.size(); ++i) {
     const cv::Point2f& pt = f.keypoints[i].pt;
-    const int u = std::clamp(int(std::lround(pt.x)), 0, depth.cols - 1);
-    const int v = std::clamp(int(std::lround(pt.y)), 0, depth.rows - 1);
-    const float z = depth.at<float>(v, u);
+    const std::optional<cv::Point> at = core::NearestPixel(pt, depth.size());
+    const float z = at ? depth.at<float>(*at) : 0.0f;
     if (z > 0.0f && std::isfinite(z)) {
       f.p_cam.emplace_back(camera.Unproject(pt.x, pt.y, z));
       ++step.reconstructed;

@@ -29,14 +29,16 @@ TEST(KeypointConsistency, MetricSizesReadTheDepthAtTheRoundedPixel) {
   cv::Mat depth(4, 5, CV_32FC1, cv::Scalar(1.0f));
   depth.at<float>(2, 3) = 4.0f;  // row 2, column 3
   depth.at<float>(0, 0) = 0.0f;  // unknown
+  depth.at<float>(3, 4) = 2.0f;  // the last pixel
   const std::vector<cv::KeyPoint> k = {At(2.6f, 1.6f, 40, 0), At(0.2f, 0.3f, 40, 0),
-                                       At(9, 1, 40, 0), At(1, 1, 40, 0)};
+                                       At(9, 1, 40, 0), At(1, 1, 40, 0), At(4.6f, 3.7f, 40, 0)};
   const std::vector<double> s = MetricSizes(k, depth, kCamera);
-  ASSERT_EQ(s.size(), 4u);
+  ASSERT_EQ(s.size(), 5u);
   EXPECT_DOUBLE_EQ(s[0], 40 * 4.0 / 400);  // (2.6, 1.6) rounds to column 3, row 2
   EXPECT_TRUE(std::isnan(s[1]));           // depth 0
   EXPECT_TRUE(std::isnan(s[2]));           // outside the image
   EXPECT_DOUBLE_EQ(s[3], 0.1);
+  EXPECT_DOUBLE_EQ(s[4], 40 * 2.0 / 400);  // rounds one past the edge: the border pixel
   for (double v : MetricSizes(k, cv::Mat(), kCamera)) EXPECT_TRUE(std::isnan(v));
   EXPECT_THROW(MetricSizes(k, cv::Mat(4, 5, CV_64FC1), kCamera), std::invalid_argument);
 }

@@ -92,6 +92,12 @@ TEST(ObjectLearner, LearnsAStaticObjectOnceAndThenRecognisesIt) {
   // Each learnt feature keeps its 3-D place (world frame): the thing's point it was seen at.
   for (int h = 0; h < 25; ++h)
     EXPECT_LT((learner.database().Position(h) - cup.points[std::size_t(h)]).norm(), 1e-9) << h;
+  // And its keypoint: orientation 0°, metric size = 20 px · z / fx with the camera-frame depth
+  // z = 1 m of the thing's plane (not the ray's length, up to 0.5 % longer off the axis).
+  for (int h = 0; h < 25; ++h) {
+    EXPECT_DOUBLE_EQ(learner.database().Keypoint(h).angle_deg, 0.0) << h;
+    EXPECT_NEAR(learner.database().Keypoint(h).size_m, 20.0 * 1.0 / kCamera.fx, 1e-12) << h;
+  }
   // Frame 2: recognised from the database, nothing learnt twice.
   s = learner.Process(Focus(cup, 2), See({&cup}, 2, 100), kCamera, Pose(2));
   EXPECT_EQ(s.recognised, LearnerStep::Recognised::kByDatabase);
