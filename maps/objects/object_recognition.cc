@@ -132,11 +132,12 @@ FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDataba
   return r;
 }
 
-FrameRecognition RecognizeObjects(const cv::Mat& grey, cv::Feature2D& extractor,
-                                  const FeatureDatabase& database,
+FrameRecognition RecognizeObjects(const cv::Mat& grey, const cv::Mat& depth,
+                                  cv::Feature2D& extractor, const FeatureDatabase& database,
                                   const core::PinholeCamera& camera,
                                   const ObjectRecognitionOptions& options) {
-  return MatchObjects(ExtractFrameFeatures(grey, extractor), database, camera, options);
+  return MatchObjects(ExtractFrameFeatures(grey, extractor, depth, camera), database, camera,
+                      options);
 }
 
 }  // namespace novelty::objects

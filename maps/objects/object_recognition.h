@@ -88,9 +88,10 @@ FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDataba
                               const core::PinholeCamera& camera,
                               const ObjectRecognitionOptions& options = {});
 
-/// Both: `extractor` must give the database's descriptors.
-FrameRecognition RecognizeObjects(const cv::Mat& grey, cv::Feature2D& extractor,
-                                  const FeatureDatabase& database,
+/// Both: `extractor` must give the database's descriptors; `depth` (CV_32FC1 metres, or empty:
+/// unknown) gives the keypoints' metric sizes for the consistency check.
+FrameRecognition RecognizeObjects(const cv::Mat& grey, const cv::Mat& depth,
+                                  cv::Feature2D& extractor, const FeatureDatabase& database,
                                   const core::PinholeCamera& camera,
                                   const ObjectRecognitionOptions& options = {});
 

@@ -54,7 +54,7 @@ TEST(ObjectRecognition, FindsALearntPrintAfterTheCameraMovedAndVerifiesItsPose) 
   cv::warpAffine(Print(1), moved, M, Print(1).size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
   ObjectRecognitionOptions verify;
   verify.verify = true;
-  const FrameRecognition r = RecognizeObjects(moved, *extractor, db, kCamera, verify);
+  const FrameRecognition r = RecognizeObjects(moved, cv::Mat(), *extractor, db, kCamera, verify);
   ASSERT_EQ(r.per_object.size(), 1u);
   EXPECT_GE(r.per_object[0].matches, db.features() / 2);
   ASSERT_TRUE(r.per_object[0].pose.verified);
@@ -79,7 +79,7 @@ TEST(ObjectRecognition, AnotherPrintIsNotRecognised) {
   const FeatureDatabase db = Learn(*extractor, true);
   ObjectRecognitionOptions verify;
   verify.verify = true;
-  const FrameRecognition r = RecognizeObjects(Print(3), *extractor, db, kCamera, verify);
+  const FrameRecognition r = RecognizeObjects(Print(3), cv::Mat(), *extractor, db, kCamera, verify);
   ASSERT_EQ(r.per_object.size(), 2u);
   for (const ObjectEvidence& e : r.per_object) {
     // Chance ratio-test matches between unrelated prints are rare; a pose never agrees.
@@ -87,7 +87,7 @@ TEST(ObjectRecognition, AnotherPrintIsNotRecognised) {
     EXPECT_FALSE(e.pose.verified);
   }
   // Print 2 itself: object 1, not object 0.
-  const FrameRecognition two = RecognizeObjects(Print(2), *extractor, db, kCamera);
+  const FrameRecognition two = RecognizeObjects(Print(2), cv::Mat(), *extractor, db, kCamera);
   EXPECT_GE(two.per_object[1].matches, 20);
   EXPECT_LE(two.per_object[0].matches, 3);
 }
@@ -202,8 +202,7 @@ TEST(ObjectRecognition, ConsistentKeypointsRejectATurnedPrintAndOneOfAnotherSize
   const cv::Mat at_2m = 2.0 * at_1m;
   const auto recognise = [&](const cv::Mat& grey, const cv::Mat& depth,
                              const ObjectRecognitionOptions& options) {
-    return MatchObjects(ExtractFrameFeatures(grey, *extractor, depth, kCamera), db, kCamera,
-                        options);
+    return RecognizeObjects(grey, depth, *extractor, db, kCamera, options);
   };
   const FrameRecognition all = recognise(moved, at_1m, {});
   ASSERT_GE(all.per_object[0].matches, db.features() / 2);
@@ -235,7 +234,7 @@ TEST(ObjectRecognition, ADatabaseOfAnotherWidthIsAClearError) {
   FeatureDatabase db;
   db.AddFeatures(cv::Mat::ones(3, 128, CV_32F), db.AddObject());
   cv::Ptr<cv::Feature2D> msurf = CreateFeatureExtractor(FeatureExtractor::kMSurf);
-  EXPECT_THROW(RecognizeObjects(Print(1), *msurf, db, kCamera), std::invalid_argument);
+  EXPECT_THROW(RecognizeObjects(Print(1), cv::Mat(), *msurf, db, kCamera), std::invalid_argument);
 }
 
 }  // namespace
