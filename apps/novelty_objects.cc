@@ -10,7 +10,8 @@
 // e.g. share/scenarios/object_learning.scn with --objects-from 361; the ground-truth folders are
 // novelty-sim's. Writes
 //   OUT/focus.csv          per learning frame: focus box centre, the new object's true box centre,
-//                          features extracted in the box (figs. 5.3 a–c)
+//                          features extracted in the box (figs. 5.3 a–c), the share of the true
+//                          box the focus box covers (where features can be learnt from)
 //   OUT/features.csv       per learnt feature: object, the object's true name, its 3-D place,
 //                          whether the place lies on that object (ground-truth ids and depth)
 //   OUT/recognition.csv    per I3 frame and learnt object: pixels it shows, matches N_k, matches
@@ -156,6 +157,14 @@ eval::NewObjectView NewObjectAt(const sim::GroundTruthReader& truth, int frame) 
   }
 }
 
+// The q-quantile of `v`, the element at q·(n − 1) in sorted order (NaN if empty).
+double Quantile(std::vector<double> v, double q) {
+  if (v.empty()) return NAN;
+  const auto at = v.begin() + long(q * double(v.size() - 1));
+  std::nth_element(v.begin(), at, v.end());
+  return *at;
+}
+
 // Learning: the focus against the new object's true box (fig. 5.3), and each db object's name:
 // the new object most often in view where it learnt.
 struct LearningEvaluation {
@@ -163,6 +172,7 @@ struct LearningEvaluation {
   std::vector<int> name_ids;                    // its id in the learning ground truth, −1 unknown
   std::vector<eval::PlotSeries> plots_x, plots_y, plots_features;
   double median_centre_error_px = NAN;
+  double median_box_covered = NAN;  // share of the true box inside the focus box
   int compared_frames = 0, centre_inside = 0;
 };
 
@@ -173,9 +183,10 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
   std::vector<std::map<int, int>> votes(static_cast<std::size_t>(objects));
   eval::PlotSeries mx{"focus box", "#0072b2", {}, 1}, tx{"true box", "#000000", {}, 1};
   eval::PlotSeries my = mx, ty = tx, feats{"features in the box", "#d55e00", {}, 1};
-  std::vector<double> errors;
+  std::vector<double> errors, covered;
   std::ofstream csv(out + "/focus.csv");
-  csv << "frame,box_cx,box_cy,true_cx,true_cy,true_object,arm_in_view,extracted\n";
+  csv << "frame,box_cx,box_cy,true_cx,true_cy,true_object,arm_in_view,extracted,"
+         "true_box_covered\n";
   for (const StepRow& r : steps) {
     const eval::NewObjectView view = NewObjectAt(truth, r.frame);
     if (r.learnt > 0 && r.object >= 0 && r.object < objects && view.id >= 0)
@@ -186,11 +197,14 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
     const bool still = view.id >= 0 && view.arm_pixels == 0;
     const double gx = still ? view.box.x + 0.5 * view.box.width : NAN;
     const double gy = still ? view.box.y + 0.5 * view.box.height : NAN;
+    const double cover = still && r.has_box && !view.box.empty()
+                             ? double((r.box & view.box).area()) / view.box.area()
+                             : NAN;
     csv << r.frame << ',' << bx << ',' << by << ',' << gx << ',' << gy << ','
         << (view.id >= 0
                 ? truth.ObjectNames().count(view.id) ? truth.ObjectNames().at(view.id) : "?"
                 : "")
-        << ',' << (view.arm_pixels > 0) << ',' << r.extracted << '\n';
+        << ',' << (view.arm_pixels > 0) << ',' << r.extracted << ',' << cover << '\n';
     mx.points.emplace_back(r.frame, bx);
     my.points.emplace_back(r.frame, by);
     tx.points.emplace_back(r.frame, gx);
@@ -199,13 +213,12 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
     if (still && r.has_box) {
       ++e.compared_frames;
       errors.push_back(std::hypot(bx - gx, by - gy));
+      covered.push_back(cover);
       e.centre_inside += view.box.contains(cv::Point(int(bx), int(by)));
     }
   }
-  if (!errors.empty()) {
-    std::nth_element(errors.begin(), errors.begin() + long(errors.size() / 2), errors.end());
-    e.median_centre_error_px = errors[errors.size() / 2];
-  }
+  e.median_centre_error_px = Quantile(errors, 0.5);
+  e.median_box_covered = Quantile(covered, 0.5);
   e.plots_x = {mx, tx};
   e.plots_y = {my, ty};
   e.plots_features = {feats};
@@ -316,11 +329,10 @@ struct RecognitionRun {
 };
 
 // Median and 95th percentile of `v` ("-" if empty).
-std::string MedianAnd95(std::vector<double> v, const char* format) {
+std::string MedianAnd95(const std::vector<double>& v, const char* format) {
   if (v.empty()) return "-";
-  std::sort(v.begin(), v.end());
-  const auto at = [&](double q) { return Num(v[std::size_t(q * double(v.size() - 1))], format); };
-  return at(0.5) + " / " + at(0.95) + " (" + std::to_string(v.size()) + ")";
+  return Num(Quantile(v, 0.5), format) + " / " + Num(Quantile(v, 0.95), format) + " (" +
+         std::to_string(v.size()) + ")";
 }
 
 RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
@@ -711,6 +723,9 @@ int main(int argc, char** argv) {
                 : "-",
             "(reported)", -1);
     finding("median focus box centre error (px)", Num(learning.median_centre_error_px, "%.1f"),
+            "(reported)", -1);
+    finding("median share of the new object's true box inside the focus box",
+            std::isnan(learning.median_box_covered) ? "-" : Percent(learning.median_box_covered),
             "(reported)", -1);
     for (int i = 0; i < kScores; ++i) {
       const std::string what = kScoreNames[i];
