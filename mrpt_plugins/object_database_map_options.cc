@@ -65,6 +65,12 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "in an added region, pixels nearer than the farthest surface the map saw count as "
             "surprising in rho_S of eq. 5.5 (false = the thesis: surprise alone)")
         .Add(
+            "learn_only_nearer_features",
+            [](C & c) -> auto& { return c.map.learn_only_nearer_features; },
+            "select only features nearer than the farthest surface the map saw at their pixel "
+            "(false = the thesis; true: the shadow and the table beside a new object are not "
+            "learnt)")
+        .Add(
             "distinct_second_match",
             [](C & c) -> auto& { return c.map.learner.distinct_second_match; },
             "ratio test against the second candidate of another place, not a duplicate of the "

@@ -88,7 +88,7 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
                                  options_.learn_unchanged_change);
   step.learning = !step.focus.box.empty() && (added || unchanged_object);
   SelectedFeatures features;
-  if (step.learning) features = Extract(rgb, depth, step.focus.box, camera, step);
+  if (step.learning) features = Extract(rgb, depth, expected_depth, step.focus.box, camera, step);
   // A frame that is not learnt from has no features: it counts towards forgetting.
   if (options_.nearer_is_surprising && kind == ChangeKind::kAdded)
     step.learner = learner_.Process(
@@ -100,7 +100,8 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
 }
 
 SelectedFeatures ObjectAcquisition::Extract(const cv::Mat& rgb, const cv::Mat& depth,
-                                            const cv::Rect& box, const core::PinholeCamera& camera,
+                                            const cv::Mat& expected_depth, const cv::Rect& box,
+                                            const core::PinholeCamera& camera,
                                             AcquisitionStep& step) {
   // The whole frame with the box as mask: keypoints near the box's border keep the support
   // their descriptor windows need outside it.
@@ -112,6 +113,20 @@ SelectedFeatures ObjectAcquisition::Extract(const cv::Mat& rgb, const cv::Mat& d
   if (f.descriptors.type() != CV_32F && !f.keypoints.empty())
     f.descriptors.convertTo(f.descriptors, CV_32F);
   step.extracted = int(f.keypoints.size());
+  if (options_.learn_only_nearer_features && !expected_depth.empty() && !f.keypoints.empty()) {
+    const cv::Mat nearer = NearerMask(depth, expected_depth, options_.change);
+    std::vector<cv::KeyPoint> kept;
+    cv::Mat kept_descriptors;
+    for (std::size_t i = 0; i < f.keypoints.size(); ++i) {
+      const std::optional<cv::Point> at = core::NearestPixel(f.keypoints[i].pt, nearer.size());
+      if (!at || !nearer.at<uchar>(*at)) continue;
+      kept.push_back(f.keypoints[i]);
+      kept_descriptors.push_back(f.descriptors.row(int(i)));
+    }
+    step.not_nearer = step.extracted - int(kept.size());
+    f.keypoints = std::move(kept);
+    f.descriptors = kept_descriptors;
+  }
   for (std::size_t i = 0; i < f.keypoints.size(); ++i) {
     const cv::Point2f& pt = f.keypoints[i].pt;
     const std::optional<cv::Point> at = core::NearestPixel(pt, depth.size());

@@ -56,6 +56,12 @@ struct ObjectAcquisitionOptions {
   /// object is there all the same (and not on its shadow, which is not nearer). false: ρ_S from
   /// surprise alone (the thesis).
   bool nearer_is_surprising = false;
+  /// Beyond the thesis: select only the features whose depth is nearer than the farthest
+  /// surface the map's views saw at their pixel (NearerMask) — where something now stands that
+  /// was not there. The new object's shadow and the table or cloth around it surprise too, at
+  /// the depth the map expects, and a focus box that covers the object takes them in. false:
+  /// the thesis, every feature in the box.
+  bool learn_only_nearer_features = false;
 };
 
 struct AcquisitionStep {
@@ -64,7 +70,8 @@ struct AcquisitionStep {
   bool learning = false;  ///< the box's features went to the learner (added, or unknown and
                           ///< learn_unknown_change; a box found)
   int extracted = 0;      ///< features extracted in the box
-  int reconstructed = 0;  ///< of them, with a depth
+  int not_nearer = 0;     ///< of them, left out by learn_only_nearer_features
+  int reconstructed = 0;  ///< of the rest, with a depth
   LearnerStep learner;
 };
 
@@ -87,8 +94,9 @@ class ObjectAcquisition {
   const ObjectAcquisitionOptions& options() const { return options_; }
 
  private:
-  SelectedFeatures Extract(const cv::Mat& rgb, const cv::Mat& depth, const cv::Rect& box,
-                           const core::PinholeCamera& camera, AcquisitionStep& step);
+  SelectedFeatures Extract(const cv::Mat& rgb, const cv::Mat& depth, const cv::Mat& expected_depth,
+                           const cv::Rect& box, const core::PinholeCamera& camera,
+                           AcquisitionStep& step);
 
   ObjectAcquisitionOptions options_;
   cv::Ptr<cv::Feature2D> extractor_;

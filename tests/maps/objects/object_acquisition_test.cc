@@ -166,6 +166,51 @@ TEST(ObjectAcquisition, NeverLearnsTheBackgroundARemovedObjectUncovers) {
   EXPECT_TRUE(acquisition.learner().active().empty());
 }
 
+// An added face whose right third the map already expects at its depth, as it expects the
+// table around a new object on which the object's shadow surprises: the region is added as a
+// whole. The thesis learns features all over the face; with learn_only_nearer_features, only
+// where the face stands nearer than the map expects — none from the right third.
+TEST(ObjectAcquisition, OnlyFeaturesNearerThanExpectedAreLearntWhenAsked) {
+  constexpr double kThird = kFaceHalf / 3;  // world x where the right third begins
+  const auto learn = [](bool only_nearer, int* left_out) {
+    ObjectAcquisitionOptions options;
+    options.learn_only_nearer_features = only_nearer;
+    ObjectAcquisition acquisition(options);
+    *left_out = 0;
+    for (int t = 0; t < 12; ++t) {
+      const Rendered r = Render(t, true);
+      cv::Mat expected(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+      const Eigen::Vector3d c = Pose(t).translation();
+      for (int v = 0; v < kCamera.height; ++v)
+        for (int u = 0; u < kCamera.width; ++u)
+          if (r.face.at<uchar>(v, u) &&
+              c.x() + kFaceZ * kCamera.RayCam(u, v).x() / kCamera.RayCam(u, v).z() > kThird)
+            expected.at<float>(v, u) = float(kFaceZ);
+      const AcquisitionStep s =
+          acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), expected, kCamera, Pose(t));
+      EXPECT_EQ(s.change.kind, ChangeKind::kAdded) << "frame " << t;
+      EXPECT_LE(s.not_nearer, s.extracted);
+      EXPECT_EQ(s.reconstructed, s.extracted - s.not_nearer);
+      *left_out += s.not_nearer;
+    }
+    return acquisition.learner().database();
+  };
+  int left_out = 0;
+  const FeatureDatabase thesis = learn(false, &left_out);
+  EXPECT_EQ(left_out, 0);
+  int in_right_third = 0;
+  for (int h = 0; h < thesis.features(); ++h) in_right_third += thesis.Position(h).x() > kThird;
+  ASSERT_GE(in_right_third, 5) << "the thesis learns there too";
+  const FeatureDatabase db = learn(true, &left_out);
+  EXPECT_GT(left_out, 0);
+  EXPECT_GE(db.features(), 10);
+  for (int h = 0; h < db.features(); ++h) {
+    // A keypoint on the border may round to either side of it: a pixel (≈ 4 mm at 1 m).
+    EXPECT_LT(db.Position(h).x(), kThird + 0.004) << h;
+    EXPECT_NEAR(db.Position(h).z(), kFaceZ, 1e-3) << h;
+  }
+}
+
 // A static camera: the appearance map stores each frame's depth, so from the second frame on it
 // expects the new face where it is. The face is still learnt — the object being learnt stays
 // added — and recognised.
