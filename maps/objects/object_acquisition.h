@@ -59,8 +59,9 @@ struct ObjectAcquisitionOptions {
   /// Beyond the thesis: select only the features whose depth is nearer than the farthest
   /// surface the map's views saw at their pixel (NearerMask) — where something now stands that
   /// was not there. The new object's shadow and the table or cloth around it surprise too, at
-  /// the depth the map expects, and a focus box that covers the object takes them in. false:
-  /// the thesis, every feature in the box.
+  /// the depth the map expects, and a focus box that covers the object takes them in. A pixel
+  /// where either depth is unknown is not known to be nearer: its feature is left out too
+  /// (without any expected depth, none is). false: the thesis, every feature in the box.
   bool learn_only_nearer_features = false;
 };
 
