@@ -17,7 +17,8 @@ namespace novelty::core {
 /// less than one pixel outside the pixel centres' range (−1 < x < width, likewise y): clamped
 /// into the image. Farther out, or not finite: none.
 inline std::optional<cv::Point> NearestPixel(const cv::Point2f& p, const cv::Size& size) {
-  if (!(p.x > -1.0f && p.y > -1.0f && p.x < float(size.width) && p.y < float(size.height)))
+  if (size.empty() ||
+      !(p.x > -1.0f && p.y > -1.0f && p.x < float(size.width) && p.y < float(size.height)))
     return std::nullopt;
   return cv::Point(std::clamp(int(std::lround(p.x)), 0, size.width - 1),
                    std::clamp(int(std::lround(p.y)), 0, size.height - 1));

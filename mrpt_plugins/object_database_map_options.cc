@@ -69,7 +69,8 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             [](C & c) -> auto& { return c.map.learn_only_nearer_features; },
             "select only features nearer than the farthest surface the map saw at their pixel "
             "(false = the thesis; true: the shadow and the table beside a new object are not "
-            "learnt)")
+            "learnt; pair it with a larger morphology_size, and not for a standing camera: "
+            "object_acquisition.h)")
         .Add(
             "distinct_second_match",
             [](C & c) -> auto& { return c.map.learner.distinct_second_match; },

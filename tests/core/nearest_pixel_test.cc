@@ -30,6 +30,7 @@ TEST(NearestPixel, FartherOutOrNotFiniteIsNone) {
   EXPECT_FALSE(NearestPixel({nan, 5.0f}, kSize));
   EXPECT_FALSE(NearestPixel({5.0f, std::numeric_limits<float>::infinity()}, kSize));
   EXPECT_FALSE(NearestPixel({5.0f, 5.0f}, cv::Size()));  // an empty image has no pixel
+  EXPECT_FALSE(NearestPixel({-0.5f, -0.5f}, cv::Size()));  // not even within a pixel of it
 }
 
 }  // namespace
