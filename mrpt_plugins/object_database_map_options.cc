@@ -72,6 +72,12 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "learnt; pair it with a larger morphology_size, and not for a standing camera: "
             "object_acquisition.h)")
         .Add(
+            "grow_focus_over_nearer",
+            [](C & c) -> auto& { return c.map.grow_focus_over_nearer; },
+            "in an added region, the focus grows over the touching pixels nearer than the "
+            "farthest surface the map saw as well as over surprise (false = the thesis: "
+            "surprise alone; pair it with learn_only_nearer_features and nearer_is_surprising)")
+        .Add(
             "distinct_second_match",
             [](C & c) -> auto& { return c.map.learner.distinct_second_match; },
             "ratio test against the second candidate of another place, not a duplicate of the "

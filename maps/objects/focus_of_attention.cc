@@ -7,6 +7,18 @@
 #include <stdexcept>
 
 namespace novelty::objects {
+namespace {
+
+// The 8-connected part of `binary`'s non-zero pixels that holds `seed` (which must be one),
+// CV_8U 255 there, and its bounding box.
+cv::Mat ConnectedPart(const cv::Mat& binary, cv::Point seed, cv::Rect& box) {
+  cv::Mat mask = cv::Mat::zeros(binary.rows + 2, binary.cols + 2, CV_8U);
+  cv::floodFill(binary, mask, seed, cv::Scalar(0), &box, cv::Scalar(0), cv::Scalar(0),
+                8 | cv::FLOODFILL_MASK_ONLY | (255 << 8));
+  return mask(cv::Rect(1, 1, binary.cols, binary.rows)).clone();
+}
+
+}  // namespace
 
 FocusOfAttention FindFocusOfAttention(const cv::Mat& surprise,
                                       const FocusOfAttentionOptions& options) {
@@ -45,10 +57,7 @@ FocusOfAttention FindFocusOfAttention(const cv::Mat& surprise,
   // least μ_S, and at least θ_S unless the map is flat (σ_S = 0, where θ_S = μ_S = the maximum).
   cv::Mat above = (f.surprise >= f.threshold) & covered;
   above.at<uchar>(f.seed) = 255;
-  cv::Mat mask = cv::Mat::zeros(surprise.rows + 2, surprise.cols + 2, CV_8U);
-  cv::floodFill(above, mask, f.seed, cv::Scalar(0), &f.box, cv::Scalar(0), cv::Scalar(0),
-                8 | cv::FLOODFILL_MASK_ONLY | (255 << 8));
-  f.region = mask(cv::Rect(1, 1, surprise.cols, surprise.rows)).clone();
+  f.region = ConnectedPart(above, f.seed, f.box);
   return f;
 }
 
@@ -65,6 +74,15 @@ FocusOfAttention MarkSurprising(const FocusOfAttention& focus, const cv::Mat& ma
   cv::Mat raised = cv::max(focus.surprise, threshold);
   raised.copyTo(marked.surprise, mask);
   return marked;
+}
+
+FocusOfAttention GrowFocus(const FocusOfAttention& focus, const cv::Mat& mask) {
+  if (mask.type() != CV_8UC1 || mask.size() != focus.region.size())
+    throw std::invalid_argument("GrowFocus: the mask must be CV_8U of the surprise's size");
+  if (focus.seed.x < 0) return focus;
+  FocusOfAttention grown = focus;
+  grown.region = ConnectedPart(focus.region | (mask != 0), focus.seed, grown.box);
+  return grown;
 }
 
 double SurprisingShare(const FocusOfAttention& focus, cv::Point2f center, float window,

@@ -38,6 +38,12 @@ FocusOfAttention FindFocusOfAttention(const cv::Mat& surprise,
 /// them. Box, region, seed and θ_S stay. Throws std::invalid_argument for another mask.
 FocusOfAttention MarkSurprising(const FocusOfAttention& focus, const cv::Mat& mask);
 
+/// The focus grown over `mask`'s pixels (CV_8U of the surprise map's size, non-zero) as well as
+/// its region: the region becomes the 8-connected part of region ∪ mask that holds the seed, the
+/// box its bounding box. Surprise, θ_S and seed stay. A focus without a seed is returned as it
+/// is. Throws std::invalid_argument for another mask.
+FocusOfAttention GrowFocus(const FocusOfAttention& focus, const cv::Mat& mask);
+
 /// ρ_S of eq. 5.5: the share of the pixels of the square window of side `window` (px) centred at
 /// `center` and turned by `angle_rad` — the region a descriptor is computed from — whose
 /// (closed and opened) surprise is at least θ_S. Pixels outside the image count as not

@@ -87,20 +87,28 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
                                 (frames_since_added_ <= options_.learner.forget_after_frames ||
                                  options_.learn_unchanged_change);
   step.learning = !step.focus.box.empty() && (added || unchanged_object);
+  // Where something now stands that the map did not see, once per frame for whichever option
+  // asks for it. Only an added region grows: grown in unchanged ones too, the focus took in
+  // more and recognition found less (docs/experiments.md).
+  cv::Mat nearer;
+  if (kind == ChangeKind::kAdded ||
+      (options_.learn_only_nearer_features && !expected_depth.empty()))
+    nearer = NearerMask(depth, expected_depth, options_.change);
+  if (options_.grow_focus_over_nearer && kind == ChangeKind::kAdded)
+    step.focus = GrowFocus(step.focus, nearer);
   SelectedFeatures features;
-  if (step.learning) features = Extract(rgb, depth, expected_depth, step.focus.box, camera, step);
+  if (step.learning) features = Extract(rgb, depth, nearer, step.focus.box, camera, step);
   // A frame that is not learnt from has no features: it counts towards forgetting.
   if (options_.nearer_is_surprising && kind == ChangeKind::kAdded)
-    step.learner = learner_.Process(
-        MarkSurprising(step.focus, NearerMask(depth, expected_depth, options_.change)), features,
-        camera, T_world_cam);
+    step.learner =
+        learner_.Process(MarkSurprising(step.focus, nearer), features, camera, T_world_cam);
   else
     step.learner = learner_.Process(step.focus, features, camera, T_world_cam);
   return step;
 }
 
 SelectedFeatures ObjectAcquisition::Extract(const cv::Mat& rgb, const cv::Mat& depth,
-                                            const cv::Mat& expected_depth, const cv::Rect& box,
+                                            const cv::Mat& nearer, const cv::Rect& box,
                                             const core::PinholeCamera& camera,
                                             AcquisitionStep& step) {
   // The whole frame with the box as mask: keypoints near the box's border keep the support
@@ -113,8 +121,7 @@ SelectedFeatures ObjectAcquisition::Extract(const cv::Mat& rgb, const cv::Mat& d
   if (f.descriptors.type() != CV_32F && !f.keypoints.empty())
     f.descriptors.convertTo(f.descriptors, CV_32F);
   step.extracted = int(f.keypoints.size());
-  if (options_.learn_only_nearer_features && !expected_depth.empty() && !f.keypoints.empty()) {
-    const cv::Mat nearer = NearerMask(depth, expected_depth, options_.change);
+  if (options_.learn_only_nearer_features && !nearer.empty() && !f.keypoints.empty()) {
     std::vector<cv::KeyPoint> kept;
     cv::Mat kept_descriptors;
     for (std::size_t i = 0; i < f.keypoints.size(); ++i) {

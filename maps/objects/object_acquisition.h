@@ -68,6 +68,17 @@ struct ObjectAcquisitionOptions {
   /// whose map takes in the object's depth at once, learns nothing. Only the keypoint's centre
   /// pixel is tested, not its descriptor window. false: the thesis, every feature in the box.
   bool learn_only_nearer_features = false;
+  /// Beyond the thesis: in a region judged added, the focus (FocusOfAttention::region and box)
+  /// grows over the pixels nearer than the farthest surface the map's views saw (NearerMask)
+  /// that touch it, as well as over surprise (GrowFocus). The flood fill of step 2 stops at the
+  /// holes surprise has where an object's print matches what the map expects behind it, so its
+  /// box may cover a patch of the object; the object's depth covers it whole. Whatever else
+  /// stands nearer and touches the object, such as the hand that puts it down, is taken in too.
+  /// Only features with ρ_S > T are learnt, so alone it adds little: pair it with
+  /// nearer_is_surprising (ρ_S counts the object's depth) and learn_only_nearer_features (the
+  /// table in the grown box is left out); the three together hold 3 classes at every closing
+  /// tried (docs/experiments.md). false: the region of surprise alone (the thesis).
+  bool grow_focus_over_nearer = false;
 };
 
 struct AcquisitionStep {
@@ -100,7 +111,8 @@ class ObjectAcquisition {
   const ObjectAcquisitionOptions& options() const { return options_; }
 
  private:
-  SelectedFeatures Extract(const cv::Mat& rgb, const cv::Mat& depth, const cv::Mat& expected_depth,
+  // nearer: NearerMask, or empty where there is no expected depth.
+  SelectedFeatures Extract(const cv::Mat& rgb, const cv::Mat& depth, const cv::Mat& nearer,
                            const cv::Rect& box, const core::PinholeCamera& camera,
                            AcquisitionStep& step);
 

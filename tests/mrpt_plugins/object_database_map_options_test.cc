@@ -23,6 +23,34 @@ TEST(ObjectDatabaseMapOptions, ShippedIniGivesTheThesisValues) {
   EXPECT_FALSE(c.map.learner.verify_pose) << "beyond the thesis: off";
 }
 
+// Each switch beyond the thesis, set against its default in an .ini, reaches its own option
+// and no other: a key bound to the wrong member fails here.
+TEST(ObjectDatabaseMapOptions, EachSwitchReachesItsOption) {
+  using Config = ObjectDatabaseMapConfig;
+  const std::vector<std::pair<const char*, bool (*)(const Config&)>> switches = {
+      {"learn_unknown_change", [](const Config& c) { return c.map.learn_unknown_change; }},
+      {"learn_unchanged_change", [](const Config& c) { return c.map.learn_unchanged_change; }},
+      {"nearer_is_surprising", [](const Config& c) { return c.map.nearer_is_surprising; }},
+      {"learn_only_nearer_features",
+       [](const Config& c) { return c.map.learn_only_nearer_features; }},
+      {"grow_focus_over_nearer", [](const Config& c) { return c.map.grow_focus_over_nearer; }},
+      {"distinct_second_match",
+       [](const Config& c) { return c.map.learner.distinct_second_match; }},
+      {"verify_pose", [](const Config& c) { return c.map.learner.verify_pose; }},
+  };
+  const Config defaults;
+  for (const auto& [key, value] : switches) {
+    const bool flipped = !value(defaults);
+    const Config c =
+        Config::FromConfig(mrpt::config::CConfigFileMemory(std::string("[o]\n") + key + " = " +
+                                                           (flipped ? "true" : "false") + "\n"),
+                           "o", "test.ini");
+    for (const auto& [other, other_value] : switches)
+      EXPECT_EQ(other_value(c), std::string(other) == key ? flipped : other_value(defaults))
+          << key << " set, " << other << " read";
+  }
+}
+
 TEST(ObjectDatabaseMapOptions, BadValuesNameTheKey) {
   for (const char* line : {"extractor = surf", "match_ratio = 1.5", "forget_after_frames = 0",
                            "min_surprising_share = -0.1", "relative_descriptor_change = 0",

@@ -89,6 +89,32 @@ TEST(FocusOfAttention, MarkedPixelsCountAsSurprising) {
   EXPECT_THROW(MarkSurprising(focus, cv::Mat::zeros(10, 10, CV_8UC1)), std::invalid_argument);
 }
 
+// The region grows over the mask's pixels that touch it (8-connected, a diagonal included), not
+// over those apart from it; surprise, θ_S and seed stay.
+TEST(FocusOfAttention, TheFocusGrowsOverTheTouchingPartOfTheMask) {
+  cv::Mat surprise(120, 160, CV_32FC1, cv::Scalar(1.0f));
+  surprise(cv::Rect(60, 40, 20, 20)).setTo(20.0f);  // a patch of an object: x 60–79, y 40–59
+  const FocusOfAttention focus = FindFocusOfAttention(surprise);
+  ASSERT_EQ(focus.box, cv::Rect(60, 40, 20, 20));
+  cv::Mat mask = cv::Mat::zeros(surprise.size(), CV_8UC1);
+  mask(cv::Rect(70, 50, 30, 30)).setTo(255);  // the whole object, overlapping: x 70–99, y 50–79
+  mask(cv::Rect(100, 80, 5, 5)).setTo(255);   // touching its corner diagonally: x, y to 104, 84
+  mask(cv::Rect(10, 10, 10, 10)).setTo(255);  // nearer too, but apart
+  const FocusOfAttention grown = GrowFocus(focus, mask);
+  EXPECT_EQ(grown.box, cv::Rect(60, 40, 45, 45));
+  EXPECT_EQ(cv::countNonZero(grown.region), 400 + 900 - 100 + 25);
+  EXPECT_EQ(cv::countNonZero(grown.region(cv::Rect(10, 10, 10, 10))), 0);
+  EXPECT_EQ(grown.seed, focus.seed);
+  EXPECT_EQ(grown.threshold, focus.threshold);
+  EXPECT_EQ(cv::norm(grown.surprise, focus.surprise, cv::NORM_INF), 0.0);
+  EXPECT_EQ(GrowFocus(focus, cv::Mat::zeros(surprise.size(), CV_8UC1)).box, focus.box);
+  EXPECT_THROW(GrowFocus(focus, cv::Mat::zeros(10, 10, CV_8UC1)), std::invalid_argument);
+  // Without a seed (nothing covered) there is nothing to grow from.
+  const FocusOfAttention none = FindFocusOfAttention(
+      cv::Mat(120, 160, CV_32F, cv::Scalar(std::numeric_limits<float>::quiet_NaN())));
+  EXPECT_TRUE(GrowFocus(none, mask).box.empty());
+}
+
 // θ_S is a double, the surprise float: on random maps (θ_S rounding either way) every marked
 // pixel passes SurprisingShare's test, so a window inside the mask has ρ_S = 1.
 TEST(FocusOfAttention, MarkedPixelsReachTheThresholdWhateverItsRounding) {

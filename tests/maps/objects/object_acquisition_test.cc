@@ -211,6 +211,47 @@ TEST(ObjectAcquisition, OnlyFeaturesNearerThanExpectedAreLearntWhenAsked) {
   }
 }
 
+// An added face whose surprise has a hole down its middle, as where its print matches what the
+// map expects behind it: the thesis's flood fill stops at the hole, its focus box covers the left
+// part, and only there are features learnt. With grow_focus_over_nearer the focus grows over the
+// face's depth, nearer than the wall the map expects, across the hole: the right part, which
+// surprises too, is learnt as well.
+TEST(ObjectAcquisition, TheFocusGrowsOverTheNearerObjectWhenAsked) {
+  constexpr double kHole = 0.04;  // m either side of the face's centre: about 22 px at 1 m
+  const auto learn = [](bool grow) {
+    ObjectAcquisitionOptions options;
+    options.grow_focus_over_nearer = grow;
+    ObjectAcquisition acquisition(options);
+    const cv::Mat wall(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+    for (int t = 0; t < 12; ++t) {
+      const Rendered r = Render(t, true);
+      cv::Mat with_hole = r.face.clone();
+      const Eigen::Vector3d c = Pose(t).translation();
+      for (int u = 0; u < kCamera.width; ++u)
+        if (std::abs(c.x() + kFaceZ * kCamera.RayCam(u, 0).x() / kCamera.RayCam(u, 0).z()) < kHole)
+          with_hole.col(u).setTo(0);
+      const AcquisitionStep s =
+          acquisition.Process(r.rgb, r.depth, Surprise(with_hole, t), wall, kCamera, Pose(t));
+      EXPECT_EQ(s.change.kind, ChangeKind::kAdded) << "frame " << t;
+      // The face spans 0.4 m at 1 m, 0.4 · fx px; the part left of the hole 0.16 m.
+      const double face_px = 2 * kFaceHalf * kCamera.fx / kFaceZ;
+      const double left_px = (kFaceHalf - kHole) * kCamera.fx / kFaceZ;
+      EXPECT_NEAR(s.focus.box.width, grow ? face_px : left_px, 3.0) << "frame " << t;
+    }
+    return acquisition.learner().database();
+  };
+  const auto right_of_hole = [](const FeatureDatabase& db) {
+    int n = 0;
+    for (int h = 0; h < db.features(); ++h) n += db.Position(h).x() > kHole;
+    return n;
+  };
+  const FeatureDatabase thesis = learn(false), grown = learn(true);
+  ASSERT_GE(thesis.features(), 5);
+  EXPECT_EQ(right_of_hole(thesis), 0);
+  EXPECT_GE(right_of_hole(grown), 5);
+  EXPECT_EQ(grown.objects(), 1);
+}
+
 // A static camera: the appearance map stores each frame's depth, so from the second frame on it
 // expects the new face where it is. The face is still learnt — the object being learnt stays
 // added — and recognised.
