@@ -108,21 +108,31 @@ std::vector<StepRow> ReadSteps(const std::string& path) {
   std::getline(in, line);
   if (line.rfind("frame,box_x,box_y,box_width,box_height,change", 0) != 0)
     throw std::runtime_error(path + ": not novelty-run's objects.csv (header " + line + ")");
+  // Cells by the header's names, so that a column added to the file does not shift the others.
+  const std::vector<std::string> header = SplitCsv(line);
+  const auto column = [&](const char* name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end())
+      throw std::runtime_error(path + ": no column " + name + " (header " + line + ")");
+    return std::size_t(it - header.begin());
+  };
+  const std::size_t extracted = column("extracted"), learnt = column("learnt"),
+                    object = column("object"), database_features = column("database_features");
   std::vector<StepRow> rows;
   for (int n = 2; std::getline(in, line); ++n) {
     const std::vector<std::string> c = SplitCsv(line);
     try {
-      if (c.size() < 16) throw std::invalid_argument("too few cells");
+      if (c.size() != header.size()) throw std::invalid_argument("not as many cells as the header");
       StepRow r;
       r.frame = std::stoi(c[0]);
       r.has_box = !c[1].empty();
       if (r.has_box)
         r.box = cv::Rect(std::stoi(c[1]), std::stoi(c[2]), std::stoi(c[3]), std::stoi(c[4]));
       r.change = c[5];
-      r.extracted = std::stoi(c[8]);
-      r.learnt = std::stoi(c[11]);
-      r.object = std::stoi(c[13]);
-      r.database_features = std::stoi(c[14]);
+      r.extracted = std::stoi(c[extracted]);
+      r.learnt = std::stoi(c[learnt]);
+      r.object = std::stoi(c[object]);
+      r.database_features = std::stoi(c[database_features]);
       rows.push_back(r);
     } catch (const std::exception& e) {
       throw std::runtime_error(path + ":" + std::to_string(n) + ": malformed row (" + e.what() +

@@ -35,7 +35,7 @@ const char* RecognisedName(objects::LearnerStep::Recognised r) {
 
 ObjectStepsCsv::ObjectStepsCsv(const std::string& path) : path_(path), out_(path) {
   out_ << "frame,box_x,box_y,box_width,box_height,change,observed_depth,expected_depth,extracted,"
-          "reconstructed,static,learnt,recognised,object,database_features,matches\n";
+          "not_nearer,reconstructed,static,learnt,recognised,object,database_features,matches\n";
   if (!out_) throw std::runtime_error(path + ": cannot write");
 }
 
@@ -51,9 +51,10 @@ void ObjectStepsCsv::Add(int frame, const objects::AcquisitionStep& s, int datab
     out_ << s.change.observed_depth << "," << s.change.predicted_depth << ",";
   else
     out_ << ",,";
-  out_ << s.extracted << "," << s.reconstructed << "," << s.learner.static_features << ","
-       << s.learner.learnt << "," << RecognisedName(s.learner.recognised) << ","
-       << s.learner.object << "," << database_features << ",";
+  out_ << s.extracted << "," << s.not_nearer << "," << s.reconstructed << ","
+       << s.learner.static_features << "," << s.learner.learnt << ","
+       << RecognisedName(s.learner.recognised) << "," << s.learner.object << ","
+       << database_features << ",";
   for (std::size_t k = 0; k < s.learner.matches_per_object.size(); ++k)
     out_ << (k ? ";" : "") << s.learner.matches_per_object[k];
   out_ << "\n";

@@ -15,8 +15,9 @@ class ObjectStepsCsv {
   /// Creates `path` with its header line; throws std::runtime_error naming it if it cannot.
   explicit ObjectStepsCsv(const std::string& path);
   /// One row: frame, focus box (x, y, width, height; empty when none), change (added, removed,
-  /// unchanged, unknown) with the observed and expected mean depth (m), features extracted, reconstructed,
-  /// static and learnt, what recognised (nothing, database, active, new) which object (−1 none),
+  /// unchanged, unknown) with the observed and expected mean depth (m), features extracted, of
+  /// them left out as not nearer (learn_only_nearer_features), of the rest reconstructed, static
+  /// and learnt, what recognised (nothing, database, active, new) which object (−1 none),
   /// the database's size after the frame, and the matches per object ("3;0;12").
   void Add(int frame, const objects::AcquisitionStep& step, int database_features);
 

@@ -20,7 +20,8 @@ TEST(ObjectStepsCsv, WritesAHeaderAndOneLinePerFrame) {
     s.change.known_share = 1.0;
     s.change.observed_depth = 1.25;
     s.change.predicted_depth = 2.5;
-    s.extracted = 12;
+    s.extracted = 14;
+    s.not_nearer = 2;
     s.reconstructed = 11;
     s.learner.static_features = 7;
     s.learner.learnt = 3;
@@ -35,9 +36,10 @@ TEST(ObjectStepsCsv, WritesAHeaderAndOneLinePerFrame) {
   text << in.rdbuf();
   EXPECT_EQ(text.str(),
             "frame,box_x,box_y,box_width,box_height,change,observed_depth,expected_depth,"
-            "extracted,reconstructed,static,learnt,recognised,object,database_features,matches\n"
-            "42,10,20,30,40,added,1.25,2.5,12,11,7,3,database,1,88,0;5\n"
-            "43,,,,,unknown,,,0,0,0,0,nothing,-1,88,\n");
+            "extracted,not_nearer,reconstructed,static,learnt,recognised,object,database_features,"
+            "matches\n"
+            "42,10,20,30,40,added,1.25,2.5,14,2,11,7,3,database,1,88,0;5\n"
+            "43,,,,,unknown,,,0,0,0,0,0,nothing,-1,88,\n");
   std::filesystem::remove(path);
   EXPECT_THROW(ObjectStepsCsv("/nonexistent-dir/objects.csv"), std::runtime_error);
 }
