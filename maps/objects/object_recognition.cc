@@ -72,6 +72,12 @@ FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor
 
 FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor,
                                    const cv::Mat& depth, const core::PinholeCamera& camera) {
+  // A depth of another size would give each keypoint the depth of another place.
+  if (!depth.empty() && depth.size() != grey.size())
+    throw std::invalid_argument("ExtractFrameFeatures: the depth image is " +
+                                std::to_string(depth.cols) + "x" + std::to_string(depth.rows) +
+                                ", the grey image " + std::to_string(grey.cols) + "x" +
+                                std::to_string(grey.rows));
   FrameFeatures f = ExtractFrameFeatures(grey, extractor);
   if (!depth.empty()) f.metric_sizes = MetricSizes(f.keypoints, depth, camera);
   return f;

@@ -67,8 +67,8 @@ struct FrameFeatures {
 
 /// The features of a whole frame, `grey` CV_8UC1.
 FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor);
-/// The same with their metric sizes, from `depth` (CV_32FC1 metres; empty: unknown) seen by
-/// `camera`.
+/// The same with their metric sizes, from `depth` (CV_32FC1 metres of `grey`'s size; empty:
+/// unknown) seen by `camera`. Throws std::invalid_argument for a depth of another size or type.
 FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor,
                                    const cv::Mat& depth, const core::PinholeCamera& camera);
 

@@ -228,6 +228,10 @@ TEST(ObjectRecognition, ConsistentKeypointsRejectATurnedPrintAndOneOfAnotherSize
   FrameFeatures bad = ExtractFrameFeatures(moved, *extractor, at_1m, kCamera);
   bad.metric_sizes.pop_back();
   EXPECT_THROW(MatchObjects(bad, db, kCamera, consistent), std::invalid_argument);
+  // So is a depth image of another size than the grey one (a keypoint would read another place).
+  EXPECT_THROW(
+      recognise(moved, at_1m(cv::Rect(0, 0, kCamera.width / 2, kCamera.height)), consistent),
+      std::invalid_argument);
 }
 
 TEST(ObjectRecognition, ADatabaseOfAnotherWidthIsAClearError) {
