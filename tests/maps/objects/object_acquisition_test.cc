@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
@@ -76,6 +77,25 @@ cv::Mat Surprise(const cv::Mat& changed, int t) {
   return s;
 }
 
+// Frames 0–11 of the face put down in front of the wall the map expects, learnt with `options`;
+// surprise on the part of the face `surprising(frame, t)` gives (CV_8U). Each frame must be
+// judged added; `check` sees each step.
+FeatureDatabase LearnAddedFace(
+    const ObjectAcquisitionOptions& options,
+    const std::function<cv::Mat(const Rendered&, int)>& surprising,
+    const std::function<void(const AcquisitionStep&, int)>& check = nullptr) {
+  ObjectAcquisition acquisition(options);
+  const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  for (int t = 0; t < 12; ++t) {
+    const Rendered r = Render(t, true);
+    const AcquisitionStep s = acquisition.Process(r.rgb, r.depth, Surprise(surprising(r, t), t),
+                                                  wall_depth, kCamera, Pose(t));
+    EXPECT_EQ(s.change.kind, ChangeKind::kAdded) << "frame " << t;
+    if (check) check(s, t);
+  }
+  return acquisition.learner().database();
+}
+
 TEST(ObjectAcquisition, LearnsAnAddedObjectAndRecognisesItLater) {
   ObjectAcquisition acquisition;
   const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
@@ -125,19 +145,13 @@ TEST(ObjectAcquisition, NearerPixelsFillTheHolesOfSurpriseOnAnAddedObject) {
   const auto learn = [](bool nearer_is_surprising) {
     ObjectAcquisitionOptions options;
     options.nearer_is_surprising = nearer_is_surprising;
-    ObjectAcquisition acquisition(options);
-    const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
-    for (int t = 0; t < 12; ++t) {
-      const Rendered r = Render(t, true);
+    return LearnAddedFace(options, [](const Rendered& r, int) {
       cv::Mat checker = r.face.clone();
       for (int v = 0; v < checker.rows; ++v)
         for (int u = 0; u < checker.cols; ++u)
           if ((u / 16 + v / 16) % 2) checker.at<uchar>(v, u) = 0;
-      const AcquisitionStep s =
-          acquisition.Process(r.rgb, r.depth, Surprise(checker, t), wall_depth, kCamera, Pose(t));
-      EXPECT_EQ(s.change.kind, ChangeKind::kAdded) << "frame " << t;
-    }
-    return acquisition.learner().database();
+      return checker;
+    });
   };
   EXPECT_EQ(learn(false).features(), 0);
   const FeatureDatabase db = learn(true);
@@ -221,24 +235,20 @@ TEST(ObjectAcquisition, TheFocusGrowsOverTheNearerObjectWhenAsked) {
   const auto learn = [](bool grow) {
     ObjectAcquisitionOptions options;
     options.grow_focus_over_nearer = grow;
-    ObjectAcquisition acquisition(options);
-    const cv::Mat wall(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
-    for (int t = 0; t < 12; ++t) {
-      const Rendered r = Render(t, true);
-      cv::Mat with_hole = r.face.clone();
+    const auto with_hole = [](const Rendered& r, int t) {
+      cv::Mat m = r.face.clone();
       const Eigen::Vector3d c = Pose(t).translation();
       for (int u = 0; u < kCamera.width; ++u)
         if (std::abs(c.x() + kFaceZ * kCamera.RayCam(u, 0).x() / kCamera.RayCam(u, 0).z()) < kHole)
-          with_hole.col(u).setTo(0);
-      const AcquisitionStep s =
-          acquisition.Process(r.rgb, r.depth, Surprise(with_hole, t), wall, kCamera, Pose(t));
-      EXPECT_EQ(s.change.kind, ChangeKind::kAdded) << "frame " << t;
-      // The face spans 0.4 m at 1 m, 0.4 · fx px; the part left of the hole 0.16 m.
-      const double face_px = 2 * kFaceHalf * kCamera.fx / kFaceZ;
-      const double left_px = (kFaceHalf - kHole) * kCamera.fx / kFaceZ;
+          m.col(u).setTo(0);
+      return m;
+    };
+    // The face spans 0.4 m at 1 m, 0.4 · fx px; the part left of the hole 0.16 m.
+    const double face_px = 2 * kFaceHalf * kCamera.fx / kFaceZ;
+    const double left_px = (kFaceHalf - kHole) * kCamera.fx / kFaceZ;
+    return LearnAddedFace(options, with_hole, [&](const AcquisitionStep& s, int t) {
       EXPECT_NEAR(s.focus.box.width, grow ? face_px : left_px, 3.0) << "frame " << t;
-    }
-    return acquisition.learner().database();
+    });
   };
   const auto right_of_hole = [](const FeatureDatabase& db) {
     int n = 0;
