@@ -9,8 +9,8 @@
 namespace novelty::objects {
 namespace {
 
-// The 8-connected part of `binary`'s non-zero pixels that holds `seed` (which must be one),
-// CV_8U 255 there, and its bounding box.
+// The 8-connected part of `binary`'s pixels of 255 (its only other value 0) that holds `seed`,
+// CV_8U 255 there, and its bounding box. Both callers' seeds are 255.
 cv::Mat ConnectedPart(const cv::Mat& binary, cv::Point seed, cv::Rect& box) {
   cv::Mat mask = cv::Mat::zeros(binary.rows + 2, binary.cols + 2, CV_8U);
   cv::floodFill(binary, mask, seed, cv::Scalar(0), &box, cv::Scalar(0), cv::Scalar(0),
@@ -77,9 +77,9 @@ FocusOfAttention MarkSurprising(const FocusOfAttention& focus, const cv::Mat& ma
 }
 
 FocusOfAttention GrowFocus(const FocusOfAttention& focus, const cv::Mat& mask) {
-  if (mask.type() != CV_8UC1 || mask.size() != focus.region.size())
-    throw std::invalid_argument("GrowFocus: the mask must be CV_8U of the surprise's size");
   if (focus.seed.x < 0) return focus;
+  if (mask.type() != CV_8UC1 || mask.size() != focus.region.size())
+    throw std::invalid_argument("GrowFocus: the mask must be CV_8U of the focus region's size");
   FocusOfAttention grown = focus;
   grown.region = ConnectedPart(focus.region | (mask != 0), focus.seed, grown.box);
   return grown;

@@ -25,7 +25,8 @@ struct FocusOfAttention {
   double threshold = 0.0;  ///< θ_S
   cv::Point seed{-1, -1};  ///< the most surprising pixel; (−1, −1) if no pixel is covered
   cv::Rect box;            ///< the filled region's bounding box (empty if no pixel is covered)
-  cv::Mat region;          ///< CV_8U, 255 in the filled region (8-connected, ≥ θ_S)
+  /// CV_8U, 255 in the filled region (8-connected, ≥ θ_S; GrowFocus adds the mask's pixels)
+  cv::Mat region;
 };
 
 /// `surprise`: CV_32F, NaN where the map does not cover (those pixels are left out of μ_S and σ_S

@@ -87,12 +87,15 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
                                 (frames_since_added_ <= options_.learner.forget_after_frames ||
                                  options_.learn_unchanged_change);
   step.learning = !step.focus.box.empty() && (added || unchanged_object);
-  // Where something now stands that the map did not see, once per frame for whichever option
-  // asks for it. Only an added region grows: grown in unchanged ones too, the focus took in
+  // Where something now stands that the map did not see, once per frame and only for an option
+  // that uses it. Only an added region grows: grown in unchanged ones too, the focus took in
   // more and recognition found less (docs/experiments.md).
   cv::Mat nearer;
-  if (kind == ChangeKind::kAdded ||
-      (options_.learn_only_nearer_features && !expected_depth.empty()))
+  const bool added_uses_nearer = kind == ChangeKind::kAdded &&
+                                 (options_.nearer_is_surprising || options_.grow_focus_over_nearer);
+  const bool extract_uses_nearer =
+      options_.learn_only_nearer_features && step.learning && !expected_depth.empty();
+  if (added_uses_nearer || extract_uses_nearer)
     nearer = NearerMask(depth, expected_depth, options_.change);
   if (options_.grow_focus_over_nearer && kind == ChangeKind::kAdded)
     step.focus = GrowFocus(step.focus, nearer);

@@ -51,9 +51,10 @@ struct ObjectAcquisitionOptions {
   bool learn_unchanged_change = false;
   /// Beyond the thesis: in a region judged added, ρ_S (eq. 5.5) counts as surprising the pixels
   /// whose depth is nearer than the farthest surface the map's views saw there (NearerMask, the
-  /// pixels that made the region added), as well as those above θ_S. Surprise on a new object has holes where its print happens to match the colours
-  /// the map expects behind it, and few descriptor windows lie 80 % on it; the depth says the
-  /// object is there all the same (and not on its shadow, which is not nearer). false: ρ_S from
+  /// pixels that made the region added), as well as those above θ_S. Surprise on a new object
+  /// has holes where its print happens to match the colours the map expects behind it, and few
+  /// descriptor windows lie 80 % on it; the depth says the object is there all the same (and
+  /// not on its shadow, which is not nearer). false: ρ_S from
   /// surprise alone (the thesis).
   bool nearer_is_surprising = false;
   /// Beyond the thesis: select only the features whose depth is nearer than the farthest
@@ -77,13 +78,16 @@ struct ObjectAcquisitionOptions {
   /// Only features with ρ_S > T are learnt, so alone it adds little: pair it with
   /// nearer_is_surprising (ρ_S counts the object's depth) and learn_only_nearer_features (the
   /// table in the grown box is left out): the three together learnt the experiment's three
-  /// objects as three classes at closings of 5–12 px (docs/experiments.md). false: the region of surprise alone (the thesis).
+  /// objects as three classes at closings of 5–12 px (docs/experiments.md). Regions judged
+  /// unchanged do not grow: grown there too, the experiment recognised less. false: the region
+  /// of surprise alone (the thesis).
   bool grow_focus_over_nearer = false;
 };
 
 struct AcquisitionStep {
-  FocusOfAttention focus;
-  ChangeClassification change;  ///< kUnknown also when no expected depth was given
+  FocusOfAttention focus;  ///< grown if grow_focus_over_nearer grew it
+  /// Of the focus region before it grew; kUnknown also when no expected depth was given.
+  ChangeClassification change;
   bool learning = false;  ///< the box's features went to the learner (added, or unknown and
                           ///< learn_unknown_change; a box found)
   int extracted = 0;      ///< features extracted in the box
@@ -111,7 +115,8 @@ class ObjectAcquisition {
   const ObjectAcquisitionOptions& options() const { return options_; }
 
  private:
-  // nearer: NearerMask, or empty where there is no expected depth.
+  // nearer: NearerMask whenever learn_only_nearer_features is on and an expected depth given;
+  // empty, every feature is kept.
   SelectedFeatures Extract(const cv::Mat& rgb, const cv::Mat& depth, const cv::Mat& nearer,
                            const cv::Rect& box, const core::PinholeCamera& camera,
                            AcquisitionStep& step);

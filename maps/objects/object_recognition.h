@@ -68,7 +68,8 @@ struct FrameFeatures {
 /// The features of a whole frame, `grey` CV_8UC1.
 FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor);
 /// The same with their metric sizes, from `depth` (CV_32FC1 metres of `grey`'s size; empty:
-/// unknown) seen by `camera`. Throws std::invalid_argument for a depth of another size or type.
+/// unknown) seen by `camera`. Throws std::invalid_argument for a depth of another size, or
+/// (MetricSizes) of another type.
 FrameFeatures ExtractFrameFeatures(const cv::Mat& grey, cv::Feature2D& extractor,
                                    const cv::Mat& depth, const core::PinholeCamera& camera);
 
@@ -88,8 +89,9 @@ FrameRecognition MatchObjects(const FrameFeatures& features, const FeatureDataba
                               const core::PinholeCamera& camera,
                               const ObjectRecognitionOptions& options = {});
 
-/// Both: `extractor` must give the database's descriptors; `depth` (CV_32FC1 metres, or empty:
-/// unknown) gives the keypoints' metric sizes for the consistency check.
+/// Both: `extractor` must give the database's descriptors; `depth` (CV_32FC1 metres of `grey`'s
+/// size, or empty: unknown) gives the keypoints' metric sizes for the consistency check. Throws
+/// as ExtractFrameFeatures and MatchObjects.
 FrameRecognition RecognizeObjects(const cv::Mat& grey, const cv::Mat& depth,
                                   cv::Feature2D& extractor, const FeatureDatabase& database,
                                   const core::PinholeCamera& camera,

@@ -262,6 +262,28 @@ TEST(ObjectAcquisition, TheFocusGrowsOverTheNearerObjectWhenAsked) {
   EXPECT_EQ(grown.objects(), 1);
 }
 
+// Only an added region grows. Here the map already expects the face's left quarter, where
+// surprise is, and the wall behind the rest of it: the region is unchanged, the rest of the face
+// stands nearer and touches it, and the focus stays on the quarter.
+TEST(ObjectAcquisition, AnUnchangedRegionDoesNotGrow) {
+  ObjectAcquisitionOptions options;
+  options.grow_focus_over_nearer = true;
+  options.learn_unchanged_change = true;
+  ObjectAcquisition acquisition(options);
+  const Rendered r = Render(0, true);
+  cv::Mat quarter = r.face.clone();
+  cv::Mat expected(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  for (int u = 0; u < kCamera.width; ++u)  // Pose(0) is at the origin: world x = z · ray
+    if (kFaceZ * kCamera.RayCam(u, 0).x() / kCamera.RayCam(u, 0).z() >= -kFaceHalf / 2)
+      quarter.col(u).setTo(0);
+  r.depth.copyTo(expected, quarter);
+  const AcquisitionStep s =
+      acquisition.Process(r.rgb, r.depth, Surprise(quarter, 0), expected, kCamera, Pose(0));
+  EXPECT_EQ(s.change.kind, ChangeKind::kUnchanged);
+  EXPECT_TRUE(s.learning);
+  EXPECT_NEAR(s.focus.box.width, kFaceHalf / 2 * kCamera.fx / kFaceZ, 3.0);
+}
+
 // A static camera: the appearance map stores each frame's depth, so from the second frame on it
 // expects the new face where it is. The face is still learnt — the object being learnt stays
 // added — and recognised.
