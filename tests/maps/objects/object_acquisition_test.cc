@@ -41,6 +41,12 @@ struct Rendered {
 
 // The wall (a smooth grey ramp, almost featureless) and, if `with_face`, the face at kFaceZ
 // centred on the world's Z axis, seen from Pose(t).
+// Where pixel (u, v)'s ray from Pose(t) meets the face's plane z = kFaceZ (world frame).
+Eigen::Vector3d OnFacePlane(int u, int v, int t) {
+  const Eigen::Vector3d ray = kCamera.RayCam(u, v) / kCamera.RayCam(u, v).z();
+  return Pose(t).translation() + kFaceZ * ray;
+}
+
 Rendered Render(int t, bool with_face) {
   static const cv::Mat texture = FaceTexture();
   Rendered r{cv::Mat(kCamera.height, kCamera.width, CV_8UC3),
@@ -194,11 +200,9 @@ TEST(ObjectAcquisition, OnlyFeaturesNearerThanExpectedAreLearntWhenAsked) {
     for (int t = 0; t < 12; ++t) {
       const Rendered r = Render(t, true);
       cv::Mat expected(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
-      const Eigen::Vector3d c = Pose(t).translation();
       for (int v = 0; v < kCamera.height; ++v)
         for (int u = 0; u < kCamera.width; ++u)
-          if (r.face.at<uchar>(v, u) &&
-              c.x() + kFaceZ * kCamera.RayCam(u, v).x() / kCamera.RayCam(u, v).z() > kThird)
+          if (r.face.at<uchar>(v, u) && OnFacePlane(u, v, t).x() > kThird)
             expected.at<float>(v, u) = float(kFaceZ);
       const AcquisitionStep s =
           acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), expected, kCamera, Pose(t));
@@ -237,10 +241,8 @@ TEST(ObjectAcquisition, TheFocusGrowsOverTheNearerObjectWhenAsked) {
     options.grow_focus_over_nearer = grow;
     const auto with_hole = [](const Rendered& r, int t) {
       cv::Mat m = r.face.clone();
-      const Eigen::Vector3d c = Pose(t).translation();
       for (int u = 0; u < kCamera.width; ++u)
-        if (std::abs(c.x() + kFaceZ * kCamera.RayCam(u, 0).x() / kCamera.RayCam(u, 0).z()) < kHole)
-          m.col(u).setTo(0);
+        if (std::abs(OnFacePlane(u, 0, t).x()) < kHole) m.col(u).setTo(0);
       return m;
     };
     // The face spans 0.4 m at 1 m, 0.4 · fx px; the part left of the hole 0.16 m.
@@ -273,9 +275,8 @@ TEST(ObjectAcquisition, AnUnchangedRegionDoesNotGrow) {
   const Rendered r = Render(0, true);
   cv::Mat quarter = r.face.clone();
   cv::Mat expected(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
-  for (int u = 0; u < kCamera.width; ++u)  // Pose(0) is at the origin: world x = z · ray
-    if (kFaceZ * kCamera.RayCam(u, 0).x() / kCamera.RayCam(u, 0).z() >= -kFaceHalf / 2)
-      quarter.col(u).setTo(0);
+  for (int u = 0; u < kCamera.width; ++u)
+    if (OnFacePlane(u, 0, 0).x() >= -kFaceHalf / 2) quarter.col(u).setTo(0);
   r.depth.copyTo(expected, quarter);
   const AcquisitionStep s =
       acquisition.Process(r.rgb, r.depth, Surprise(quarter, 0), expected, kCamera, Pose(0));
