@@ -18,9 +18,7 @@ cmake --build build-sanitize --parallel "$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:strict_string_checks=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-# The odometry and registration tests over whole simulated sequences, and the stereo + tracker
-# clip (plane sweep + BP on every frame), run 2–8 minutes each under
-# the sanitizers (10–30 s without), and the object database's simulated clips 30 s each (1.5 s
-# without): they run in the plain build only; their short cases run here.
-long='FromStereoAndTrackerTheGlass|DriftOnAQuarterCircle|RegistersASecondSequence|RegistersASequenceWhoseLighting|KeepsTrackingThroughAChangeOfLighting|RelocalizesAgainstKeyframes|CObjectDatabaseMap.(LearnsTheBoxPutDown|NeverLearnsWhereABoxWasTakenAway|SavedAndLoadedItIsTheSameDatabase)'
-ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)" --timeout 1800 -E "$long"
+# The tests listed in tests/sanitizer_skip.txt (whole sequences, 30 s to 5 min each under the
+# sanitizers) run in the plain build only.
+skip=$(grep -v -e '^#' -e '^$' tests/sanitizer_skip.txt | paste -sd '|')
+ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)" --timeout 1800 -E "$skip"
