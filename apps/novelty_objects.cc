@@ -54,6 +54,7 @@
 #include "core/nearest_pixel.h"
 #include "eval/html_report.h"
 #include "eval/matches_on_object.h"
+#include "eval/object_steps_csv.h"
 #include "eval/object_visibility.h"
 #include "eval/roc.h"
 #include "eval/roc_plot.h"
@@ -79,68 +80,6 @@ struct Args {
   int verify_nearest = 2;
   objects::KeypointConsistencyOptions consistency;  // the score "matches of consistent keypoints"
 };
-
-// One row of novelty-run's objects.csv (eval/object_steps_csv.h).
-struct StepRow {
-  int frame = 0;
-  bool has_box = false;
-  cv::Rect box;
-  std::string change;
-  int extracted = 0, learnt = 0, object = -1;
-  int database_features = 0;  // after the step
-};
-
-std::vector<std::string> SplitCsv(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream s(line);
-  for (std::string c; std::getline(s, c, ',');) cells.push_back(c);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
-std::vector<StepRow> ReadSteps(const std::string& path) {
-  std::ifstream in(path);
-  if (!in)
-    throw std::runtime_error(
-        path +
-        ": cannot open (novelty-run writes it when its --config declares a CObjectDatabaseMap)");
-  std::string line;
-  std::getline(in, line);
-  if (line.rfind("frame,box_x,box_y,box_width,box_height,change", 0) != 0)
-    throw std::runtime_error(path + ": not novelty-run's objects.csv (header " + line + ")");
-  // Cells by the header's names, so that a column added to the file does not shift the others.
-  const std::vector<std::string> header = SplitCsv(line);
-  const auto column = [&](const char* name) {
-    const auto it = std::find(header.begin(), header.end(), name);
-    if (it == header.end())
-      throw std::runtime_error(path + ": no column " + name + " (header " + line + ")");
-    return std::size_t(it - header.begin());
-  };
-  const std::size_t extracted = column("extracted"), learnt = column("learnt"),
-                    object = column("object"), database_features = column("database_features");
-  std::vector<StepRow> rows;
-  for (int n = 2; std::getline(in, line); ++n) {
-    const std::vector<std::string> c = SplitCsv(line);
-    try {
-      if (c.size() != header.size()) throw std::invalid_argument("not as many cells as the header");
-      StepRow r;
-      r.frame = std::stoi(c[0]);
-      r.has_box = !c[1].empty();
-      if (r.has_box)
-        r.box = cv::Rect(std::stoi(c[1]), std::stoi(c[2]), std::stoi(c[3]), std::stoi(c[4]));
-      r.change = c[5];
-      r.extracted = std::stoi(c[extracted]);
-      r.learnt = std::stoi(c[learnt]);
-      r.object = std::stoi(c[object]);
-      r.database_features = std::stoi(c[database_features]);
-      rows.push_back(r);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(path + ":" + std::to_string(n) + ": malformed row (" + e.what() +
-                               ")");
-    }
-  }
-  return rows;
-}
 
 std::string Percent(double v) {
   char b[32];
@@ -186,7 +125,7 @@ struct LearningEvaluation {
   int compared_frames = 0, centre_inside = 0;
 };
 
-LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
+LearningEvaluation EvaluateLearning(const std::vector<eval::ObjectStepRow>& steps,
                                     const sim::GroundTruthReader& truth, int objects,
                                     const std::string& out) {
   LearningEvaluation e;
@@ -197,7 +136,7 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
   std::ofstream csv(out + "/focus.csv");
   csv << "frame,box_cx,box_cy,true_cx,true_cy,true_object,arm_in_view,extracted,"
          "true_box_covered\n";
-  for (const StepRow& r : steps) {
+  for (const eval::ObjectStepRow& r : steps) {
     const eval::NewObjectView view = NewObjectAt(truth, r.frame);
     if (r.learnt > 0 && r.object >= 0 && r.object < objects && view.id >= 0)
       ++votes[std::size_t(r.object)][view.id];
@@ -246,9 +185,9 @@ LearningEvaluation EvaluateLearning(const std::vector<StepRow>& steps,
 // Per database feature, the frame it was learnt in (−1 unknown): the database appends each
 // step's learnt features, so a step's are the rows [database_features − learnt,
 // database_features) — also after a database loaded with --objects-in, whose own are unknown.
-std::vector<int> FeatureFrames(const std::vector<StepRow>& steps, int features) {
+std::vector<int> FeatureFrames(const std::vector<eval::ObjectStepRow>& steps, int features) {
   std::vector<int> frames(std::size_t(features), -1);
-  for (const StepRow& r : steps)
+  for (const eval::ObjectStepRow& r : steps)
     for (int h = r.database_features - r.learnt; h < r.database_features; ++h)
       if (h >= 0 && h < features) frames[std::size_t(h)] = r.frame;
   return frames;
@@ -648,7 +587,8 @@ int main(int argc, char** argv) {
       throw std::runtime_error(a.learnt +
                                "/map.object_database: no object was learnt; nothing to recognise");
     const objects::ObjectAcquisitionOptions& options = map.config().map;
-    const std::vector<StepRow> steps = ReadSteps(a.learnt + "/objects.csv");
+    const std::vector<eval::ObjectStepRow> steps =
+        eval::ReadObjectStepsCsv(a.learnt + "/objects.csv");
     const sim::GroundTruthReader learn_truth(a.learn_truth), truth(a.truth);
     std::filesystem::create_directories(a.out + "/panels");
 

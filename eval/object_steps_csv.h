@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "maps/objects/object_acquisition.h"
 
@@ -25,6 +26,22 @@ class ObjectStepsCsv {
   std::string path_;
   std::ofstream out_;
 };
+
+/// What novelty-objects reads back of a row of objects.csv.
+struct ObjectStepRow {
+  int frame = 0;
+  bool has_box = false;
+  cv::Rect box;        ///< the focus box, if has_box
+  std::string change;  ///< "added", "removed", "unchanged", "unknown"
+  int extracted = 0, learnt = 0, object = -1;
+  int database_features = 0;  ///< after the step
+};
+
+/// Reads an objects.csv that ObjectStepsCsv wrote, its cells by the header's names: a file of an
+/// older version without the later columns (not_nearer) reads the same. Throws
+/// std::runtime_error naming the file, and the line of a row that does not fit (other number of
+/// cells than the header, a number that is not one, a box with some cells empty).
+std::vector<ObjectStepRow> ReadObjectStepsCsv(const std::string& path);
 
 /// "added", "removed", "unchanged", "unknown".
 const char* ChangeKindName(objects::ChangeKind kind);
