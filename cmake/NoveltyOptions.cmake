@@ -76,9 +76,9 @@ if(NOVELTY_SANITIZE)
                                                     -fno-sanitize=alignment)
 endif()
 
-# Precompiled headers: the third-party headers nearly every file includes. Parsing them is most of
-# a compile (a test using MRPT spends 6 of its 16 s on them); with these, each library, each
-# variant and each set of test dependencies parses them once.
+# Precompiled headers: the third-party headers nearly every file includes. Parsing them is a large
+# part of a compile (a test using MRPT spends 6 of its 16 s on them); with these, each library,
+# each variant and each kind of test (tests/CMakeLists.txt) parses them once.
 set(NOVELTY_PCH_HEADERS <algorithm> <cmath> <cstdint> <limits> <memory> <optional> <stdexcept>
     <string> <vector> <Eigen/Core> <Eigen/Geometry> <opencv2/core.hpp> <opencv2/imgproc.hpp>)
 # ...and, for targets that depend on MRPT (sensors and above), its observations and archives.
@@ -92,7 +92,9 @@ function(novelty_precompile_headers target)
   endif()
   cmake_parse_arguments(ARG "" "" "EXTRA" ${ARGN})
   set(headers ${NOVELTY_PCH_HEADERS})
-  if(ARG_UNPARSED_ARGUMENTS MATCHES "mrpt::|novelty_sensors|novelty_mrpt|novelty_sim")
+  set(with_mrpt ${ARG_UNPARSED_ARGUMENTS})
+  list(FILTER with_mrpt INCLUDE REGEX "^(mrpt::.*|novelty_sensors|novelty_mrpt|novelty_sim)$")
+  if(with_mrpt)
     list(APPEND headers ${NOVELTY_PCH_MRPT_HEADERS})
   endif()
   target_precompile_headers(${target} PRIVATE ${headers} ${ARG_EXTRA})

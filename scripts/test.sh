@@ -2,8 +2,9 @@
 # Sets up, builds and runs every test (GoogleTest suites and benchmark smoke runs) with ctest; then
 # the example built with default flags against this build's installed package (scripts/example.sh),
 # the portable build: its kernel tests on each CPU variant and the example against it
-# (scripts/portable.sh), and the sanitizer build: every test again under ASan, UBSan and LSan, and
-# the fuzzers from their seeds (scripts/sanitize.sh).
+# (scripts/portable.sh), and the sanitizer build: the tests again under ASan, UBSan and LSan but
+# the whole-sequence ones of tests/sanitizer_skip.txt, and the fuzzers from their seeds
+# (scripts/sanitize.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh "$@"
