@@ -83,6 +83,12 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "ratio test against the second candidate of another place, not a duplicate of the "
             "nearest's blob (false = the thesis)")
         .Add(
+            "static_features_recognise",
+            [](C & c) -> auto& { return c.map.learner.static_features_recognise; },
+            "the object being learnt is recognised where the frame has static features, not "
+            "only where the ratio test against its active features passes (false = the ratio "
+            "test alone)")
+        .Add(
             "verify_pose", [](C & c) -> auto& { return c.map.learner.verify_pose; },
             "recognise only if the matches' 3-D places agree on a pose (OpenGV RANSAC; false = "
             "the thesis)")

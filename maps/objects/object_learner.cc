@@ -23,6 +23,12 @@ ObjectLearner::ObjectLearner(const ObjectLearnerOptions& options) : options_(opt
         "size_per_scale > 0, forget_after_frames >= 1, window_angle_sign ±1");
 }
 
+bool ObjectLearner::MatchesActiveFeatures(const cv::Mat& descriptors) const {
+  cv::Mat active_descriptors;
+  for (const ActiveFeature& g : active_) active_descriptors.push_back(g.descriptor);
+  return !RatioMatches(active_descriptors, descriptors, options_.match_ratio).empty();
+}
+
 LearnerStep ObjectLearner::Process(const FocusOfAttention& focus, const SelectedFeatures& f,
                                    const core::PinholeCamera& camera,
                                    const Eigen::Isometry3d& T_world_cam) {
@@ -76,10 +82,8 @@ LearnerStep ObjectLearner::Process(const FocusOfAttention& focus, const Selected
     step.recognised = LearnerStep::Recognised::kByDatabase;
     step.object = r.object;
   } else {
-    cv::Mat active_descriptors;
-    for (const ActiveFeature& g : active_) active_descriptors.push_back(g.descriptor);
-    const bool by_active =
-        !RatioMatches(active_descriptors, f.descriptors, options_.match_ratio).empty();
+    const bool by_active = (options_.static_features_recognise && !statics.empty()) ||
+                           MatchesActiveFeatures(f.descriptors);
     if (by_active && learning_object_ >= 0) {
       step.recognised = LearnerStep::Recognised::kByActiveFeatures;
       step.object = learning_object_;

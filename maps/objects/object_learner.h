@@ -51,6 +51,13 @@ struct ObjectLearnerOptions {
   /// Beyond the thesis: the ratio test against the database compares with the second candidate
   /// of another place (ratio_matches.h); false: with any second candidate (the thesis).
   bool distinct_second_match = false;
+  /// Beyond the thesis: the object being learnt is recognised by its active features wherever
+  /// the frame has static features — eq. 5.1 and 5.2 have tied each to an active feature by
+  /// place and descriptor — as well as where a selected feature passes the ratio test against
+  /// the active features. That test fails where the active features hold similar descriptors
+  /// (neighbouring places of one print), and the object then got a second class. false: the
+  /// ratio test alone.
+  bool static_features_recognise = false;
   PoseVerificationOptions verification;
 };
 
@@ -95,6 +102,9 @@ class ObjectLearner {
   const ObjectLearnerOptions& options() const { return options_; }
 
  private:
+  // Whether a selected feature passes the ratio test against the active features.
+  bool MatchesActiveFeatures(const cv::Mat& descriptors) const;
+
   ObjectLearnerOptions options_;
   FeatureDatabase database_;
   std::vector<ActiveFeature> active_;

@@ -36,6 +36,8 @@ TEST(ObjectDatabaseMapOptions, EachSwitchReachesItsOption) {
       {"grow_focus_over_nearer", [](const Config& c) { return c.map.grow_focus_over_nearer; }},
       {"distinct_second_match",
        [](const Config& c) { return c.map.learner.distinct_second_match; }},
+      {"static_features_recognise",
+       [](const Config& c) { return c.map.learner.static_features_recognise; }},
       {"verify_pose", [](const Config& c) { return c.map.learner.verify_pose; }},
   };
   const Config defaults;

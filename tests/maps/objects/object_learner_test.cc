@@ -217,6 +217,30 @@ TEST(ObjectLearner, ActiveFeaturesGrowWithPlacesNotWithFrames) {
   EXPECT_EQ(learner.active().size(), 25u);
 }
 
+// A print whose descriptors come in near-identical pairs (neighbouring places of one pattern):
+// the ratio test fails on each, against the database and the active features alike. Its static
+// features still tie it to the active features, and with static_features_recognise they keep
+// recognising the object being learnt; without, each frame of it is another new object.
+TEST(ObjectLearner, StaticFeaturesRecogniseTheObjectBeingLearntWhereTheRatioTestFails) {
+  Thing print = MakeThing({0.05, 0.0, 1.0}, 0.05, 24, 5);
+  for (int i = 1; i < 24; i += 2) print.descriptors.row(i - 1).copyTo(print.descriptors.row(i));
+  for (const bool on : {false, true}) {
+    ObjectLearnerOptions o;
+    o.static_features_recognise = on;
+    ObjectLearner learner(o);
+    for (int t = 0; t < 2; ++t)
+      learner.Process(Focus(print, t), See({&print}, t, 100), kCamera, Pose(t));
+    ASSERT_EQ(learner.database().objects(), 1) << on;
+    const LearnerStep s = learner.Process(Focus(print, 2), See({&print}, 2, 100), kCamera, Pose(2));
+    EXPECT_EQ(s.static_features, 24) << on;
+    EXPECT_EQ(s.recognised,
+              on ? LearnerStep::Recognised::kByActiveFeatures : LearnerStep::Recognised::kNewObject)
+        << on;
+    EXPECT_EQ(s.object, on ? 0 : 1) << on;
+    EXPECT_EQ(learner.database().objects(), on ? 1 : 2) << on;
+  }
+}
+
 TEST(ObjectLearner, BadInputIsRejected) {
   ObjectLearnerOptions o;
   o.min_surprising_share = 2.0;
