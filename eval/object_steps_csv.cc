@@ -72,6 +72,7 @@ std::vector<ObjectStepRow> ReadObjectStepsCsv(const std::string& path) {
         ": cannot open (novelty-run writes it when its --config declares a CObjectDatabaseMap)");
   std::string line;
   std::getline(in, line);
+  if (!line.empty() && line.back() == '\r') line.pop_back();
   if (line.rfind(kHeaderStart, 0) != 0)
     throw std::runtime_error(path + ": not novelty-run's objects.csv (header " + line + ")");
   // Cells by the header's names, so that a column added to the file does not shift the others.
@@ -89,6 +90,8 @@ std::vector<ObjectStepRow> ReadObjectStepsCsv(const std::string& path) {
                     database_features = column("database_features");
   std::vector<ObjectStepRow> rows;
   for (int n = 2; std::getline(in, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // a file saved with CRLF
+    if (line.empty()) continue;
     const std::vector<std::string> c = SplitCsv(line);
     try {
       if (c.size() != header.size()) throw std::invalid_argument("not as many cells as the header");

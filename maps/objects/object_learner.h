@@ -55,8 +55,10 @@ struct ObjectLearnerOptions {
   /// the frame has static features — eq. 5.1 and 5.2 have tied each to an active feature by
   /// place and descriptor — as well as where a selected feature passes the ratio test against
   /// the active features. That test fails where the active features hold similar descriptors
-  /// (neighbouring places of one print), and the object then got a second class. false: the
-  /// ratio test alone.
+  /// (neighbouring places of one print), and the object then got a second class. Active features
+  /// are whatever the focus box held, not only the object: like a ratio match, a static feature
+  /// on what stands around it recognises the object being learnt too, until the active
+  /// features are forgotten. false: the ratio test alone.
   bool static_features_recognise = false;
   PoseVerificationOptions verification;
 };

@@ -94,6 +94,23 @@ TEST(ReadObjectStepsCsv, ReadsAFileWithoutTheLaterColumnsAndWithColumnsItDoesNot
   ExpectRow(rows[0], {7, true, cv::Rect(1, 2, 3, 4), "added", 20, 4, 0, 4});
 }
 
+TEST(ReadObjectStepsCsv, ReadsCrlfLineEndsAndSkipsBlankLines) {
+  const std::string path = TempPath("object_steps_csv_crlf_test.csv");
+  WriteText(path,
+            "frame,box_x,box_y,box_width,box_height,change,observed_depth,expected_depth,"
+            "extracted,not_nearer,reconstructed,static,learnt,recognised,object,database_features,"
+            "matches\r\n"
+            "7,1,2,3,4,added,0.75,1.25,20,2,18,5,4,new,0,4,3\r\n"
+            "\r\n"
+            "8,,,,,unknown,,,0,0,0,0,0,nothing,-1,4,\r\n"
+            "\n");
+  const std::vector<ObjectStepRow> rows = ReadObjectStepsCsv(path);
+  std::filesystem::remove(path);
+  ASSERT_EQ(rows.size(), 2u);
+  ExpectRow(rows[0], {7, true, cv::Rect(1, 2, 3, 4), "added", 20, 4, 0, 4});
+  ExpectRow(rows[1], {8, false, cv::Rect(), "unknown", 0, 0, -1, 4});
+}
+
 // The message of the error ReadObjectStepsCsv throws for `text`, "" if none.
 std::string ReadError(const std::string& text) {
   const std::string path = TempPath("object_steps_csv_bad_test.csv");
