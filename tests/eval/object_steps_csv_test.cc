@@ -13,8 +13,15 @@ std::string TempPath(const char* name) {
   return (std::filesystem::temp_directory_path() / name).string();
 }
 
-void WriteText(const std::string& path, const std::string& text) {
+// What ReadObjectStepsCsv reads from a file (object_steps_csv_text_test.csv) holding `text`.
+std::vector<ObjectStepRow> ReadText(const std::string& text) {
+  const std::string path = TempPath("object_steps_csv_text_test.csv");
   std::ofstream(path) << text;
+  struct Remove {
+    std::string path;
+    ~Remove() { std::filesystem::remove(path); }
+  } remove{path};
+  return ReadObjectStepsCsv(path);
 }
 
 // A frame's step with every column set.
@@ -82,30 +89,24 @@ TEST(ReadObjectStepsCsv, ReadsBackWhatTheWriterWrote) {
 }
 
 TEST(ReadObjectStepsCsv, ReadsAFileWithoutTheLaterColumnsAndWithColumnsItDoesNotKnow) {
-  const std::string path = TempPath("object_steps_csv_old_test.csv");
   // Before not_nearer; and a column that a later version might add, before the ones read.
-  WriteText(path,
-            "frame,box_x,box_y,box_width,box_height,change,extra,observed_depth,expected_depth,"
-            "extracted,reconstructed,static,learnt,recognised,object,database_features,matches\n"
-            "7,1,2,3,4,added,x,0.75,1.25,20,18,5,4,new,0,4,0\n");
-  const std::vector<ObjectStepRow> rows = ReadObjectStepsCsv(path);
-  std::filesystem::remove(path);
+  const std::vector<ObjectStepRow> rows = ReadText(
+      "frame,box_x,box_y,box_width,box_height,change,extra,observed_depth,expected_depth,"
+      "extracted,reconstructed,static,learnt,recognised,object,database_features,matches\n"
+      "7,1,2,3,4,added,x,0.75,1.25,20,18,5,4,new,0,4,0\n");
   ASSERT_EQ(rows.size(), 1u);
   ExpectRow(rows[0], {7, true, cv::Rect(1, 2, 3, 4), "added", 20, 4, 0, 4});
 }
 
 TEST(ReadObjectStepsCsv, ReadsCrlfLineEndsAndSkipsBlankLines) {
-  const std::string path = TempPath("object_steps_csv_crlf_test.csv");
-  WriteText(path,
-            "frame,box_x,box_y,box_width,box_height,change,observed_depth,expected_depth,"
-            "extracted,not_nearer,reconstructed,static,learnt,recognised,object,database_features,"
-            "matches\r\n"
-            "7,1,2,3,4,added,0.75,1.25,20,2,18,5,4,new,0,4,3\r\n"
-            "\r\n"
-            "8,,,,,unknown,,,0,0,0,0,0,nothing,-1,4,\r\n"
-            "\n");
-  const std::vector<ObjectStepRow> rows = ReadObjectStepsCsv(path);
-  std::filesystem::remove(path);
+  const std::vector<ObjectStepRow> rows = ReadText(
+      "frame,box_x,box_y,box_width,box_height,change,observed_depth,expected_depth,"
+      "extracted,not_nearer,reconstructed,static,learnt,recognised,object,database_features,"
+      "matches\r\n"
+      "7,1,2,3,4,added,0.75,1.25,20,2,18,5,4,new,0,4,3\r\n"
+      "\r\n"
+      "8,,,,,unknown,,,0,0,0,0,0,nothing,-1,4,\r\n"
+      "\n");
   ASSERT_EQ(rows.size(), 2u);
   ExpectRow(rows[0], {7, true, cv::Rect(1, 2, 3, 4), "added", 20, 4, 0, 4});
   ExpectRow(rows[1], {8, false, cv::Rect(), "unknown", 0, 0, -1, 4});
@@ -113,16 +114,12 @@ TEST(ReadObjectStepsCsv, ReadsCrlfLineEndsAndSkipsBlankLines) {
 
 // The message of the error ReadObjectStepsCsv throws for `text`, "" if none.
 std::string ReadError(const std::string& text) {
-  const std::string path = TempPath("object_steps_csv_bad_test.csv");
-  WriteText(path, text);
-  std::string message;
   try {
-    ReadObjectStepsCsv(path);
+    ReadText(text);
   } catch (const std::runtime_error& e) {
-    message = e.what();
+    return e.what();
   }
-  std::filesystem::remove(path);
-  return message;
+  return "";
 }
 
 TEST(ReadObjectStepsCsv, ABadFileOrRowIsAnErrorNamingTheFileAndLine) {
@@ -138,7 +135,7 @@ TEST(ReadObjectStepsCsv, ABadFileOrRowIsAnErrorNamingTheFileAndLine) {
             std::string::npos);
   const std::string short_row = ReadError(header + good + "6,1,2,3,4,added\n");
   EXPECT_NE(short_row.find(":3: malformed row (not as many cells"), std::string::npos) << short_row;
-  EXPECT_NE(short_row.find("object_steps_csv_bad_test.csv"), std::string::npos) << short_row;
+  EXPECT_NE(short_row.find("object_steps_csv_text_test.csv"), std::string::npos) << short_row;
   EXPECT_NE(ReadError(header + "5,1,2,3,4,added,0.7,1.2,2O,2,18,5,4,new,0,4,0\n")
                 .find(":2: malformed row (extracted \"2O\" is not an integer)"),
             std::string::npos);
