@@ -63,6 +63,7 @@ void CObjectDatabaseMap::linkAppearanceMap(const std::shared_ptr<CAppearanceMap>
   if (!appearance) throw std::invalid_argument("CObjectDatabaseMap: no CAppearanceMap to link");
   appearance->setPredictDepth(true);
   appearance_ = appearance;
+  room_.reset();  // taken from this map at the next frame
   appearance_frames_ = appearance->framesInserted();
 }
 
@@ -78,8 +79,13 @@ bool CObjectDatabaseMap::internal_insertObservation(
   if (!taken || paused_) return false;
   const core::Frame& f = appearance->lastFrame();
   const appearance::AppearanceProducts& p = appearance->lastProducts();
-  last_ = acquisition_->Process(f.rgb, f.depth, p.surprise, p.expected_depth_span, f.camera,
-                                *f.T_world_cam);
+  cv::Mat expected_depth = p.expected_depth_span;
+  if (config_.depth_of_room_at_start) {
+    if (!room_) room_ = std::make_unique<appearance::RoomDepth>(appearance->map().view_map());
+    expected_depth = room_->DepthSpan(f.camera, *f.T_world_cam);
+  }
+  last_ =
+      acquisition_->Process(f.rgb, f.depth, p.surprise, expected_depth, f.camera, *f.T_world_cam);
   if (last_.learner.recognised == objects::LearnerStep::Recognised::kNewObject) {
     // At the object's index: objects may have been added to the database by hand before.
     learnt_at_.resize(std::size_t(last_.learner.object),
@@ -93,6 +99,7 @@ bool CObjectDatabaseMap::internal_insertObservation(
 void CObjectDatabaseMap::internal_clear() {
   acquisition_ = std::make_unique<objects::ObjectAcquisition>(config_.map);
   learnt_at_.clear();
+  room_.reset();
   last_ = {};
   frames_used_ = 0;
 }
@@ -157,6 +164,7 @@ void CObjectDatabaseMap::LoadFromFile(const std::string& path) {
   config_ = loaded.config_;
   acquisition_ = std::move(loaded.acquisition_);
   learnt_at_ = std::move(loaded.learnt_at_);
+  room_.reset();
   last_ = {};
   frames_used_ = 0;
 }
@@ -239,6 +247,7 @@ void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
   config_ = config;  // only now: a failure above leaves the map as it was
   acquisition_ = std::move(acquisition);
   learnt_at_ = std::move(learnt_at);
+  room_.reset();
   last_ = {};
 }
 

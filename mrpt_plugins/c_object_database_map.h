@@ -11,8 +11,12 @@
 // - insertObservation(obs, robotPose) uses the observation when the linked appearance map took it
 //   (it counts its frames), else returns false; lastStep() holds the frame's focus of attention,
 //   added/removed decision, features and recognition.
+// - With depth_of_room_at_start, added/removed is decided against the depth the appearance map's
+//   views held at the first frame this map used (maps/appearance/room_depth.h): the room before
+//   objects came, which the appearance map forgets as it takes each frame into its views.
 // - MRPT serialization saves the options and the database (descriptors, counts n_{h,k}, 3-D
-//   places, where each object was learnt); not the active features of an object being learnt.
+//   places, where each object was learnt); not the active features of an object being learnt, nor
+//   the room's depth (taken again at the first frame after a load).
 //   SaveToFile writes atomically; LoadFromFile leaves the map as it was when the file is truncated,
 //   of another class, or holds descriptors of another extractor.
 // - getVisualizationInto draws each object's features at their 3-D places, one colour per object,
@@ -30,6 +34,7 @@
 #include <vector>
 
 #include "core/eigen_abi.h"
+#include "maps/appearance/room_depth.h"
 #include "maps/objects/object_acquisition.h"
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/object_database_map_options.h"
@@ -96,6 +101,9 @@ class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::C
   std::vector<Eigen::Vector3d> learnt_at_;
   objects::AcquisitionStep last_;
   std::weak_ptr<CAppearanceMap> appearance_;
+  // With depth_of_room_at_start: the appearance map's views at the first frame used since the
+  // map was made, cleared or loaded (not saved: a loaded map takes it again).
+  std::unique_ptr<appearance::RoomDepth> room_;
   long appearance_frames_ = 0;  // the appearance map's frame count when this map last read it
   int frames_used_ = 0;
   bool paused_ = false;

@@ -78,6 +78,11 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "farthest surface the map saw as well as over surprise (false = the thesis: "
             "surprise alone; pair it with learn_only_nearer_features and nearer_is_surprising)")
         .Add(
+            "depth_of_room_at_start", [](C & c) -> auto& { return c.depth_of_room_at_start; },
+            "added/removed and nearer compare with the depth the appearance map's views held at "
+            "this map's first frame, the room before objects came (false: the views now, which "
+            "take in an object's depth once the robot has passed it)")
+        .Add(
             "distinct_second_match",
             [](C & c) -> auto& { return c.map.learner.distinct_second_match; },
             "ratio test against the second candidate of another place, not a duplicate of the "

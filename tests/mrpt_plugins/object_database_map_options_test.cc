@@ -21,6 +21,7 @@ TEST(ObjectDatabaseMapOptions, ShippedIniGivesTheThesisValues) {
   EXPECT_EQ(c.map.learner.forget_after_frames, 10);
   EXPECT_TRUE(c.map.learn_unknown_change);
   EXPECT_FALSE(c.map.learner.verify_pose) << "beyond the thesis: off";
+  EXPECT_FALSE(c.depth_of_room_at_start) << "beyond the thesis: off";
 }
 
 // Each switch beyond the thesis, set against its default in an .ini, reaches its own option
@@ -34,6 +35,7 @@ TEST(ObjectDatabaseMapOptions, EachSwitchReachesItsOption) {
       {"learn_only_nearer_features",
        [](const Config& c) { return c.map.learn_only_nearer_features; }},
       {"grow_focus_over_nearer", [](const Config& c) { return c.map.grow_focus_over_nearer; }},
+      {"depth_of_room_at_start", [](const Config& c) { return c.depth_of_room_at_start; }},
       {"distinct_second_match",
        [](const Config& c) { return c.map.learner.distinct_second_match; }},
       {"static_features_recognise",
