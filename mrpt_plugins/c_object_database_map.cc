@@ -62,8 +62,8 @@ CObjectDatabaseMap::CObjectDatabaseMap(const ObjectDatabaseMapConfig& config)
 void CObjectDatabaseMap::linkAppearanceMap(const std::shared_ptr<CAppearanceMap>& appearance) {
   if (!appearance) throw std::invalid_argument("CObjectDatabaseMap: no CAppearanceMap to link");
   appearance->setPredictDepth(true);
+  if (appearance != appearance_.lock()) room_.reset();  // taken from this map at its next frame
   appearance_ = appearance;
-  room_.reset();  // taken from this map at the next frame
   appearance_frames_ = appearance->framesInserted();
 }
 
@@ -79,11 +79,8 @@ bool CObjectDatabaseMap::internal_insertObservation(
   if (!taken || paused_) return false;
   const core::Frame& f = appearance->lastFrame();
   const appearance::AppearanceProducts& p = appearance->lastProducts();
-  cv::Mat expected_depth = p.expected_depth_span;
-  if (config_.depth_of_room_at_start) {
-    if (!room_) room_ = std::make_unique<appearance::RoomDepth>(appearance->map().view_map());
-    expected_depth = room_->DepthSpan(f.camera, *f.T_world_cam);
-  }
+  const cv::Mat expected_depth =
+      config_.depth_of_room_at_start ? ExpectedDepthWithRoom(*appearance) : p.expected_depth_span;
   last_ =
       acquisition_->Process(f.rgb, f.depth, p.surprise, expected_depth, f.camera, *f.T_world_cam);
   if (last_.learner.recognised == objects::LearnerStep::Recognised::kNewObject) {
@@ -94,6 +91,24 @@ bool CObjectDatabaseMap::internal_insertObservation(
   }
   ++frames_used_;
   return true;
+}
+
+// The room's farthest surface tells an object added since this map's first frame, which the
+// appearance map's views take in as the robot passes it; the views now tell one removed since,
+// which the room may never have held. So the span of both: added if nearer than the farthest of
+// either, removed if farther than the nearest of either. The room is taken at the first frame
+// (that frame's own depth among it: the map's prediction before the frame covers it) and again
+// when the appearance map is loaded or cleared.
+cv::Mat CObjectDatabaseMap::ExpectedDepthWithRoom(const CAppearanceMap& appearance) {
+  if (!room_ || room_maps_replaced_ != appearance.mapsReplaced()) {
+    room_ = std::make_unique<appearance::RoomDepth>(appearance.map().view_map());
+    room_maps_replaced_ = appearance.mapsReplaced();
+  }
+  const appearance::AppearanceProducts& p = appearance.lastProducts();
+  // At the pose the prior was predicted at (align_to_prior may have turned it).
+  const cv::Mat room = room_->DepthSpan(appearance.lastFrame().camera, p.T_world_cam);
+  return p.expected_depth_span.empty() ? room
+                                       : appearance::UnionOfDepthSpans(p.expected_depth_span, room);
 }
 
 void CObjectDatabaseMap::internal_clear() {

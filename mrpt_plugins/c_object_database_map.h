@@ -12,8 +12,11 @@
 //   (it counts its frames), else returns false; lastStep() holds the frame's focus of attention,
 //   added/removed decision, features and recognition.
 // - With depth_of_room_at_start, added/removed is decided against the depth the appearance map's
-//   views held at the first frame this map used (maps/appearance/room_depth.h): the room before
-//   objects came, which the appearance map forgets as it takes each frame into its views.
+//   views hold now together with what they held at the first frame this map used
+//   (maps/appearance/room_depth.h): the room as the robot knew it when it began to look for
+//   objects, whose depth the appearance map forgets as it takes each frame into its views. Let
+//   the appearance map learn the room first (setPaused, novelty-run --objects-from): what is not
+//   in its views then is not in the room.
 // - MRPT serialization saves the options and the database (descriptors, counts n_{h,k}, 3-D
 //   places, where each object was learnt); not the active features of an object being learnt, nor
 //   the room's depth (taken again at the first frame after a load).
@@ -66,6 +69,8 @@ class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::C
   std::vector<Eigen::Vector3d> learntAt() const;
   /// Frames used (the appearance map took them).
   int framesUsed() const { return frames_used_; }
+  /// With depth_of_room_at_start: the views of the room's depth as taken; -1 while none is.
+  int roomViews() const { return room_ ? room_->views() : -1; }
   /// While paused, observations are not used (insertObservation returns false): the appearance
   /// map learns the room first, as in the thesis's sequence I1, and surprise at sensor noise in a
   /// map still being built teaches no object. Not saved with the map.
@@ -85,6 +90,7 @@ class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::C
 
  private:
   void internal_clear() override;
+  cv::Mat ExpectedDepthWithRoom(const CAppearanceMap& appearance);
   bool internal_insertObservation(
       const mrpt::obs::CObservation& obs,
       const std::optional<const mrpt::poses::CPose3D>& robot_pose = std::nullopt) override;
@@ -101,9 +107,11 @@ class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::C
   std::vector<Eigen::Vector3d> learnt_at_;
   objects::AcquisitionStep last_;
   std::weak_ptr<CAppearanceMap> appearance_;
-  // With depth_of_room_at_start: the appearance map's views at the first frame used since the
-  // map was made, cleared or loaded (not saved: a loaded map takes it again).
+  // With depth_of_room_at_start: the appearance map's views at the first frame used since this
+  // map was made, cleared, loaded or linked to another appearance map, or since that one was
+  // loaded or cleared (its mapsReplaced() then); not saved.
   std::unique_ptr<appearance::RoomDepth> room_;
+  long room_maps_replaced_ = 0;
   long appearance_frames_ = 0;  // the appearance map's frame count when this map last read it
   int frames_used_ = 0;
   bool paused_ = false;

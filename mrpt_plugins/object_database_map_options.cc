@@ -79,9 +79,9 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "surprise alone; pair it with learn_only_nearer_features and nearer_is_surprising)")
         .Add(
             "depth_of_room_at_start", [](C & c) -> auto& { return c.depth_of_room_at_start; },
-            "added/removed and nearer compare with the depth the appearance map's views held at "
-            "this map's first frame, the room before objects came (false: the views now, which "
-            "take in an object's depth once the robot has passed it)")
+            "added/removed and nearer also compare with the depth the appearance map's views "
+            "held at this map's first frame, so an object stays added after they take in its "
+            "depth (false: the views now; let the map learn the room first, --objects-from)")
         .Add(
             "distinct_second_match",
             [](C & c) -> auto& { return c.map.learner.distinct_second_match; },

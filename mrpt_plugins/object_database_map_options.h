@@ -10,11 +10,12 @@ namespace novelty::mrpt_plugins {
 
 struct ObjectDatabaseMapConfig : public TabledOptions<ObjectDatabaseMapConfig> {
   objects::ObjectAcquisitionOptions map;
-  /// Beyond the thesis: the added/removed decision and the nearer-than-the-room tests
+  /// Beyond the thesis: the added/removed decision and the nearer-than-the-map tests
   /// (learn_only_nearer_features, nearer_is_surprising, grow_focus_over_nearer) compare with the
-  /// depth the appearance map's views held when this map used its first frame — the room before
-  /// objects came (maps/appearance/room_depth.h) — instead of the depth they hold now, which
-  /// takes in an object once the robot has passed it. false: the map's views now.
+  /// depth the appearance map's views hold now together with what they held at the first frame
+  /// this map used — the room as the robot knew it when it began to look for objects
+  /// (c_object_database_map.h) — so that an object stays added after the views have taken in its
+  /// depth. false: the views now.
   bool depth_of_room_at_start = false;
 
   static const OptionTable<ObjectDatabaseMapConfig>& Table();

@@ -61,6 +61,9 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   /// Frames inserted since construction (never reset: a map that reads this one's products, as
   /// CObjectDatabaseMap does, tells by it whether this map took an observation).
   long framesInserted() const { return frames_inserted_; }
+  /// Times a load or clear put a new map in place: a map that keeps something taken from this
+  /// one (CObjectDatabaseMap's room depth) tells by it that what it took is gone.
+  long mapsReplaced() const { return maps_replaced_; }
   /// Frames whose camera pose the pose checks found implausible (each logged as a warning).
   int poseWarnings() const { return pose_check_.warnings(); }
 
@@ -152,6 +155,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   }
   void ReplaceMap(std::unique_ptr<Map> map) {
     map_ = std::move(map);
+    ++maps_replaced_;
     last_ = {};
     frame_ = {};
     MapReplaced();
@@ -229,6 +233,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   const char* name_;
   const char* extension_;
   long frames_inserted_ = 0;
+  long maps_replaced_ = 0;
 };
 
 }  // namespace novelty::mrpt_plugins

@@ -133,13 +133,51 @@ TEST(CObjectDatabaseMap, LearnsTheBoxPutDownAndNothingElse) {
   EXPECT_EQ(int(cloud->size()), placed);
 }
 
+// With the room's depth too: the box stood in the room the object map began with, and what its
+// going uncovers is farther than the views now expect.
 TEST(CObjectDatabaseMap, NeverLearnsWhereABoxWasTakenAway) {
   if (Textures().empty()) GTEST_SKIP() << "textures/ of the shared test data is absent";
-  Played p;
-  Play(Simulate(false), p);
-  std::printf("%s\n", p.objects.asString().c_str());
-  EXPECT_EQ(p.objects.database().features(), 0);
-  EXPECT_EQ(p.objects.database().objects(), 0);
+  const std::vector<sim::SimulatedFrame> frames = Simulate(false);
+  for (const bool room : {false, true}) {
+    ObjectDatabaseMapConfig config;
+    config.depth_of_room_at_start = room;
+    Played p(config);
+    Play(frames, p);
+    std::printf("%s\n", p.objects.asString().c_str());
+    EXPECT_EQ(p.objects.database().features(), 0) << "depth_of_room_at_start " << room;
+    EXPECT_EQ(p.objects.database().objects(), 0) << "depth_of_room_at_start " << room;
+  }
+}
+
+// The room is taken at the object map's first frame, and again once the appearance map it came
+// from is cleared: never from a map that is gone.
+TEST(CObjectDatabaseMap, TakesTheRoomAgainWhenTheAppearanceMapIsCleared) {
+  if (Textures().empty()) GTEST_SKIP() << "textures/ of the shared test data is absent";
+  const std::vector<sim::SimulatedFrame> frames = Simulate(true);
+  ObjectDatabaseMapConfig config;
+  config.depth_of_room_at_start = true;
+  Played p(config);
+  p.objects.linkAppearanceMap(p.appearance);
+  p.objects.setPaused(true);  // the appearance map learns the room first
+  int views_at_first = 0;
+  for (int i = 0; i < 10; ++i) {
+    const auto obs = Observation(frames[std::size_t(i)]);
+    ASSERT_TRUE(p.appearance->insertObservation(obs));
+    if (i == 5) {
+      p.objects.setPaused(false);
+      views_at_first = p.appearance->map().store().size();
+      EXPECT_EQ(p.objects.roomViews(), -1) << "none taken before the first frame used";
+    }
+    p.objects.insertObservation(obs);
+  }
+  ASSERT_GT(views_at_first, 1) << "the robot moves a view's distance a frame";
+  ASSERT_GT(p.appearance->map().store().size(), views_at_first);
+  EXPECT_EQ(p.objects.roomViews(), views_at_first);
+  p.appearance->clear();
+  const auto obs = Observation(frames[10]);
+  ASSERT_TRUE(p.appearance->insertObservation(obs));
+  ASSERT_TRUE(p.objects.insertObservation(obs));
+  EXPECT_EQ(p.objects.roomViews(), 1) << "the cleared map's one view";
 }
 
 // The kinds of change found in the frames from kEvent to `until` whose focus lies mostly (by the
@@ -162,8 +200,9 @@ std::vector<objects::ChangeKind> KindsOnTheBox(const std::vector<sim::SimulatedF
 // A camera that stands while the box is put down replaces its view with every frame (the update
 // policy of view_based_map.h): from the next frame on, the appearance map expects the box's own
 // depth there, and measured against it the box stands where it is expected. Measured against the
-// room as the map held it when the object map began (depth_of_room_at_start) it is nearer than
-// the table behind it — added — in every standing frame whose focus lies on it.
+// room as well, as the map held it at the object map's first frame (depth_of_room_at_start; the
+// box appears after the 4.0 s frame is rendered), it is nearer than the table behind it — added —
+// in every standing frame whose focus lies on it.
 TEST(CObjectDatabaseMap, TheRoomAtItsStartSeesTheBoxAddedWhereTheMapHasTakenItIn) {
   if (Textures().empty()) GTEST_SKIP() << "textures/ of the shared test data is absent";
   const double stands_until = 3.5 + 2.0;
@@ -177,6 +216,7 @@ TEST(CObjectDatabaseMap, TheRoomAtItsStartSeesTheBoxAddedWhereTheMapHasTakenItIn
   const std::vector<objects::ChangeKind> kinds_room = KindsOnTheBox(frames, room, stands_until);
   // Surprise stays on the box for a few frames while the appearance map learns it.
   ASSERT_GE(kinds_room.size(), 3u) << "standing frames whose focus lies on the box";
+  ASSERT_EQ(kinds_now.size(), kinds_room.size()) << "one surprise, one focus";
   for (objects::ChangeKind k : kinds_room) EXPECT_EQ(k, objects::ChangeKind::kAdded);
   EXPECT_GE(std::count(kinds_now.begin(), kinds_now.end(), objects::ChangeKind::kUnchanged),
             std::ptrdiff_t(kinds_now.size() / 2))

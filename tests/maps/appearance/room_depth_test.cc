@@ -99,5 +99,20 @@ TEST(RoomDepth, AnEmptyMapPredictsNoDepth) {
   EXPECT_EQ(cv::countNonZero(span.reshape(1)), 0);
 }
 
+// Known answers: both known, one known (0 or NaN in the other), none.
+TEST(UnionOfDepthSpans, NearestOfTheNearestFarthestOfTheFarthestOverTheKnown) {
+  const float nan = std::nanf("");
+  const cv::Mat a = (cv::Mat_<cv::Vec2f>(1, 5) << cv::Vec2f(1, 2), cv::Vec2f(1, 2), cv::Vec2f(0, 0),
+                     cv::Vec2f(nan, nan), cv::Vec2f(0, 0));
+  const cv::Mat b = (cv::Mat_<cv::Vec2f>(1, 5) << cv::Vec2f(1.5, 3), cv::Vec2f(0, 0),
+                     cv::Vec2f(4, 5), cv::Vec2f(4, 5), cv::Vec2f(nan, nan));
+  const cv::Mat u = UnionOfDepthSpans(a, b);
+  ASSERT_EQ(u.type(), CV_32FC2);
+  const std::vector<cv::Vec2f> expected = {{1, 3}, {1, 2}, {4, 5}, {4, 5}, {0, 0}};
+  for (int x = 0; x < 5; ++x) EXPECT_EQ(u.at<cv::Vec2f>(0, x), expected[std::size_t(x)]) << x;
+  EXPECT_THROW(UnionOfDepthSpans(a, b.colRange(0, 4)), std::invalid_argument);
+  EXPECT_THROW(UnionOfDepthSpans(a, cv::Mat(1, 5, CV_32FC1)), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace novelty::appearance
