@@ -64,9 +64,10 @@ arc 0 0 1.0 -75 -105 0.15
 )" + "event 4.0 " + (box_added ? "add" : "remove") + " box\n";
 }
 
-std::vector<sim::SimulatedFrame> Simulate(bool box_added, double stop = 0.5) {
+// The clip's first `frames` frames (all if 0).
+std::vector<sim::SimulatedFrame> Simulate(bool box_added, double stop = 0.5, int frames = 0) {
   std::istringstream in(ClipText(box_added, stop));
-  return sim::SimulateFrames(sim::ParseScenario(in, "objects.scn", Textures()));
+  return sim::SimulateFrames(sim::ParseScenario(in, "objects.scn", Textures()), frames);
 }
 
 mrpt::obs::CObservation3DRangeScan Observation(const sim::SimulatedFrame& f) {
@@ -153,7 +154,8 @@ TEST(CObjectDatabaseMap, NeverLearnsWhereABoxWasTakenAway) {
 // from is cleared: never from a map that is gone.
 TEST(CObjectDatabaseMap, TakesTheRoomAgainWhenTheAppearanceMapIsCleared) {
   if (Textures().empty()) GTEST_SKIP() << "textures/ of the shared test data is absent";
-  const std::vector<sim::SimulatedFrame> frames = Simulate(true);
+  const std::vector<sim::SimulatedFrame> frames = Simulate(true, 0.5, 11);
+  ASSERT_EQ(frames.size(), 11u);
   ObjectDatabaseMapConfig config;
   config.depth_of_room_at_start = true;
   Played p(config);
