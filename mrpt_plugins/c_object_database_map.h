@@ -11,15 +11,17 @@
 // - insertObservation(obs, robotPose) uses the observation when the linked appearance map took it
 //   (it counts its frames), else returns false; lastStep() holds the frame's focus of attention,
 //   added/removed decision, features and recognition.
-// - With depth_of_room_at_start, added/removed is decided against the depth the appearance map's
-//   views hold now together with what they held at the first frame this map used
-//   (maps/appearance/room_depth.h): the room as the robot knew it when it began to look for
-//   objects, whose depth the appearance map forgets as it takes each frame into its views. Let
+// - With depth_of_room_at_start, added/removed and the nearer tests (learn_only_nearer_features,
+//   nearer_is_surprising, grow_focus_over_nearer) compare with the depth the appearance map's
+//   views hold now together with what they held at the first frame this map used — the first
+//   after setPaused(false), that frame's own depth included (maps/appearance/room_depth.h). Let
 //   the appearance map learn the room first (setPaused, novelty-run --objects-from): what is not
-//   in its views then is not in the room.
+//   in its views then is not in the room, and without that pass the room is one frame. The room
+//   is taken again after this map is cleared, loaded or linked to another appearance map, and
+//   after that map is cleared or loaded.
 // - MRPT serialization saves the options and the database (descriptors, counts n_{h,k}, 3-D
 //   places, where each object was learnt); not the active features of an object being learnt, nor
-//   the room's depth (taken again at the first frame after a load).
+//   the room's depth (taken again at the first frame after a load, objects in view included).
 //   SaveToFile writes atomically; LoadFromFile leaves the map as it was when the file is truncated,
 //   of another class, or holds descriptors of another extractor.
 // - getVisualizationInto draws each object's features at their 3-D places, one colour per object,
