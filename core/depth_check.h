@@ -6,7 +6,14 @@
 
 #include <opencv2/core.hpp>
 
+#include <cmath>
+
 namespace novelty::core {
+
+/// Whether a depth value is known: positive and finite (0 and NaN are unknown).
+inline bool IsKnownDepth(float d) {
+  return d > 0.0f && std::isfinite(d);
+}
 
 /// The values of `depth` (CV_32FC1) that are negative or ±infinite. Throws std::invalid_argument
 /// for another type.

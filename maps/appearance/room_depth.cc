@@ -1,9 +1,11 @@
 #include "maps/appearance/room_depth.h"
 
-#include <cmath>
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 #include <vector>
+
+#include "core/depth_check.h"
 
 namespace novelty::appearance {
 
@@ -13,11 +15,6 @@ ViewBasedMapOptions SnapshotOptions(const ViewBasedMapOptions& options) {
   ViewBasedMapOptions o = options;
   o.blend = {};  // nothing is blended: no warp output a blend option asks for is needed
   return o;
-}
-
-// False for 0 and NaN, the unknowns of a depth span.
-bool Known(float d) {
-  return d > 0.0f;
 }
 
 }  // namespace
@@ -56,7 +53,7 @@ cv::Mat UnionOfDepthSpans(const cv::Mat& a, const cv::Mat& b) {
     const cv::Vec2f* pb = b.ptr<cv::Vec2f>(y);
     cv::Vec2f* po = out.ptr<cv::Vec2f>(y);
     for (int x = 0; x < a.cols; ++x) {
-      const bool ka = Known(pa[x][0]), kb = Known(pb[x][0]);
+      const bool ka = core::IsKnownDepth(pa[x][0]), kb = core::IsKnownDepth(pb[x][0]);
       if (ka && kb) {
         po[x] = {std::min(pa[x][0], pb[x][0]), std::max(pa[x][1], pb[x][1])};
       } else {

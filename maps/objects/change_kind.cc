@@ -4,12 +4,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/depth_check.h"
+
 namespace novelty::objects {
 
 namespace {
-bool Known(float d) {
-  return d > 0.0f && std::isfinite(d);
-}
+using core::IsKnownDepth;
 
 // Nearer than the farthest surface a view saw there: something now stands in front of it.
 bool Nearer(float observed, float farthest, double rel) {
@@ -48,7 +48,7 @@ ChangeClassification ClassifyChange(const cv::Mat& region, const cv::Mat& observ
       if (!r[x]) continue;
       ++inside;
       const float n = p[span * x], f = p[span * x + span - 1];
-      if (!(Known(o[x]) && Known(n) && Known(f))) continue;
+      if (!(IsKnownDepth(o[x]) && IsKnownDepth(n) && IsKnownDepth(f))) continue;
       ++known;
       observed += o[x];
       nearest += n;
@@ -92,7 +92,8 @@ cv::Mat NearerMask(const cv::Mat& observed_depth, const cv::Mat& predicted_depth
     uchar* m = mask.ptr<uchar>(y);
     for (int x = 0; x < mask.cols; ++x) {
       const float n = p[span * x], f = p[span * x + span - 1];
-      m[x] = Known(o[x]) && Known(n) && Known(f) && Nearer(o[x], f, options.min_relative_difference)
+      m[x] = IsKnownDepth(o[x]) && IsKnownDepth(n) && IsKnownDepth(f) &&
+                     Nearer(o[x], f, options.min_relative_difference)
                  ? 255
                  : 0;
     }
