@@ -38,6 +38,11 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             [](C & c) -> auto& { return c.map.relative_descriptor_change; },
             "eq. 5.2's bound without a second camera, share of the descriptor's norm (chosen)")
         .Add(
+            "extraction_margin", [](C & c) -> auto& { return c.map.extraction_margin; },
+            "px, features are extracted from the focus box grown by this much, not the whole "
+            "frame (-1: the whole frame with the box as mask, as maps saved before it)",
+            1.0, -1.0)
+        .Add(
             "min_relative_depth_change",
             [](C & c) -> auto& { return c.map.change.min_relative_difference; },
             "added/removed: a pixel's observed and expected depth differ by this share (chosen: 5 %)")
@@ -116,6 +121,7 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
           CheckInRange(o.learner.min_surprising_share, 0, 1, "min_surprising_share");
           CheckInRange(o.learner.forget_after_frames, 1, 100000, "forget_after_frames");
           CheckInRange(o.relative_descriptor_change, 1e-6, 10, "relative_descriptor_change");
+          CheckInRange(o.extraction_margin, -1, 100000, "extraction_margin");
           CheckInRange(o.change.min_relative_difference, 1e-3, 10, "min_relative_depth_change");
           CheckInRange(o.change.min_known_share, 0, 1, "min_known_depth_share");
           CheckInRange(o.change.min_changed_share, 1e-3, 1, "min_changed_depth_share");

@@ -1,7 +1,10 @@
 #include "maps/objects/feature_extractor.h"
 
+#include <algorithm>
 #include <iterator>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
+#include <string>
 
 #include "maps/objects/msurf.h"
 
@@ -56,6 +59,30 @@ cv::Ptr<cv::Feature2D> CreateFeatureExtractor(FeatureExtractor e) {
       break;
   }
   return cv::AKAZE::create(cv::AKAZE::DESCRIPTOR_KAZE);
+}
+
+void DetectAndComputeInBox(cv::Feature2D& f, const cv::Mat& rgb, const cv::Rect& box, int margin,
+                           std::vector<cv::KeyPoint>& keypoints, cv::Mat& descriptors) {
+  const cv::Rect image(0, 0, rgb.cols, rgb.rows);
+  if (rgb.type() != CV_8UC3)
+    throw std::invalid_argument("DetectAndComputeInBox: the image must be CV_8UC3, is type " +
+                                std::to_string(rgb.type()));
+  if (box.empty() || (box & image) != box)
+    throw std::invalid_argument("DetectAndComputeInBox: the box is empty or not inside the " +
+                                std::to_string(rgb.cols) + "x" + std::to_string(rgb.rows) +
+                                " image");
+  cv::Rect crop = image;
+  if (margin >= 0) {
+    constexpr int kAlign = 8;  // SIFT halves the image per octave: octaves to 1/8 line up
+    const int x0 = std::max(0, box.x - margin) / kAlign * kAlign;
+    const int y0 = std::max(0, box.y - margin) / kAlign * kAlign;
+    crop = cv::Rect(cv::Point(x0, y0), box.br() + cv::Point(margin, margin)) & image;
+  }
+  cv::Mat grey, mask = cv::Mat::zeros(crop.size(), CV_8UC1);
+  cv::cvtColor(rgb(crop), grey, cv::COLOR_RGB2GRAY);
+  mask(box - crop.tl()).setTo(255);
+  f.detectAndCompute(grey, mask, keypoints, descriptors);
+  for (cv::KeyPoint& k : keypoints) k.pt += cv::Point2f(crop.tl());
 }
 
 int DescriptorWidth(FeatureExtractor e) { return Of(e).width; }

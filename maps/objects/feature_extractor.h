@@ -22,6 +22,19 @@ FeatureExtractor ParseFeatureExtractor(const std::string& name);
 /// A new extractor with its library's defaults.
 cv::Ptr<cv::Feature2D> CreateFeatureExtractor(FeatureExtractor e);
 
+/// The keypoints `f` finds with their centres in `box` and their descriptors, computed on the
+/// grey of `rgb` (CV_8UC3, R, G, B) cropped to `box` grown by `margin` px on each side, clipped to
+/// the image; keypoints are returned in the image's coordinates. An extractor that builds a
+/// pyramid over its whole input (SIFT, AKAZE) pays for the crop's area, not the image's. The
+/// crop's corner is moved down to a multiple of 8 px, so that SIFT's octaves to 1/8 sample the
+/// same pixels as on the whole image: a keypoint whose descriptor window and blur lie inside the
+/// crop is the whole image's, others near its edge may differ. The features the object learner
+/// can select lie ≥ 80 % on surprise inside the box (eq. 5.5), so their windows barely leave it.
+/// margin < 0: the whole image with the box as mask. Throws std::invalid_argument for an rgb that
+/// is not CV_8UC3 or a box that is not inside it.
+void DetectAndComputeInBox(cv::Feature2D& f, const cv::Mat& rgb, const cv::Rect& box, int margin,
+                           std::vector<cv::KeyPoint>& keypoints, cv::Mat& descriptors);
+
 /// The descriptor width (M-SURF 64, SIFT 128, AKAZE/KAZE 64). A database learnt with one
 /// extractor cannot be matched with another's descriptors, even of the same width: the map file
 /// names the extractor.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -114,13 +113,9 @@ SelectedFeatures ObjectAcquisition::Extract(const cv::Mat& rgb, const cv::Mat& d
                                             const cv::Mat& nearer, const cv::Rect& box,
                                             const core::PinholeCamera& camera,
                                             AcquisitionStep& step) {
-  // The whole frame with the box as mask: keypoints near the box's border keep the support
-  // their descriptor windows need outside it.
-  cv::Mat grey, mask = cv::Mat::zeros(rgb.size(), CV_8UC1);
-  cv::cvtColor(rgb, grey, cv::COLOR_RGB2GRAY);
-  mask(box).setTo(255);
   SelectedFeatures f;
-  extractor_->detectAndCompute(grey, mask, f.keypoints, f.descriptors);
+  DetectAndComputeInBox(*extractor_, rgb, box, options_.extraction_margin, f.keypoints,
+                        f.descriptors);
   if (f.descriptors.type() != CV_32F && !f.keypoints.empty())
     f.descriptors.convertTo(f.descriptors, CV_32F);
   step.extracted = int(f.keypoints.size());

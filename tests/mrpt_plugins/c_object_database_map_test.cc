@@ -353,6 +353,33 @@ TEST(CObjectDatabaseMap, AVersionOneFileKeepsTheLearntKeypoints) {
   EXPECT_TRUE(std::isnan(reader.database().Keypoint(1).size_m));
 }
 
+// A map saved before extraction_margin existed learnt on the whole frame: read, it goes on so;
+// a map saved now keeps its margin.
+TEST(CObjectDatabaseMap, AFileWithoutTheMarginGoesOnExtractingOnTheWholeFrame) {
+  const auto& rows = ObjectDatabaseMapConfig::Table().rows();
+  mrpt::io::CMemoryStream buffer;
+  auto out = mrpt::serialization::archiveFrom(buffer);
+  out << uint32_t(rows.size() - 1);
+  for (const auto& r : rows)
+    if (r.entry.key != "extraction_margin") out << r.entry.key << r.get(ObjectDatabaseMapConfig());
+  out << int32_t(0) << int32_t(0) << int32_t(0);  // no objects, no features
+  buffer.Seek(0);
+  auto in = mrpt::serialization::archiveFrom(buffer);
+  FileReader old_map;
+  old_map.serializeFrom(in, 1);
+  EXPECT_EQ(old_map.config().map.extraction_margin, -1);
+
+  FileReader writer, reader;
+  EXPECT_EQ(writer.config().map.extraction_margin, 32);
+  mrpt::io::CMemoryStream now;
+  auto out2 = mrpt::serialization::archiveFrom(now);
+  writer.serializeTo(out2);
+  now.Seek(0);
+  auto in2 = mrpt::serialization::archiveFrom(now);
+  reader.serializeFrom(in2, 1);
+  EXPECT_EQ(reader.config().map.extraction_margin, 32);
+}
+
 // Objects added to the database by hand have no place they were learnt from.
 TEST(CObjectDatabaseMap, ObjectsAddedByHandAreListedWithoutAPlace) {
   CObjectDatabaseMap map;
