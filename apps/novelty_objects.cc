@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "apps/command_line.h"
+#include "core/csv_field.h"
 #include "core/frame_stem.h"
 #include "core/nearest_pixel.h"
 #include "eval/html_report.h"
@@ -275,7 +276,26 @@ struct RecognitionRun {
   // (keypoint_consistency.h): [1] for matches on the object of their feature's class (ground
   // truth), [0] elsewhere. What the tolerances of "matches of consistent keypoints" rest on.
   std::vector<double> turn_deg[2], size_ratio[2];
+  // Ratio matches away from their class's object, by the ground-truth name of the pixel they land
+  // on, and each name's pixels over the frames: whether repetitive clutter draws more false
+  // matches than photo-printed clutter of its size.
+  std::map<std::string, long> elsewhere_matches, pixels;
 };
+
+// "name matches (per 10⁶ of its pixels)" for each name with matches, most first.
+std::string ElsewhereByName(const RecognitionRun& run) {
+  std::vector<std::pair<long, std::string>> by_count;
+  for (const auto& [name, n] : run.elsewhere_matches) by_count.emplace_back(n, name);
+  std::sort(by_count.rbegin(), by_count.rend());
+  std::string text;
+  for (const auto& [n, name] : by_count) {
+    const auto p = run.pixels.find(name);
+    const long px = p == run.pixels.end() ? 0 : p->second;
+    text += (text.empty() ? "" : ", ") + name + " " + std::to_string(n) + " (" +
+            (px > 0 ? Num(1e6 * double(n) / double(px), "%.1f") : "-") + ")";
+  }
+  return text.empty() ? "-" : text;
+}
 
 // Median and 95th percentile of `v` ("-" if empty).
 std::string MedianAnd95(const std::vector<double>& v, const char* format) {
@@ -322,6 +342,9 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
     if (ids.size() != frame.rgb.size())
       throw std::runtime_error(a.truth + ": the ids image of frame " + std::to_string(frame.index) +
                                " is not the size of its RGB image");
+    if (on_object_diagnostic)
+      for (const auto& [i, name] : truth.ObjectNames())
+        run.pixels[name] += eval::VisiblePixels(ids, i);
     for (int k = 0; k < db.objects(); ++k) {
       int visible = 0;
       const auto id = ids_by_name.find(names[std::size_t(k)]);
@@ -342,6 +365,10 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
                      ratio = objects::SizeRatio(learnt, features.metric_sizes.empty()
                                                             ? std::nan("")
                                                             : features.metric_sizes[c]);
+        if (!on) {
+          const auto name = truth.ObjectNames().find(at);
+          ++run.elsewhere_matches[name == truth.ObjectNames().end() ? "unlabelled" : name->second];
+        }
         if (std::isfinite(turn)) run.turn_deg[on].push_back(turn);
         if (std::isfinite(ratio)) run.size_ratio[on].push_back(ratio);
       }
@@ -647,7 +674,8 @@ int main(int argc, char** argv) {
     std::vector<std::vector<std::string>> table;
     const auto finding = [&](const std::string& what, const std::string& value,
                              const std::string& target, int holds) {
-      findings << what << ',' << value << ',' << target << ','
+      findings << core::CsvField(what) << ',' << core::CsvField(value) << ','
+               << core::CsvField(target) << ','
                << (holds < 0 ? ""
                    : holds   ? "yes"
                              : "no")
@@ -694,6 +722,10 @@ int main(int argc, char** argv) {
       finding(where + ": metric size ratio, median / 95th percentile (matches)",
               MedianAnd95(run.size_ratio[on], "%.2f"), "(diagnostic)", -1);
     }
+    finding(
+        "ratio matches elsewhere, by the ground truth's name where they land (matches; per "
+        "million of its pixels)",
+        ElsewhereByName(run), "(diagnostic)", -1);
     // Which objects the operating point finds: recall per object at the threshold of eq. 5.4's
     // matches that keeps FPR ≤ 0.3 %, and the false positives each object adds there.
     const double threshold = roc.ThresholdAtFpr(0.003);
