@@ -151,9 +151,10 @@ LearningEvaluation EvaluateLearning(const std::vector<eval::ObjectStepRow>& step
                              ? double((r.box & view.box).area()) / view.box.area()
                              : NAN;
     csv << r.frame << ',' << bx << ',' << by << ',' << gx << ',' << gy << ','
-        << (view.id >= 0
-                ? truth.ObjectNames().count(view.id) ? truth.ObjectNames().at(view.id) : "?"
-                : "")
+        << core::CsvField(view.id >= 0 ? truth.ObjectNames().count(view.id)
+                                             ? truth.ObjectNames().at(view.id)
+                                             : "?"
+                                       : "")
         << ',' << (view.arm_pixels > 0) << ',' << r.extracted << ',' << cover << '\n';
     mx.points.emplace_back(r.frame, bx);
     my.points.emplace_back(r.frame, by);
@@ -390,8 +391,8 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
         row.on_object =
             eval::MatchOnObject(db, k, features, on_object, kOnObjectMarginPx, thesis.match_ratio);
       }
-      csv << frame.index << ',' << k << ',' << names[std::size_t(k)] << ',' << visible << ','
-          << (visible >= a.min_visible);
+      csv << frame.index << ',' << k << ',' << core::CsvField(names[std::size_t(k)]) << ','
+          << visible << ',' << (visible >= a.min_visible);
       for (int score : row.scores) csv << ',' << score;
       csv << ',' << row.on_object.keypoints << ',' << row.on_object.matches << ','
           << row.on_object.mean_nearest_distance << '\n';
@@ -634,8 +635,8 @@ int main(int argc, char** argv) {
         const int on = FeatureOnObject(db, h, feature_frames[std::size_t(h)], learning, learn_truth,
                                        frame.camera);
         const Eigen::Vector3d& p = db.Position(h);
-        csv << h << ',' << k << ',' << learning.names[std::size_t(k)] << ',' << p.x() << ','
-            << p.y() << ',' << p.z() << ',' << on << '\n';
+        csv << h << ',' << k << ',' << core::CsvField(learning.names[std::size_t(k)]) << ','
+            << p.x() << ',' << p.y() << ',' << p.z() << ',' << on << '\n';
         if (on >= 0) ++judged, on_object += on;
       }
     }

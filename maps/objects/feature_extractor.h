@@ -22,18 +22,23 @@ FeatureExtractor ParseFeatureExtractor(const std::string& name);
 /// A new extractor with its library's defaults.
 cv::Ptr<cv::Feature2D> CreateFeatureExtractor(FeatureExtractor e);
 
-/// The keypoints `f` finds with their centres in `box` and their descriptors, computed on the
-/// grey of `rgb` (CV_8UC3, R, G, B) cropped to `box` grown by `margin` px on each side, clipped to
-/// the image; keypoints are returned in the image's coordinates. An extractor that builds a
-/// pyramid over its whole input (SIFT, AKAZE) pays for the crop's area, not the image's. The
-/// crop's corner is moved down to a multiple of 8 px, so that SIFT's octaves to 1/8 sample the
-/// same pixels as on the whole image: a keypoint whose descriptor window and blur lie inside the
-/// crop is the whole image's, others near its edge may differ. The features the object learner
-/// can select lie ≥ 80 % on surprise inside the box (eq. 5.5), so their windows barely leave it.
-/// margin < 0: the whole image with the box as mask. Throws std::invalid_argument for an rgb that
-/// is not CV_8UC3 or a box that is not inside it.
-void DetectAndComputeInBox(cv::Feature2D& f, const cv::Mat& rgb, const cv::Rect& box, int margin,
-                           std::vector<cv::KeyPoint>& keypoints, cv::Mat& descriptors);
+/// The keypoints `f`, an extractor of kind `e` (CreateFeatureExtractor), finds with their centres
+/// in `box` (rounded to the pixel) and their descriptors, computed on the grey of `rgb` (CV_8UC3,
+/// R, G, B). SIFT and AKAZE build their scale space over their whole input, so they get `rgb`
+/// cropped to `box` grown by `margin` px on each side, clipped to the image, and pay for the
+/// crop's area, not the image's; a keypoint whose descriptor window (side
+/// DescriptorWindowPerSize · size, turned by its angle) leaves the crop where the image goes on
+/// is left out, as its descriptor would be computed from part of its window. The crop's corner is
+/// moved down to a multiple of 8 px, so that SIFT's octaves to 1/8 sample the same pixels as on
+/// the whole image (coarser octaves hold keypoints whose windows span 300 px and more); what
+/// remains different is the blur near the crop's edge. M-SURF searches only near its mask already
+/// (msurf.h) and always gets the whole image with the box as mask, as every extractor does for
+/// margin < 0: every keypoint kept, with its whole window. Keypoints are returned in the image's
+/// coordinates. Throws std::invalid_argument for an rgb that is not CV_8UC3, a box that is not
+/// inside it, or an `e` that names no extractor.
+void DetectAndComputeInBox(FeatureExtractor e, cv::Feature2D& f, const cv::Mat& rgb,
+                           const cv::Rect& box, int margin, std::vector<cv::KeyPoint>& keypoints,
+                           cv::Mat& descriptors);
 
 /// The descriptor width (M-SURF 64, SIFT 128, AKAZE/KAZE 64). A database learnt with one
 /// extractor cannot be matched with another's descriptors, even of the same width: the map file

@@ -114,8 +114,8 @@ SelectedFeatures ObjectAcquisition::Extract(const cv::Mat& rgb, const cv::Mat& d
                                             const core::PinholeCamera& camera,
                                             AcquisitionStep& step) {
   SelectedFeatures f;
-  DetectAndComputeInBox(*extractor_, rgb, box, options_.extraction_margin, f.keypoints,
-                        f.descriptors);
+  DetectAndComputeInBox(options_.extractor, *extractor_, rgb, box, options_.extraction_margin,
+                        f.keypoints, f.descriptors);
   if (f.descriptors.type() != CV_32F && !f.keypoints.empty())
     f.descriptors.convertTo(f.descriptors, CV_32F);
   step.extracted = int(f.keypoints.size());

@@ -39,11 +39,14 @@ struct ObjectAcquisitionOptions {
   /// 512). 0.3: a match between neighbouring frames is nearer than that for M-SURF, unrelated
   /// features about 1 apart (msurf_test.cc on graf).
   double relative_descriptor_change = 0.3;
-  /// Features are extracted from the focus box grown by this many pixels on each side, not from
-  /// the whole frame (DetectAndComputeInBox): SIFT and AKAZE build their pyramids over what they
-  /// are given. 32: on graf1 at 320×240 every keypoint whose window lies ≥ 80 % in a 96 × 80 box
-  /// is the whole frame's (SIFT, M-SURF; AKAZE 498 of 501), descriptors within 4 % of their norm
-  /// (feature_extractor_test.cc). < 0: the whole frame with the box as mask.
+  /// SIFT and AKAZE extract features from the focus box grown by this many pixels on each side,
+  /// not from the whole frame (DetectAndComputeInBox): they build their scale space over what they
+  /// are given. Keypoints whose descriptor windows leave the crop are left out, so a larger margin
+  /// keeps larger keypoints. 32: on graf1 at 320×240, in 96 × 80 boxes, SIFT returns every
+  /// keypoint whose window fits, each the whole frame's with a descriptor within 20 % of its norm
+  /// (the same feature by eq. 5.2's bound; identical away from the crop's edge;
+  /// feature_extractor_test.cc). M-SURF, which searches only near the box already, always gets
+  /// the whole frame. < 0: the whole frame with the box as mask, every keypoint kept.
   int extraction_margin = 32;
   /// Learn where the appearance map expects no depth, or too little of the region has both
   /// depths to tell added from removed (ChangeKind::kUnknown): the thesis always learnt. Where

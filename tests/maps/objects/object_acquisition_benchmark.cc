@@ -78,11 +78,12 @@ void BM_FocusOfAttention(benchmark::State& state) {
 
 void BM_FeaturesInBox(benchmark::State& state) {
   const cv::Mat rgb = Rgb();
-  const cv::Ptr<cv::Feature2D> f = CreateFeatureExtractor(FeatureExtractor(state.range(0)));
+  const FeatureExtractor e = FeatureExtractor(state.range(0));
+  const cv::Ptr<cv::Feature2D> f = CreateFeatureExtractor(e);
   std::vector<cv::KeyPoint> keypoints;
   cv::Mat descriptors;
   for (auto _ : state)
-    DetectAndComputeInBox(*f, rgb, kBox, int(state.range(1)), keypoints, descriptors);
+    DetectAndComputeInBox(e, *f, rgb, kBox, int(state.range(1)), keypoints, descriptors);
   state.counters["features"] = double(keypoints.size());
 }
 
