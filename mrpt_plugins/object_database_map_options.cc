@@ -30,7 +30,8 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             [](C & c) -> auto& { return c.map.learner.min_surprising_share; },
             "T of eq. 5.5: share of a descriptor's window on surprise to learn it (thesis: 0.8)")
         .Add(
-            "forget_after_frames", [](C & c) -> auto& { return c.map.learner.forget_after_frames; },
+            "forget_after_frames",
+            [](C & c) -> auto& { return c.map.learner.forget_after_frames; },
             "frames without selected features that drop the active features (thesis: 10)")
         .Add(
             "relative_descriptor_change",
@@ -45,10 +46,10 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
         .Add(
             "min_relative_depth_change",
             [](C & c) -> auto& { return c.map.change.min_relative_difference; },
-            "added/removed: a pixel's observed and expected depth differ by this share (chosen: 5 "
-            "%)")
+            "added/removed: a pixel's observed and expected depth differ by this share (chosen: 5 %)")
         .Add(
-            "min_known_depth_share", [](C & c) -> auto& { return c.map.change.min_known_share; },
+            "min_known_depth_share",
+            [](C & c) -> auto& { return c.map.change.min_known_share; },
             "added/removed: share of the region with both depths needed to tell (chosen)")
         .Add(
             "min_changed_depth_share",
@@ -59,12 +60,14 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "learn where depth cannot tell added from removed (true = the thesis, which always "
             "learnt)")
         .Add(
-            "learn_unchanged_change", [](C & c) -> auto& { return c.map.learn_unchanged_change; },
+            "learn_unchanged_change",
+            [](C & c) -> auto& { return c.map.learn_unchanged_change; },
             "learn where the region's depth is the expected one (true = the thesis, which had no "
             "depth test; false: light and noise teach nothing, and an object whose shape the "
             "appearance map took in already is learnt for forget_after_frames after it was added)")
         .Add(
-            "nearer_is_surprising", [](C & c) -> auto& { return c.map.nearer_is_surprising; },
+            "nearer_is_surprising",
+            [](C & c) -> auto& { return c.map.nearer_is_surprising; },
             "in an added region, pixels nearer than the farthest surface the map saw count as "
             "surprising in rho_S of eq. 5.5 (false = the thesis: surprise alone)")
         .Add(
@@ -75,7 +78,8 @@ const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
             "learnt; pair it with a larger morphology_size, and not for a standing camera: "
             "object_acquisition.h)")
         .Add(
-            "grow_focus_over_nearer", [](C & c) -> auto& { return c.map.grow_focus_over_nearer; },
+            "grow_focus_over_nearer",
+            [](C & c) -> auto& { return c.map.grow_focus_over_nearer; },
             "in an added region, the focus grows over the touching pixels nearer than the "
             "farthest surface the map saw as well as over surprise (false = the thesis: "
             "surprise alone; pair it with learn_only_nearer_features and nearer_is_surprising)")
