@@ -343,14 +343,16 @@ RecognitionRun RunRecognition(const objects::FeatureDatabase& db,
     if (ids.size() != frame.rgb.size())
       throw std::runtime_error(a.truth + ": the ids image of frame " + std::to_string(frame.index) +
                                " is not the size of its RGB image");
-    if (on_object_diagnostic)
-      for (const auto& [i, name] : truth.ObjectNames())
-        run.pixels[name] += eval::VisiblePixels(ids, i);
+    std::map<int, int> pixels_of_id;  // each ground-truth id's visible pixels, counted once
+    for (const auto& [i, name] : truth.ObjectNames()) {
+      pixels_of_id[i] = eval::VisiblePixels(ids, i);
+      if (on_object_diagnostic) run.pixels[name] += pixels_of_id[i];
+    }
     for (int k = 0; k < db.objects(); ++k) {
       int visible = 0;
       const auto id = ids_by_name.find(names[std::size_t(k)]);
       if (id != ids_by_name.end())
-        for (int i : id->second) visible += eval::VisiblePixels(ids, i);
+        for (int i : id->second) visible += pixels_of_id[i];
       const objects::ObjectEvidence& e = r.per_object[std::size_t(k)];
       const objects::ObjectEvidence& ed = rd.per_object[std::size_t(k)];
       for (const objects::RatioMatch& m : on_object_diagnostic ? r.matches : none) {
