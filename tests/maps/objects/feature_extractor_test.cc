@@ -8,11 +8,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <string>
 
 #include "maps/objects/object_acquisition.h"
+#include "tests/maps/objects/graf_frame.h"
 
 namespace novelty::objects {
 namespace {
@@ -22,10 +22,7 @@ cv::Mat Frame() {
   const char* shared = std::getenv("NOVELTY_SHARED_DATA");
   const std::string path = std::string(shared ? shared : "") + "/graf/graf1.png";
   if (!shared || !std::filesystem::exists(path)) return {};
-  cv::Mat img = cv::imread(path, cv::IMREAD_COLOR), out;
-  cv::resize(img, out, {320, 240}, 0, 0, cv::INTER_AREA);
-  cv::cvtColor(out, out, cv::COLOR_BGR2RGB);
-  return out;
+  return GrafFrame(path);
 }
 
 // The part of `box` grown by `margin`, clipped to the frame, that every crop

@@ -5,11 +5,11 @@
 // tenth of the frame) and low noise elsewhere.
 #include <benchmark/benchmark.h>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "maps/objects/feature_extractor.h"
 #include "maps/objects/object_acquisition.h"
+#include "tests/maps/objects/graf_frame.h"
 
 namespace novelty::objects {
 namespace {
@@ -20,15 +20,13 @@ const cv::Rect kBox(120, 80, 96, 80);
 const int kDefaultMargin = ObjectAcquisitionOptions().extraction_margin;
 
 cv::Mat Rgb() {
-  const std::string path = std::string(NOVELTY_SOURCE_DIR) + "/../shared/data/graf/graf1.png";
-  cv::Mat img = cv::imread(path, cv::IMREAD_COLOR), out;
-  if (img.empty()) {
-    img.create(480, 640, CV_8UC3);
-    cv::RNG(5).fill(img, cv::RNG::UNIFORM, 0, 255);
-    cv::GaussianBlur(img, img, {0, 0}, 2.0);
-  }
+  const cv::Mat graf =
+      GrafFrame(std::string(NOVELTY_SOURCE_DIR) + "/../shared/data/graf/graf1.png");
+  if (!graf.empty()) return graf;
+  cv::Mat img(480, 640, CV_8UC3), out;
+  cv::RNG(5).fill(img, cv::RNG::UNIFORM, 0, 255);
+  cv::GaussianBlur(img, img, {0, 0}, 2.0);
   cv::resize(img, out, {320, 240}, 0, 0, cv::INTER_AREA);
-  cv::cvtColor(out, out, cv::COLOR_BGR2RGB);
   return out;
 }
 
