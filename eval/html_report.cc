@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/temporary_file.h"
+
 namespace novelty::eval {
 
 std::string HtmlEscape(const std::string& text) {
@@ -177,18 +179,18 @@ void HtmlReport::Image(const std::string& path, const std::string& caption) {
 }
 
 void HtmlReport::Save(const std::string& path) const {
-  const std::string tmp = path + ".tmp";
+  core::TemporaryFile tmp(path);
   {
-    std::ofstream out(tmp);
+    std::ofstream out(tmp.path());
     out << "<!DOCTYPE html>\n<html><head><meta charset='utf-8'><title>" << HtmlEscape(title_)
         << "</title>\n<style>body{font-family:sans-serif;max-width:1700px;margin:20px}"
            "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:3px 8px;"
            "text-align:right}figure{margin:8px 0}img{max-width:100%}</style></head><body>\n<h1>"
         << HtmlEscape(title_) << "</h1>\n"
         << body_ << "</body></html>\n";
-    if (!out) throw std::runtime_error(tmp + ": cannot write the report");
+    if (!out) throw std::runtime_error(path + ": cannot write the report");
   }
-  std::filesystem::rename(tmp, path);
+  tmp.Commit();
 }
 
 }  // namespace novelty::eval

@@ -5,9 +5,6 @@
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/opengl/CFrustum.h>
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +14,7 @@
 #include <stdexcept>
 
 #include "core/depth_check.h"
+#include "core/temporary_file.h"
 #include "maps/views/plane_codec.h"
 #include "mrpt_plugins/option_table.h"
 #include "sensors/rawlog/brief_message.h"
@@ -137,15 +135,6 @@ Eigen::Isometry3d ReadPose(mrpt::serialization::CArchive& in) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 4; ++c) in >> p.matrix()(r, c);
   return p;
-}
-
-// fsync of a file or a folder; throws std::runtime_error if it fails.
-void SyncToDisk(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) throw std::runtime_error("cannot open " + path + " to sync it");
-  const int synced = ::fsync(fd);
-  ::close(fd);
-  if (synced != 0) throw std::runtime_error("cannot sync " + path + " to disk");
 }
 
 // A view's depth and named planes after its camera and pose: encoded (versions ≥ 3; decoded
@@ -327,23 +316,20 @@ void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<dou
 }
 
 void SaveAtomically(const mrpt::serialization::CSerializable& object, const std::string& path) {
-  const std::string tmp = path + ".tmp";
   try {
-    // Plain: the planes are compressed already (views::EncodePlane); MRPT's reader takes plain
-    // and gzip'd files alike, so maps saved gzip'd before load as they did.
-    mrpt::io::CFileOutputStream file(tmp);
-    if (!file.fileOpenCorrectly()) throw std::runtime_error("cannot open " + tmp);
-    auto arch = mrpt::serialization::archiveFrom(file);
-    arch << object;
-    file.close();
-    // On disk before the rename, and the rename on disk before we return: a power cut then
-    // leaves the old map or the new one, never a renamed empty file.
-    SyncToDisk(tmp);
-    std::filesystem::rename(tmp, path);
-    SyncToDisk(std::filesystem::absolute(path).parent_path().string());
+    // A new name created exclusively: a file or link already at "<path>.tmp" is left alone.
+    core::TemporaryFile tmp(path);
+    {
+      // Plain: the planes are compressed already (views::EncodePlane); MRPT's reader takes plain
+      // and gzip'd files alike, so maps saved gzip'd before load as they did.
+      mrpt::io::CFileOutputStream file(tmp.path());
+      if (!file.fileOpenCorrectly()) throw std::runtime_error("cannot open " + tmp.path());
+      auto arch = mrpt::serialization::archiveFrom(file);
+      arch << object;
+      file.close();
+    }
+    tmp.Commit();  // on disk, then renamed: a power cut leaves the old map or the new one
   } catch (const std::exception& e) {  // MRPT's own message spans many lines: one is enough
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
     throw std::runtime_error(path + ": cannot save (folder missing, not writable or full?): " +
                              sensors::BriefMessage(e));
   }

@@ -4,9 +4,11 @@
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <exception>
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/temporary_file.h"
 #include "core/write_rgb_image.h"
 #include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rgbd_observation.h"
@@ -21,13 +23,16 @@ class RawlogOutput::Impl {
   mrpt::io::CFileOutputStream file;
 };
 
-RawlogOutput::RawlogOutput(const std::string& path) : final_path_(path), temp_path_(path + ".tmp") {
+RawlogOutput::RawlogOutput(const std::string& path)
+    : final_path_(path), temp_(std::make_unique<core::TemporaryFile>(path)) {
   images_dir_ = ImagesDirOf(path);
   std::filesystem::create_directories(images_dir_);
-  impl_ = std::make_unique<Impl>(temp_path_);
+  impl_ = std::make_unique<Impl>(temp_->path());
 }
 
 RawlogOutput::~RawlogOutput() {
+  // Left by an exception, the rawlog is not published: the temporary goes (the images stay).
+  if (std::uncaught_exceptions() > uncaught_at_start_) return;
   try {
     Close();
   } catch (...) {  // a destructor must not throw; Close() reports errors when called directly
@@ -78,7 +83,7 @@ void RawlogOutput::Close() {
   if (!impl_) return;
   impl_->file.close();
   impl_.reset();
-  std::filesystem::rename(temp_path_, final_path_);
+  temp_->Commit();
 }
 
 }  // namespace novelty::sensors

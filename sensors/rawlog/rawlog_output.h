@@ -1,7 +1,8 @@
 // Writes an MRPT rawlog in the "observations" format (a plain sequence of serialized
 // observations) with images stored externally in MRPT's `<name>_Images/` folder beside it, so
-// `rawlog-edit`, `RawLogViewer` and MRPT's CRawlog read it. Written to `<path>.tmp` and renamed on
-// Close(): a reader never sees half a rawlog. Used by the simulator and by the converters
+// `rawlog-edit`, `RawLogViewer` and MRPT's CRawlog read it. Written to a new temporary beside it
+// (core::TemporaryFile) and renamed on Close(): a reader never sees half a rawlog, and a program
+// that fails while writing publishes none. Used by the simulator and by the converters
 // (novelty-depth, novelty-poses).
 #pragma once
 
@@ -9,12 +10,14 @@
 #include <mrpt/serialization/CSerializable.h>
 
 #include <Eigen/Geometry>
+#include <exception>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <string>
 
 #include "core/eigen_abi.h"
 #include "core/pinhole_camera.h"
+#include "core/temporary_file.h"
 
 namespace novelty::sensors {
 
@@ -40,8 +43,8 @@ class RawlogOutput {
   /// observations through unchanged.
   void ShareImagesOf(const std::string& input_rawlog) const;
 
-  /// Flushes and renames the temporary to the final name (the destructor does it too, but
-  /// swallows errors).
+  /// Flushes and renames the temporary to the final name. The destructor does it too (swallowing
+  /// errors) unless it runs because of an exception: then nothing is published.
   void Close();
   const std::string& path() const { return final_path_; }
   const std::string& images_dir() const { return images_dir_; }
@@ -50,7 +53,9 @@ class RawlogOutput {
  private:
   class Impl;
   std::unique_ptr<Impl> impl_;
-  std::string final_path_, temp_path_, images_dir_;
+  std::string final_path_, images_dir_;
+  std::unique_ptr<core::TemporaryFile> temp_;
+  int uncaught_at_start_ = std::uncaught_exceptions();
   int count_ = 0;
 };
 

@@ -15,7 +15,7 @@
 //                              keeps the LED identities, which a point cloud would lose.
 //   wheel odometry             CObservationOdometry with encoder ticks and velocities
 // Timestamps are seconds since the scenario start, offset to 2011-01-01 00:00 UTC.
-// The file is written to `<name>.rawlog.tmp` and renamed on Close(): never a half rawlog.
+// The file is written to a new temporary beside it and renamed on Close(): never a half rawlog.
 #pragma once
 
 #include <Eigen/Geometry>
