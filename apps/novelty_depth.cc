@@ -18,6 +18,7 @@
 #include <optional>
 
 #include "apps/command_line.h"
+#include "apps/shell/program.h"
 #include "core/frame_stem.h"
 #include "core/range_check.h"
 #include "core/same_file.h"
@@ -30,93 +31,93 @@
 
 using namespace novelty;
 
-int main(int argc, char** argv) {
-  try {
-    novelty::apps::CommandLine cmd(
-        "Depth maps from stereo or trinocular rawlog images (plane sweep + BP).", "0.1");
-    TCLAP::UnlabeledValueArg<std::string> in("input", "Input rawlog", true, "", "IN.rawlog", cmd);
-    TCLAP::ValueArg<std::string> out("o", "out", "Output rawlog", true, "", "OUT.rawlog", cmd);
-    const sensors::StereoDepthOptions defaults;
-    TCLAP::ValueArg<double> near("", "near", "Nearest depth hypothesis (m)", false,
-                                 defaults.sweep.near, "M", cmd);
-    TCLAP::ValueArg<double> far("", "far", "Farthest depth hypothesis (m)", false,
-                                defaults.sweep.far, "M", cmd);
-    TCLAP::ValueArg<int> hypotheses("", "hypotheses", "Depth planes", false,
-                                    defaults.sweep.hypotheses, "N", cmd);
-    TCLAP::ValueArg<int> window("", "window", "Cost averaging window (pixels)", false,
-                                defaults.sweep.window, "N", cmd);
-    TCLAP::ValueArg<double> min_confidence(
-        "", "min-confidence",
-        "Pixels whose BP confidence (0..1) is below this get depth 0 (unknown)", false,
-        defaults.min_confidence, "C", cmd);
-    TCLAP::ValueArg<std::string> truth("", "groundtruth", "Report accuracy against this folder",
-                                       false, "", "DIR", cmd);
-    TCLAP::ValueArg<int> max_frames("", "frames", "Convert only the first N rig frames", false, 0,
-                                    "N", cmd);
-    cmd.Parse(argc, argv);
+namespace {
 
-    sensors::StereoDepthOptions options;
-    options.sweep.near = near.getValue();
-    options.sweep.far = far.getValue();
-    options.sweep.hypotheses = hypotheses.getValue();
-    options.sweep.window = window.getValue();
-    core::CheckInRange(min_confidence.getValue(), 0, 1, "--min-confidence");
-    options.min_confidence = static_cast<float>(min_confidence.getValue());
-    if (core::SameFile(in.getValue(), out.getValue()))
-      throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
-                                  in.getValue() + ": it would be overwritten");
+int Run(int argc, char** argv) {
+  novelty::apps::CommandLine cmd(
+      "Depth maps from stereo or trinocular rawlog images (plane sweep + BP).", "0.1");
+  TCLAP::UnlabeledValueArg<std::string> in("input", "Input rawlog", true, "", "IN.rawlog", cmd);
+  TCLAP::ValueArg<std::string> out("o", "out", "Output rawlog", true, "", "OUT.rawlog", cmd);
+  const sensors::StereoDepthOptions defaults;
+  TCLAP::ValueArg<double> near("", "near", "Nearest depth hypothesis (m)", false,
+                               defaults.sweep.near, "M", cmd);
+  TCLAP::ValueArg<double> far("", "far", "Farthest depth hypothesis (m)", false, defaults.sweep.far,
+                              "M", cmd);
+  TCLAP::ValueArg<int> hypotheses("", "hypotheses", "Depth planes", false,
+                                  defaults.sweep.hypotheses, "N", cmd);
+  TCLAP::ValueArg<int> window("", "window", "Cost averaging window (pixels)", false,
+                              defaults.sweep.window, "N", cmd);
+  TCLAP::ValueArg<double> min_confidence(
+      "", "min-confidence", "Pixels whose BP confidence (0..1) is below this get depth 0 (unknown)",
+      false, defaults.min_confidence, "C", cmd);
+  TCLAP::ValueArg<std::string> truth("", "groundtruth", "Report accuracy against this folder",
+                                     false, "", "DIR", cmd);
+  TCLAP::ValueArg<int> max_frames("", "frames", "Convert only the first N rig frames", false, 0,
+                                  "N", cmd);
+  cmd.Parse(argc, argv);
 
-    std::optional<sim::GroundTruthReader> ground_truth;
-    if (truth.isSet()) ground_truth.emplace(truth.getValue());
-    sensors::RigFrameReader reader(in.getValue());
-    sensors::RawlogOutput output(out.getValue());
-    const auto start = std::chrono::steady_clock::now();
-    int frames = 0, scored = 0;
-    double within_sum = 0.0;
-    std::vector<mrpt::serialization::CSerializable::Ptr> others;
-    for (sensors::RigFrame f; reader.Next(f, &others);) {
-      for (const auto& o : others) output.Write(*o);
-      others.clear();
-      if (max_frames.getValue() > 0 && frames >= max_frames.getValue()) break;
-      std::vector<sensors::SweepView> views;
-      for (size_t i = 1; i < f.images.size(); ++i)
-        views.push_back({f.images[i], f.cameras[i], f.ref_from_camera[i]});
-      const sensors::StereoDepth depth =
-          sensors::ComputeStereoDepth(f.images[0], f.cameras[0], views, options);
-      output.WriteRgbd(f.time, f.images[0], depth.depth, f.cameras[0], f.robot_from_reference,
-                       core::FrameStem(f.index) + "_stereo", "STEREO_DEPTH");
-      ++frames;
-      if (ground_truth) {
-        const cv::Mat true_depth = ground_truth->Depth(f.index);
-        if (!true_depth.empty()) {
-          const auto a = eval::MeasureDepthAccuracy(depth.depth, true_depth, f.images[0], {});
-          within_sum += a.within_fraction;
-          ++scored;
-          std::fprintf(stderr,
-                       "\n  frame %d: %.1f %% of %d textured pixels within 3 %% (an estimate on "
-                       "%.1f %% of them; the others count as wrong)",
-                       f.index, 100 * a.within_fraction, a.textured_pixels,
-                       a.textured_pixels ? 100.0 * a.scored_pixels / a.textured_pixels : 0.0);
-        }
-      }
-      const double s =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "\r[novelty-depth] frame %d, %.2f s per frame   ", frames, s / frames);
-    }
+  sensors::StereoDepthOptions options;
+  options.sweep.near = near.getValue();
+  options.sweep.far = far.getValue();
+  options.sweep.hypotheses = hypotheses.getValue();
+  options.sweep.window = window.getValue();
+  core::CheckInRange(min_confidence.getValue(), 0, 1, "--min-confidence");
+  options.min_confidence = static_cast<float>(min_confidence.getValue());
+  if (core::SameFile(in.getValue(), out.getValue()))
+    throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
+                                in.getValue() + ": it would be overwritten");
+
+  std::optional<sim::GroundTruthReader> ground_truth;
+  if (truth.isSet()) ground_truth.emplace(truth.getValue());
+  sensors::RigFrameReader reader(in.getValue());
+  sensors::RawlogOutput output(out.getValue());
+  const auto start = std::chrono::steady_clock::now();
+  int frames = 0, scored = 0;
+  double within_sum = 0.0;
+  std::vector<mrpt::serialization::CSerializable::Ptr> others;
+  for (sensors::RigFrame f; reader.Next(f, &others);) {
     for (const auto& o : others) output.Write(*o);
-    output.Close();
-    std::fprintf(stderr, "\n");
-    std::printf("%d depth frames (%d rig frames skipped) → %s\n", frames, reader.skipped(),
-                output.path().c_str());
-    for (const auto& why : reader.skip_reasons()) std::printf("  skipped: %s\n", why.c_str());
-    if (scored > 0)
-      std::printf("mean share of textured pixels within 3 %% of the true depth: %.1f %%\n",
-                  100 * within_sum / scored);
-    return 0;
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-depth: %s (%s)\n", e.error().c_str(), e.argId().c_str());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-depth: %s\n", e.what());
+    others.clear();
+    if (max_frames.getValue() > 0 && frames >= max_frames.getValue()) break;
+    std::vector<sensors::SweepView> views;
+    for (size_t i = 1; i < f.images.size(); ++i)
+      views.push_back({f.images[i], f.cameras[i], f.ref_from_camera[i]});
+    const sensors::StereoDepth depth =
+        sensors::ComputeStereoDepth(f.images[0], f.cameras[0], views, options);
+    output.WriteRgbd(f.time, f.images[0], depth.depth, f.cameras[0], f.robot_from_reference,
+                     core::FrameStem(f.index) + "_stereo", "STEREO_DEPTH");
+    ++frames;
+    if (ground_truth) {
+      const cv::Mat true_depth = ground_truth->Depth(f.index);
+      if (!true_depth.empty()) {
+        const auto a = eval::MeasureDepthAccuracy(depth.depth, true_depth, f.images[0], {});
+        within_sum += a.within_fraction;
+        ++scored;
+        std::fprintf(stderr,
+                     "\n  frame %d: %.1f %% of %d textured pixels within 3 %% (an estimate on "
+                     "%.1f %% of them; the others count as wrong)",
+                     f.index, 100 * a.within_fraction, a.textured_pixels,
+                     a.textured_pixels ? 100.0 * a.scored_pixels / a.textured_pixels : 0.0);
+      }
+    }
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "\r[novelty-depth] frame %d, %.2f s per frame   ", frames, s / frames);
   }
-  return 1;
+  for (const auto& o : others) output.Write(*o);
+  output.Close();
+  std::fprintf(stderr, "\n");
+  std::printf("%d depth frames (%d rig frames skipped) → %s\n", frames, reader.skipped(),
+              output.path().c_str());
+  for (const auto& why : reader.skip_reasons()) std::printf("  skipped: %s\n", why.c_str());
+  if (scored > 0)
+    std::printf("mean share of textured pixels within 3 %% of the true depth: %.1f %%\n",
+                100 * within_sum / scored);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return novelty::apps::RunProgram("novelty-depth", [&] { return Run(argc, argv); });
 }

@@ -42,6 +42,8 @@
 #include <sstream>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
+#include "apps/shell/program.h"
 #include "core/false_color.h"
 #include "core/float_image.h"
 #include "core/range_check.h"
@@ -286,10 +288,8 @@ void Finish(const Evaluation& e, const Learnt& learnt, const std::string& lighti
     std::printf("%-24s TPR@1%% %s  TPR@5%% %s  TPR@10%% %s  AUC %s  lighting flagged %s\n",
                 r[0].c_str(), r[1].c_str(), r[2].c_str(), r[3].c_str(), r[4].c_str(), r[5].c_str());
   std::printf(
-      "ahead of both at every FPR <= 10 %%: %s; %s of pixels scored; %.1f ms per test "
-      "frame → %s\n",
-      ahead ? "yes" : "no", Percent(scored_share).c_str(), 1000.0 * e.detect_seconds / e.tested,
-      (dir / "report.html").c_str());
+      "ahead of both at every FPR <= 10 %%: %s; %s of pixels scored; %.1f ms per test frame\n",
+      ahead ? "yes" : "no", Percent(scored_share).c_str(), 1000.0 * e.detect_seconds / e.tested);
 }
 
 cv::Mat NoveltyTruth(const sim::GroundTruthReader& truth, int frame, cv::Size size) {
@@ -536,122 +536,122 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
   return learn_seconds;
 }
 
+int Run(int argc, char** argv) {
+  apps::CommandLine cmd("Novelty under changing light (thesis 6.4) against NGC and SCT.", "0.1");
+  TCLAP::ValueArg<std::string> rawlog("", "rawlog", "Rawlog of the camera (RGB-D or stereo)", true,
+                                      "", "IN.rawlog", cmd);
+  TCLAP::ValueArg<std::string> truth_dir("", "groundtruth", "Ground-truth folder", true, "", "DIR",
+                                         cmd);
+  TCLAP::ValueArg<std::string> out("o", "out", "Output folder", true, "", "OUT", cmd);
+  TCLAP::ValueArg<std::string> train_phase(
+      "", "train-phase",
+      "Phase of the training frames (static camera), or comma-separated phases, one per "
+      "lighting (moving camera)",
+      false, "training", "NAME[,NAME...]", cmd);
+  TCLAP::ValueArg<std::string> test_phase("", "test-phase", "Phase of the test frames", false,
+                                          "test", "NAME", cmd);
+  TCLAP::ValueArg<int> reference_frame(
+      "", "reference-frame",
+      "Static camera: the baselines' reference image (default: first training frame)", false, 0,
+      "F", cmd);
+  TCLAP::ValueArg<double> kappa("", "kappa", "kappa of eq. 6.18 (0.2: specular scenes)", false, 0.2,
+                                "K", cmd);
+  std::vector<std::string> colours = {"per-channel", "luminance-chromaticity"};
+  TCLAP::ValuesConstraint<std::string> colour_names(colours);
+  TCLAP::ValueArg<std::string> colour("", "colour", "Colour mode of the invariant image", false,
+                                      "per-channel", &colour_names, cmd);
+  const illumination::ZernikeOptions zernike_defaults;
+  TCLAP::ValueArg<int> grid("", "grid", "Cells per side of the Zernike descriptor's disc", false,
+                            zernike_defaults.grid, "N", cmd);
+  std::vector<std::string> scales = {"frame", "empty"};
+  TCLAP::ValuesConstraint<std::string> scale_names(scales);
+  TCLAP::ValueArg<std::string> shape_scale(
+      "", "shape-scale",
+      "e-hat of eq. 6.24: frame (the frame's largest e, the thesis) or empty (each region's "
+      "distance to the empty shape)",
+      false, "frame", &scale_names, cmd);
+  TCLAP::ValueArg<int> max_order("", "max-order", "Highest Zernike order (eq. 6.21)", false,
+                                 zernike_defaults.max_order, "N", cmd);
+  const illumination::IlluminationMapOptions map_defaults;
+  TCLAP::ValueArg<double> viewpoint_distance(
+      "", "viewpoint-distance",
+      "Moving camera: metres between the map's viewpoints along the first lighting's path", false,
+      map_defaults.viewpoint_distance, "M", cmd);
+  TCLAP::SwitchArg missing_texture(
+      "", "missing-texture",
+      "Also judge the texture the invariant image has and the frame lacks (beyond the thesis: "
+      "finds objects coloured like the surface they hide)",
+      cmd);
+  std::vector<std::string> pose_sources = {"groundtruth", "rawlog"};
+  TCLAP::ValuesConstraint<std::string> pose_names(pose_sources);
+  TCLAP::ValueArg<std::string> poses(
+      "", "poses",
+      "Moving camera: camera poses from the ground truth (default) or from the rawlog's pose "
+      "observations (novelty-poses: tracker or visual localization)",
+      false, "groundtruth", &pose_names, cmd);
+  cmd.Parse(argc, argv);
+  if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
+    throw std::invalid_argument("--kappa must be in [0, 1)");
+  core::CheckInRange(max_order.getValue(), 0, 200, "--max-order");
+  core::CheckInRange(grid.getValue(), 2, 512, "--grid");
+  if (!(viewpoint_distance.getValue() >= 0.0))
+    throw std::invalid_argument("--viewpoint-distance must be >= 0");
+  Settings settings;
+  settings.novelty.shape_scale =
+      shape_scale.getValue() == "frame"
+          ? illumination::IlluminationNoveltyOptions::ShapeScale::kFrameMaximum
+          : illumination::IlluminationNoveltyOptions::ShapeScale::kEmptyShape;
+  settings.invariant.colour =
+      colour.getValue() == "per-channel"
+          ? illumination::InvariantImageOptions::Colour::kPerChannel
+          : illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
+  settings.model.kappa = kappa.getValue();
+  settings.model.missing_texture = missing_texture.getValue();
+  settings.zernike.max_order = max_order.getValue();
+  settings.zernike.grid = grid.getValue();
+  settings.viewpoint_distance = viewpoint_distance.getValue();
+  settings.poses_from_rawlog = poses.getValue() == "rawlog";
+
+  const sim::GroundTruthReader truth(truth_dir.getValue());
+  const std::vector<std::string> train_names = SplitList(train_phase.getValue());
+  if (train_names.empty()) throw std::invalid_argument("--train-phase names no phase");
+  std::vector<const sim::GroundTruthReader::Phase*> train;
+  for (const std::string& name : train_names) train.push_back(&FindPhase(truth, name));
+  const auto& test = FindPhase(truth, test_phase.getValue());
+
+  apps::OutputFolder folder("novelty-illumination", out.getValue(),
+                            {rawlog.getValue(), truth_dir.getValue()});
+  const fs::path dir = folder.path();
+  fs::create_directories(dir / "panels");
+  eval::HtmlReport report("novelty-illumination: " + rawlog.getValue());
+  Evaluation e;
+  Learnt learnt;
+  const bool moving = train.size() > 1;
+  const double learn_seconds =
+      moving ? RunMoving(rawlog.getValue(), truth, train, test, settings, dir, report, e, learnt)
+             : RunStatic(rawlog.getValue(), truth, *train.front(), test,
+                         reference_frame.isSet() ? std::optional<int>(reference_frame.getValue())
+                                                 : std::nullopt,
+                         settings, dir, report, e, learnt);
+  std::fprintf(stderr, "\n");
+  if (e.tested == 0)
+    throw std::invalid_argument("no test frame of phase '" + test.name + "' in " +
+                                rawlog.getValue());
+  const long positives = std::count(e.positive.begin(), e.positive.end(), true);
+  if (positives == 0 || positives == long(e.positive.size()))
+    throw std::invalid_argument(
+        "phase '" + test.name + "': " + std::to_string(e.positive.size()) + " scored pixels, " +
+        std::to_string(positives) +
+        " of them changed; a ROC needs both (the map or the references cover too little, or "
+        "nothing changed)");
+  Finish(e, learnt, moving ? "lightings" : "training frames", learn_seconds, dir, report);
+  folder.Commit();
+  std::printf("→ %s/report.html\n", folder.final_path().c_str());
+  return apps::kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    apps::CommandLine cmd("Novelty under changing light (thesis 6.4) against NGC and SCT.", "0.1");
-    TCLAP::ValueArg<std::string> rawlog("", "rawlog", "Rawlog of the camera (RGB-D or stereo)",
-                                        true, "", "IN.rawlog", cmd);
-    TCLAP::ValueArg<std::string> truth_dir("", "groundtruth", "Ground-truth folder", true, "",
-                                           "DIR", cmd);
-    TCLAP::ValueArg<std::string> out("o", "out", "Output folder", true, "", "OUT", cmd);
-    TCLAP::ValueArg<std::string> train_phase(
-        "", "train-phase",
-        "Phase of the training frames (static camera), or comma-separated phases, one per "
-        "lighting (moving camera)",
-        false, "training", "NAME[,NAME...]", cmd);
-    TCLAP::ValueArg<std::string> test_phase("", "test-phase", "Phase of the test frames", false,
-                                            "test", "NAME", cmd);
-    TCLAP::ValueArg<int> reference_frame(
-        "", "reference-frame",
-        "Static camera: the baselines' reference image (default: first training frame)", false, 0,
-        "F", cmd);
-    TCLAP::ValueArg<double> kappa("", "kappa", "kappa of eq. 6.18 (0.2: specular scenes)", false,
-                                  0.2, "K", cmd);
-    std::vector<std::string> colours = {"per-channel", "luminance-chromaticity"};
-    TCLAP::ValuesConstraint<std::string> colour_names(colours);
-    TCLAP::ValueArg<std::string> colour("", "colour", "Colour mode of the invariant image", false,
-                                        "per-channel", &colour_names, cmd);
-    const illumination::ZernikeOptions zernike_defaults;
-    TCLAP::ValueArg<int> grid("", "grid", "Cells per side of the Zernike descriptor's disc", false,
-                              zernike_defaults.grid, "N", cmd);
-    std::vector<std::string> scales = {"frame", "empty"};
-    TCLAP::ValuesConstraint<std::string> scale_names(scales);
-    TCLAP::ValueArg<std::string> shape_scale(
-        "", "shape-scale",
-        "e-hat of eq. 6.24: frame (the frame's largest e, the thesis) or empty (each region's "
-        "distance to the empty shape)",
-        false, "frame", &scale_names, cmd);
-    TCLAP::ValueArg<int> max_order("", "max-order", "Highest Zernike order (eq. 6.21)", false,
-                                   zernike_defaults.max_order, "N", cmd);
-    const illumination::IlluminationMapOptions map_defaults;
-    TCLAP::ValueArg<double> viewpoint_distance(
-        "", "viewpoint-distance",
-        "Moving camera: metres between the map's viewpoints along the first lighting's path", false,
-        map_defaults.viewpoint_distance, "M", cmd);
-    TCLAP::SwitchArg missing_texture(
-        "", "missing-texture",
-        "Also judge the texture the invariant image has and the frame lacks (beyond the thesis: "
-        "finds objects coloured like the surface they hide)",
-        cmd);
-    std::vector<std::string> pose_sources = {"groundtruth", "rawlog"};
-    TCLAP::ValuesConstraint<std::string> pose_names(pose_sources);
-    TCLAP::ValueArg<std::string> poses(
-        "", "poses",
-        "Moving camera: camera poses from the ground truth (default) or from the rawlog's pose "
-        "observations (novelty-poses: tracker or visual localization)",
-        false, "groundtruth", &pose_names, cmd);
-    cmd.Parse(argc, argv);
-    if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
-      throw std::invalid_argument("--kappa must be in [0, 1)");
-    core::CheckInRange(max_order.getValue(), 0, 200, "--max-order");
-    core::CheckInRange(grid.getValue(), 2, 512, "--grid");
-    if (!(viewpoint_distance.getValue() >= 0.0))
-      throw std::invalid_argument("--viewpoint-distance must be >= 0");
-    Settings settings;
-    settings.novelty.shape_scale =
-        shape_scale.getValue() == "frame"
-            ? illumination::IlluminationNoveltyOptions::ShapeScale::kFrameMaximum
-            : illumination::IlluminationNoveltyOptions::ShapeScale::kEmptyShape;
-    settings.invariant.colour =
-        colour.getValue() == "per-channel"
-            ? illumination::InvariantImageOptions::Colour::kPerChannel
-            : illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
-    settings.model.kappa = kappa.getValue();
-    settings.model.missing_texture = missing_texture.getValue();
-    settings.zernike.max_order = max_order.getValue();
-    settings.zernike.grid = grid.getValue();
-    settings.viewpoint_distance = viewpoint_distance.getValue();
-    settings.poses_from_rawlog = poses.getValue() == "rawlog";
-
-    const sim::GroundTruthReader truth(truth_dir.getValue());
-    const std::vector<std::string> train_names = SplitList(train_phase.getValue());
-    if (train_names.empty()) throw std::invalid_argument("--train-phase names no phase");
-    std::vector<const sim::GroundTruthReader::Phase*> train;
-    for (const std::string& name : train_names) train.push_back(&FindPhase(truth, name));
-    const auto& test = FindPhase(truth, test_phase.getValue());
-
-    const fs::path dir = out.getValue();
-    fs::create_directories(dir / "panels");
-    eval::HtmlReport report("novelty-illumination: " + rawlog.getValue());
-    Evaluation e;
-    Learnt learnt;
-    const bool moving = train.size() > 1;
-    const double learn_seconds =
-        moving ? RunMoving(rawlog.getValue(), truth, train, test, settings, dir, report, e, learnt)
-               : RunStatic(rawlog.getValue(), truth, *train.front(), test,
-                           reference_frame.isSet() ? std::optional<int>(reference_frame.getValue())
-                                                   : std::nullopt,
-                           settings, dir, report, e, learnt);
-    std::fprintf(stderr, "\n");
-    if (e.tested == 0)
-      throw std::invalid_argument("no test frame of phase '" + test.name + "' in " +
-                                  rawlog.getValue());
-    const long positives = std::count(e.positive.begin(), e.positive.end(), true);
-    if (positives == 0 || positives == long(e.positive.size()))
-      throw std::invalid_argument(
-          "phase '" + test.name + "': " + std::to_string(e.positive.size()) + " scored pixels, " +
-          std::to_string(positives) +
-          " of them changed; a ROC needs both (the map or the references cover too little, or "
-          "nothing changed)");
-    Finish(e, learnt, moving ? "lightings" : "training frames", learn_seconds, dir, report);
-    return 0;
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-illumination: %s (%s)\n", e.error().c_str(), e.argId().c_str());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-illumination: %s\n", e.what());
-  }
-  return 1;
+  return novelty::apps::RunProgram("novelty-illumination", [&] { return Run(argc, argv); });
 }

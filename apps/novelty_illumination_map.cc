@@ -40,6 +40,10 @@
 #include <vector>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
+#include "apps/shell/program.h"
+#include "apps/shell/progress.h"
+#include "apps/shell/skipped_frames.h"
 #include "core/false_color.h"
 #include "core/write_rgb_image.h"
 #include "eval/html_report.h"
@@ -143,20 +147,16 @@ std::unique_ptr<mrpt_plugins::RawlogMapPlayer> MakePlayer(const Pass& pass,
   return player;
 }
 
-// Reports the frames a player skipped; returns how many.
-int ReportSkips(const mrpt_plugins::RawlogMapPlayer& player, const std::string& what) {
-  for (std::size_t i = 0; i < player.skip_reasons().size() && i < 3; ++i)
-    std::fprintf(stderr, "[novelty-illumination-map] %s: skipped %s\n", what.c_str(),
-                 player.skip_reasons()[i].c_str());
+// Reports the frames a player skipped (one line) and an early end; returns how many it skipped.
+int ReportSkips(const mrpt_plugins::RawlogMapPlayer& player, const std::string& what, int frames) {
+  if (player.skipped())
+    std::fprintf(
+        stderr, "[novelty-illumination-map] %s: %s\n", what.c_str(),
+        apps::SkippedFramesSummary(frames + player.skipped(), player.skip_reasons()).c_str());
   if (!player.stopped_by().empty())
     std::fprintf(stderr, "[novelty-illumination-map] %s ends early: %s\n", what.c_str(),
                  player.stopped_by().c_str());
   return player.skipped();
-}
-
-// Progress on a terminal ('\r' lines); one line per pass otherwise.
-bool Interactive() {
-  return isatty(fileno(stderr)) != 0;
 }
 
 // Plays a pass into the maps; throws when no frame of it could be used, naming the pass.
@@ -164,19 +164,19 @@ int PlayPass(const Pass& pass, const std::string& poses, const sim::GroundTruthR
              Multimap& m, const std::string& what, int& skipped) {
   const auto player = MakePlayer(pass, poses, truth);
   int frames = 0, last = 0;
-  for (int frame = 0; player->Next(m.maps, frame); last = frame) {
-    ++frames;
-    if (Interactive())
-      std::fprintf(stderr, "\r[novelty-illumination-map] %s: frame %d   ", what.c_str(), frame);
+  {
+    apps::Progress progress("[novelty-illumination-map] " + what,
+                            pass.last > 0 ? pass.last - pass.first + 1 : 0);
+    for (int frame = 0; player->Next(m.maps, frame); last = frame) progress.Update(++frames);
   }
-  std::fprintf(stderr, "%s[novelty-illumination-map] %s: %d frames from %s\n",
-               Interactive() ? "\r" : "", what.c_str(), frames, pass.spec.c_str());
+  std::fprintf(stderr, "[novelty-illumination-map] %s: %d frames from %s\n", what.c_str(), frames,
+               pass.spec.c_str());
   if (frames == 0)  // one line: the first reason says it
     throw std::invalid_argument(
         what + " (" + pass.spec + "): no frame could be used" +
         (player->skipped() ? " (" + player->skip_reasons().front() + ")" : "") +
         NoFrameHint(poses));
-  skipped += ReportSkips(*player, pass.spec);
+  skipped += ReportSkips(*player, pass.spec, frames);
   if (pass.last > 0 && last < pass.last)
     std::fprintf(stderr,
                  "[novelty-illumination-map] %s: frames %d-%d asked, the last one used is %d\n",
@@ -242,29 +242,17 @@ double FrameAuc(const illumination::IlluminationMapResult& r, const cv::Mat& tru
   return eval::ComputeRoc(scores, positive).auc;
 }
 
-// --out may replace an earlier output of this program (it has frames.csv) or an empty folder,
-// never anything else (the ground truth's folder given by mistake).
-void CheckOut(const fs::path& out) {
-  if (!fs::exists(out)) return;
-  if (!fs::is_directory(out))
-    throw std::invalid_argument("--out " + out.string() + " is a file, not a folder");
-  if (!fs::is_empty(out) && !fs::exists(out / "frames.csv"))
-    throw std::invalid_argument("--out " + out.string() +
-                                " holds files that are not novelty-illumination-map's output: not "
-                                "replacing them");
-}
-
 int Judge(const std::string& map_in, const std::string& rawlog, const std::string& out_dir,
           const std::string& poses, const sim::GroundTruthReader* truth, int panels_every) {
   const Pass pass = ParsePass(rawlog, truth);
-  CheckOut(out_dir);
+  // Written aside and put in place at the end: a failed run leaves an earlier output whole.
+  apps::OutputFolder folder("novelty-illumination-map", out_dir,
+                            {map_in, pass.path, truth ? truth->dir() : ""});
+  const fs::path out = folder.path();
   Multimap m;
   Open(m, "");
   m.map->LoadFromFile(map_in);
   const auto player = MakePlayer(pass, poses, truth);
-  // Written aside and put in place at the end: a failed run leaves an earlier output whole.
-  const fs::path out = out_dir + ".partial";
-  fs::remove_all(out);
   fs::create_directories(out / "novelty");
   fs::create_directories(out / "panels");
   std::ofstream frames_csv(out / "frames.csv");
@@ -279,6 +267,8 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
   std::vector<std::pair<std::string, std::string>> panels;  // (path, caption), after the plots
   int frames = 0, last = 0;
   double seconds = 0.0;
+  apps::Progress progress("[novelty-illumination-map] judging",
+                          pass.last > 0 ? pass.last - pass.first + 1 : 0);
   for (int frame = 0;; last = frame) {
     const auto t0 = std::chrono::steady_clock::now();
     if (!player->Next(m.maps, frame)) break;
@@ -330,13 +320,10 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
                                               100 * r.coverage, r.novelty.region_count));
       }
     }
-    if (Interactive())
-      std::fprintf(stderr, "\r[novelty-illumination-map] frame %d: %.0f %% covered   ", frame,
-                   100 * r.coverage);
+    progress.Update(frames);
   }
-  if (Interactive()) std::fprintf(stderr, "\n");
+  progress.Finish();
   if (frames == 0) {
-    fs::remove_all(out);
     throw std::invalid_argument(rawlog + ": no frame could be judged" +
                                 (player->skipped() ? " (" + player->skip_reasons().front() + ")"
                                  : pass.last > 0
@@ -345,7 +332,7 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
                                      : " (no camera frame in it)") +
                                 NoFrameHint(poses));
   }
-  const int skipped = ReportSkips(*player, rawlog);
+  const int skipped = ReportSkips(*player, rawlog, frames);
   const bool short_range = pass.last > 0 && last < pass.last;
   if (short_range)
     std::fprintf(stderr,
@@ -390,80 +377,74 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
   report.Save((out / "report.html").string());
   findings.close();
   frames_csv.close();
-  fs::remove_all(out_dir);
-  fs::rename(out, out_dir);
+  folder.Commit();
   std::printf("%s → %s/report.html\n", summary.c_str(), out_dir.c_str());
-  return player->stopped_by().empty() && !short_range ? 0 : 3;
+  return player->stopped_by().empty() && !short_range ? apps::kExitOk : apps::kExitPartial;
+}
+
+int Run(int argc, char** argv) {
+  apps::CommandLine cmd(
+      "Learn the illumination-invariant map (thesis ch. 6) from one rawlog pass per lighting, or "
+      "judge a rawlog's frames with a learnt map",
+      "0.1");
+  TCLAP::MultiArg<std::string> lighting(
+      "", "lighting",
+      "Learning: one lighting's pass, RAWLOG[:FIRST-LAST|:PHASE] (camera frames, 1-based, "
+      "inclusive; PHASE of --groundtruth); repeat, at least twice",
+      false, "RAWLOG", cmd);
+  TCLAP::ValueArg<std::string> map_out("", "map-out", "Learning: where to save the map", false, "",
+                                       "FILE", cmd);
+  TCLAP::ValueArg<std::string> ini(
+      "", "ini",
+      "Learning: CMultiMetricMap .ini declaring the CIlluminationInvariantMap (default: its "
+      "defaults, share/illumination_invariant.ini)",
+      false, "", "FILE", cmd);
+  TCLAP::ValueArg<std::string> map_in("", "map-in", "Judging: a learnt map", false, "", "FILE",
+                                      cmd);
+  TCLAP::ValueArg<std::string> rawlog("", "rawlog", "Judging: RAWLOG[:FIRST-LAST|:PHASE]", false,
+                                      "", "RAWLOG", cmd);
+  TCLAP::ValueArg<std::string> out("", "out", "Judging: output folder", false, "", "DIR", cmd);
+  std::vector<std::string> pose_sources = {"rawlog", "odometry", "groundtruth"};
+  TCLAP::ValuesConstraint<std::string> pose_names(pose_sources);
+  TCLAP::ValueArg<std::string> poses(
+      "", "poses",
+      "Camera poses: the rawlog's pose observations (novelty-poses; default), wheel odometry or "
+      "the ground truth's (needs --groundtruth)",
+      false, "rawlog", &pose_names, cmd);
+  TCLAP::ValueArg<std::string> truth_dir(
+      "", "groundtruth", "novelty-sim's ground-truth folder (poses, phases, novelty masks)", false,
+      "", "DIR", cmd);
+  TCLAP::ValueArg<int> panels_every("", "panels-every",
+                                    "Judging: a panel every K frames (default 10; 0: none)", false,
+                                    10, "K", cmd);
+  cmd.Parse(argc, argv);
+  const bool learning = lighting.isSet(), judging = map_in.isSet();
+  if (learning == judging)
+    throw std::invalid_argument("give either --lighting (learning) or --map-in (judging)");
+  if (learning && (lighting.getValue().size() < 2 || map_out.getValue().empty()))
+    throw std::invalid_argument(
+        "learning needs at least two --lighting passes (the median of one lighting is not "
+        "invariant) and --map-out");
+  if (judging && (rawlog.getValue().empty() || out.getValue().empty()))
+    throw std::invalid_argument("judging needs --rawlog and --out");
+  if (judging && (ini.isSet() || map_out.isSet()))
+    throw std::invalid_argument(
+        "--ini and --map-out are for learning; a judged map keeps the options it was learnt "
+        "with");
+  if (learning && (rawlog.isSet() || out.isSet()))
+    throw std::invalid_argument("--rawlog and --out are for judging (with --map-in)");
+  if (panels_every.getValue() < 0) throw std::invalid_argument("--panels-every must be >= 0");
+  std::optional<sim::GroundTruthReader> truth;
+  if (truth_dir.isSet()) truth.emplace(truth_dir.getValue());
+  const sim::GroundTruthReader* t = truth ? &*truth : nullptr;
+  return learning
+             ? Learn(lighting.getValue(), ini.getValue(), map_out.getValue(), poses.getValue(), t)
+             : Judge(map_in.getValue(), rawlog.getValue(), out.getValue(), poses.getValue(), t,
+                     panels_every.getValue());
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    apps::CommandLine cmd(
-        "Learn the illumination-invariant map (thesis ch. 6) from one rawlog pass per lighting, or "
-        "judge a rawlog's frames with a learnt map",
-        "0.1");
-    TCLAP::MultiArg<std::string> lighting(
-        "", "lighting",
-        "Learning: one lighting's pass, RAWLOG[:FIRST-LAST|:PHASE] (camera frames, 1-based, "
-        "inclusive; PHASE of --groundtruth); repeat, at least twice",
-        false, "RAWLOG", cmd);
-    TCLAP::ValueArg<std::string> map_out("", "map-out", "Learning: where to save the map", false,
-                                         "", "FILE", cmd);
-    TCLAP::ValueArg<std::string> ini(
-        "", "ini",
-        "Learning: CMultiMetricMap .ini declaring the CIlluminationInvariantMap (default: its "
-        "defaults, share/illumination_invariant.ini)",
-        false, "", "FILE", cmd);
-    TCLAP::ValueArg<std::string> map_in("", "map-in", "Judging: a learnt map", false, "", "FILE",
-                                        cmd);
-    TCLAP::ValueArg<std::string> rawlog("", "rawlog", "Judging: RAWLOG[:FIRST-LAST|:PHASE]", false,
-                                        "", "RAWLOG", cmd);
-    TCLAP::ValueArg<std::string> out("", "out", "Judging: output folder", false, "", "DIR", cmd);
-    std::vector<std::string> pose_sources = {"rawlog", "odometry", "groundtruth"};
-    TCLAP::ValuesConstraint<std::string> pose_names(pose_sources);
-    TCLAP::ValueArg<std::string> poses(
-        "", "poses",
-        "Camera poses: the rawlog's pose observations (novelty-poses; default), wheel odometry or "
-        "the ground truth's (needs --groundtruth)",
-        false, "rawlog", &pose_names, cmd);
-    TCLAP::ValueArg<std::string> truth_dir(
-        "", "groundtruth", "novelty-sim's ground-truth folder (poses, phases, novelty masks)",
-        false, "", "DIR", cmd);
-    TCLAP::ValueArg<int> panels_every("", "panels-every",
-                                      "Judging: a panel every K frames (default 10; 0: none)",
-                                      false, 10, "K", cmd);
-    cmd.Parse(argc, argv);
-    const bool learning = lighting.isSet(), judging = map_in.isSet();
-    if (learning == judging)
-      throw std::invalid_argument("give either --lighting (learning) or --map-in (judging)");
-    if (learning && (lighting.getValue().size() < 2 || map_out.getValue().empty()))
-      throw std::invalid_argument(
-          "learning needs at least two --lighting passes (the median of one lighting is not "
-          "invariant) and --map-out");
-    if (judging && (rawlog.getValue().empty() || out.getValue().empty()))
-      throw std::invalid_argument("judging needs --rawlog and --out");
-    if (judging && (ini.isSet() || map_out.isSet()))
-      throw std::invalid_argument(
-          "--ini and --map-out are for learning; a judged map keeps the options it was learnt "
-          "with");
-    if (learning && (rawlog.isSet() || out.isSet()))
-      throw std::invalid_argument("--rawlog and --out are for judging (with --map-in)");
-    if (panels_every.getValue() < 0) throw std::invalid_argument("--panels-every must be >= 0");
-    std::optional<sim::GroundTruthReader> truth;
-    if (truth_dir.isSet()) truth.emplace(truth_dir.getValue());
-    const sim::GroundTruthReader* t = truth ? &*truth : nullptr;
-    return learning
-               ? Learn(lighting.getValue(), ini.getValue(), map_out.getValue(), poses.getValue(), t)
-               : Judge(map_in.getValue(), rawlog.getValue(), out.getValue(), poses.getValue(), t,
-                       panels_every.getValue());
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-illumination-map: %s (%s)\n", e.error().c_str(),
-                 e.argId().c_str());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-illumination-map: %s\n", e.what());
-  }
-  return 1;
+  return novelty::apps::RunProgram("novelty-illumination-map", [&] { return Run(argc, argv); });
 }

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "apps/command_line.h"
+#include "apps/shell/program.h"
 #include "maps/stats/normal_gamma_kl.h"
 #include "mrpt_plugins/appearance_map_options.h"
 #include "mrpt_plugins/differencing_map_options.h"
@@ -91,9 +92,7 @@ void SurpriseDemo() {
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int Run(int argc, char** argv) {
   std::vector<std::string> classes = {"CAppearanceMap", "CDifferencingMap", "CObjectDatabaseMap",
                                       "CIlluminationInvariantMap"};
   TCLAP::ValuesConstraint<std::string> allowed(classes);
@@ -101,15 +100,10 @@ int main(int argc, char** argv) {
       "", "dump-options",
       "Print a CMultiMetricMap .ini with one map of the class and its options' defaults", false, "",
       &allowed);
-  try {
-    novelty::apps::CommandLine cmd(
-        "Prints what this NoveltyMaps build contains and the libraries it uses.", NOVELTY_VERSION);
-    cmd.add(dump_options);
-    cmd.Parse(argc, argv);
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-info: %s (argument %s)\n", e.error().c_str(), e.argId().c_str());
-    return 2;
-  }
+  novelty::apps::CommandLine cmd(
+      "Prints what this NoveltyMaps build contains and the libraries it uses.", NOVELTY_VERSION);
+  cmd.add(dump_options);
+  cmd.Parse(argc, argv);
   if (dump_options.isSet()) {
     const std::string& cls = dump_options.getValue();
     if (cls == "CAppearanceMap")
@@ -148,9 +142,16 @@ int main(int argc, char** argv) {
       "  sim              ODE world, Embree cameras, scenarios, rawlogs + ground truth\n"
       "  mrpt_plugins     CAppearanceMap, CDifferencingMap, CObjectDatabaseMap,\n"
       "                   CIlluminationInvariantMap, RawlogMapPlayer\n"
-      "  apps             novelty-sim, -synth, -run, -depth, -poses, -objects, -invariant,\n"
-      "                   -illumination, -soak, -info\n");
+      "  apps             novelty (novelty COMMAND), novelty-sim, -synth, -run, -depth,\n"
+      "                   -poses, -objects, -invariant, -illumination, -illumination-map,\n"
+      "                   -soak, -info, over one program shell (apps/shell)\n");
   std::printf("\nStatistics core demo (one pixel, f=%.1f, xi=%.3g):\n", 0.8, 0.01);
   SurpriseDemo();
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return novelty::apps::RunProgram("novelty-info", [&] { return Run(argc, argv); });
 }

@@ -23,6 +23,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
+#include "apps/shell/program.h"
 #include "core/false_color.h"
 #include "core/float_image.h"
 #include "core/range_check.h"
@@ -109,183 +111,175 @@ std::string HistogramPlot(const std::string& title, const std::vector<cv::Mat>& 
   return eval::SvgLinePlot(title, "value", "density", {hist, gamma});
 }
 
+int Run(int argc, char** argv) {
+  apps::CommandLine cmd(
+      "Illumination-invariant image, illumination images and their statistics from images of "
+      "one viewpoint under different lights (thesis 6.1.2, 6.2).",
+      "0.1");
+  TCLAP::UnlabeledValueArg<std::string> in("folder", "Folder of lightings", true, "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> out("o", "out", "Output folder", true, "", "OUT", cmd);
+  const illumination::InvariantImageOptions inv_defaults;
+  const illumination::IlluminationModelOptions model_defaults;
+  std::vector<std::string> colours = {"per-channel", "luminance-chromaticity"};
+  TCLAP::ValuesConstraint<std::string> colour_names(colours);
+  TCLAP::ValueArg<std::string> colour(
+      "", "colour",
+      "per-channel: each RGB channel alone (the thesis); luminance-chromaticity: the channel "
+      "mean by the median of gradients, the colour by the median of channel shares",
+      false, "per-channel", &colour_names, cmd);
+  TCLAP::ValueArg<double> min_intensity("", "min-intensity",
+                                        "Intensities below this (0..255) are clipped", false,
+                                        inv_defaults.min_intensity, "I", cmd);
+  TCLAP::ValueArg<int> min_lightings("", "min-lightings",
+                                     "Fewest lightings that make a gradient's median", false,
+                                     inv_defaults.min_lightings, "N", cmd);
+  TCLAP::ValueArg<double> kappa("", "kappa",
+                                "kappa of T_Y (eq. 6.18): 0.5 Lambertian, 0.2 specular", false,
+                                model_defaults.kappa, "K", cmd);
+  cmd.Parse(argc, argv);
+
+  illumination::InvariantImageOptions inv_options;
+  core::CheckInRange(min_intensity.getValue(), 1e-6, 255, "--min-intensity");
+  inv_options.min_intensity = min_intensity.getValue();
+  if (min_lightings.getValue() < 2)
+    throw std::invalid_argument(
+        "--min-lightings must be >= 2 (the median of one lighting is "
+        "not invariant)");
+  inv_options.min_lightings = min_lightings.getValue();
+  inv_options.colour = colour.getValue() == "per-channel"
+                           ? illumination::InvariantImageOptions::Colour::kPerChannel
+                           : illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
+  illumination::IlluminationModelOptions model_options;
+  if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
+    throw std::invalid_argument("--kappa must be in [0, 1)");
+  model_options.kappa = kappa.getValue();
+  apps::OutputFolder out_folder("novelty-invariant", out.getValue(), {in.getValue()});
+
+  const auto start = std::chrono::steady_clock::now();
+  const sensors::LightingFolder folder = sensors::ReadLightingFolder(in.getValue());
+  const int m_count = int(folder.images.size());
+  if (inv_options.min_lightings > m_count)
+    throw std::invalid_argument("--min-lightings " + std::to_string(inv_options.min_lightings) +
+                                " exceeds the " + std::to_string(m_count) + " lightings in " +
+                                in.getValue());
+  std::fprintf(stderr, "[novelty-invariant] %d lightings of %dx%d from %s\n", m_count,
+               folder.images[0].cols, folder.images[0].rows, in.getValue().c_str());
+  const std::vector<cv::Mat> coverage =
+      folder.mask.empty() ? std::vector<cv::Mat>{} : std::vector<cv::Mat>(m_count, folder.mask);
+  const illumination::InvariantImage invariant =
+      illumination::ComputeInvariantImage(folder.images, coverage, inv_options);
+  const illumination::IlluminationModel model =
+      illumination::LearnIlluminationModel(invariant, coverage, model_options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const fs::path dir = out_folder.path();
+  for (const char* sub : {"illumination", "information", "shapes", "panels"})
+    fs::create_directories(dir / sub);
+  const cv::Mat reflectance = illumination::LinearImage(invariant.log_invariant, invariant.covered);
+  WriteLinear((dir / "invariant.png").string(), reflectance, folder.images[0].depth());
+  double white = 0.0;
+  for (const cv::Mat& im : folder.images)
+    white = std::max(white, Percentile99(core::ToFloat255(im)));
+
+  eval::HtmlReport report("novelty-invariant: " + in.getValue());
+  report.Heading("Invariant image");
+  core::WriteRgbImage((dir / "invariant_display.png").string(), Display(reflectance, white));
+  report.Image("invariant_display.png",
+               "illumination-invariant image R (linear, shown with gamma 1/2.2)");
+
+  std::vector<cv::Mat> luminance, saturation, valid;
+  std::vector<std::vector<std::string>> rows;
+  for (int m = 0; m < m_count; ++m) {
+    const illumination::IlluminationComponents c =
+        illumination::ComputeIlluminationComponents(invariant.log_illumination[m]);
+    const cv::Mat information =
+        illumination::InformationMap(c.luminance, model.luminance_step, model.luminance);
+    cv::Mat ok = invariant.covered.clone();
+    luminance.push_back(c.luminance);
+    saturation.push_back(c.saturation);
+    valid.push_back(ok);
+    const std::string stem = Stem(folder.names[m]);
+    cv::Mat lighting = illumination::LinearImage(invariant.log_illumination[m], invariant.covered),
+            lighting8;
+    ToRgb(lighting).convertTo(lighting8, CV_8UC3, 128.0);
+    core::WriteRgbImage((dir / "illumination" / (stem + ".png")).string(), lighting8);
+    cv::Mat info_shown = information.clone();
+    info_shown.setTo(std::nanf(""), invariant.covered == 0);
+    const cv::Mat info_rgb = core::FalseColor(info_shown, 2.0 * model.threshold);
+    core::WriteRgbImage((dir / "information" / (stem + ".png")).string(), info_rgb);
+    const cv::Mat shape_rgb = ToRgb(model.shapes[m]);
+    if (!cv::imwrite((dir / "shapes" / (stem + ".png")).string(), model.shapes[m]))
+      throw std::runtime_error((dir / "shapes" / (stem + ".png")).string() + ": cannot be written");
+    const std::string panel = "panels/" + stem + ".png";
+    core::WriteRgbImage(
+        (dir / panel).string(),
+        eval::SideBySide(
+            {Display(core::ToFloat255(folder.images[m]), white), lighting8, info_rgb, shape_rgb}, 4,
+            {folder.names[m], "illumination (1 = 128)", "information i_Y", "i_Y > T_Y"}));
+    report.Image(panel, folder.names[m]);
+    const double share =
+        100.0 * cv::countNonZero(model.shapes[m]) / std::max(1, cv::countNonZero(ok));
+    rows.push_back({folder.names[m], cv::format("%.2f", share)});
+  }
+
+  std::ofstream model_csv(dir / "model.csv");
+  model_csv << "a_Y,b_Y,a_S,b_S,mean_information_Y,T_Y,kappa,lightings\n"
+            << model.luminance.alpha << "," << model.luminance.beta << "," << model.saturation.alpha
+            << "," << model.saturation.beta << "," << model.mean_information << ","
+            << model.threshold << "," << model_options.kappa << "," << m_count << "\n";
+  std::ofstream findings(dir / "findings.csv");
+  findings << "finding,value,target,holds\n";
+  std::printf(
+      "%d lightings, %.2f s; gamma luminance a_Y %.3f b_Y %.3f, saturation a_S %.3f "
+      "b_S %.3f; T_Y %.3f (mean information %.3f, kappa %.2f)\n",
+      m_count, seconds, model.luminance.alpha, model.luminance.beta, model.saturation.alpha,
+      model.saturation.beta, model.threshold, model.mean_information, model_options.kappa);
+  report.Heading("Illumination statistics (6.2)");
+  report.Table(
+      {"a_Y", "b_Y", "a_S", "b_S", "mean i_Y", "T_Y", "κ"},
+      {{cv::format("%.3f", model.luminance.alpha), cv::format("%.3f", model.luminance.beta),
+        cv::format("%.3f", model.saturation.alpha), cv::format("%.3f", model.saturation.beta),
+        cv::format("%.3f", model.mean_information), cv::format("%.3f", model.threshold),
+        cv::format("%.2f", model_options.kappa)}});
+  report.Raw(HistogramPlot("luminance of the illumination images", luminance, valid,
+                           model.luminance, 3.0));
+  if (model.saturation.alpha > 0)
+    report.Raw(HistogramPlot("saturation of the illumination images", saturation, valid,
+                             model.saturation, 1.0));
+  report.Table({"lighting", "% of pixels above T_Y"}, rows);
+
+  if (!folder.reflectance.empty() && !folder.shading.empty() && !folder.diffuse.empty() &&
+      !folder.mask.empty()) {
+    // The benchmark's protocol: shading = diffuse image / reflectance estimate, in grey.
+    cv::Mat shading, grey_shading, true_shading = folder.shading;
+    cv::divide(ToRgb(folder.diffuse), ToRgb(reflectance), shading);
+    shading.setTo(cv::Scalar::all(0), folder.mask == 0);
+    grey_shading = core::ChannelMean(shading);
+    true_shading = core::ChannelMean(true_shading);
+    const eval::IntrinsicScore s = eval::ScoreIntrinsic(true_shading, folder.reflectance,
+                                                        grey_shading, reflectance, folder.mask);
+    findings << "LMSE," << s.lmse << ",(reported; MIT grey reference 0.0127 mean of 4),\n"
+             << "LMSE shading," << s.shading << ",,\n"
+             << "LMSE reflectance," << s.reflectance << ",,\n";
+    std::printf("LMSE %.5f (shading %.5f, reflectance %.5f)\n", s.lmse, s.shading, s.reflectance);
+    report.Heading("Against the ground truth (MIT Intrinsic Images LMSE)");
+    report.Table({"LMSE", "shading", "reflectance"},
+                 {{cv::format("%.5f", s.lmse), cv::format("%.5f", s.shading),
+                   cv::format("%.5f", s.reflectance)}});
+  }
+  findings << "lightings," << m_count << ",,\n"
+           << "T_Y," << model.threshold << ",,\n"
+           << "seconds," << seconds << ",,\n";
+  report.Save((dir / "report.html").string());
+  findings.close();
+  out_folder.Commit();
+  std::printf("→ %s/report.html\n", out_folder.final_path().c_str());
+  return apps::kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    apps::CommandLine cmd(
-        "Illumination-invariant image, illumination images and their statistics from images of "
-        "one viewpoint under different lights (thesis 6.1.2, 6.2).",
-        "0.1");
-    TCLAP::UnlabeledValueArg<std::string> in("folder", "Folder of lightings", true, "", "DIR", cmd);
-    TCLAP::ValueArg<std::string> out("o", "out", "Output folder", true, "", "OUT", cmd);
-    const illumination::InvariantImageOptions inv_defaults;
-    const illumination::IlluminationModelOptions model_defaults;
-    std::vector<std::string> colours = {"per-channel", "luminance-chromaticity"};
-    TCLAP::ValuesConstraint<std::string> colour_names(colours);
-    TCLAP::ValueArg<std::string> colour(
-        "", "colour",
-        "per-channel: each RGB channel alone (the thesis); luminance-chromaticity: the channel "
-        "mean by the median of gradients, the colour by the median of channel shares",
-        false, "per-channel", &colour_names, cmd);
-    TCLAP::ValueArg<double> min_intensity("", "min-intensity",
-                                          "Intensities below this (0..255) are clipped", false,
-                                          inv_defaults.min_intensity, "I", cmd);
-    TCLAP::ValueArg<int> min_lightings("", "min-lightings",
-                                       "Fewest lightings that make a gradient's median", false,
-                                       inv_defaults.min_lightings, "N", cmd);
-    TCLAP::ValueArg<double> kappa("", "kappa",
-                                  "kappa of T_Y (eq. 6.18): 0.5 Lambertian, 0.2 specular", false,
-                                  model_defaults.kappa, "K", cmd);
-    cmd.Parse(argc, argv);
-
-    illumination::InvariantImageOptions inv_options;
-    core::CheckInRange(min_intensity.getValue(), 1e-6, 255, "--min-intensity");
-    inv_options.min_intensity = min_intensity.getValue();
-    if (min_lightings.getValue() < 2)
-      throw std::invalid_argument(
-          "--min-lightings must be >= 2 (the median of one lighting is "
-          "not invariant)");
-    inv_options.min_lightings = min_lightings.getValue();
-    inv_options.colour = colour.getValue() == "per-channel"
-                             ? illumination::InvariantImageOptions::Colour::kPerChannel
-                             : illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
-    illumination::IlluminationModelOptions model_options;
-    if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
-      throw std::invalid_argument("--kappa must be in [0, 1)");
-    model_options.kappa = kappa.getValue();
-    if (fs::exists(out.getValue()) && core::SameFile(out.getValue(), in.getValue()))
-      throw std::invalid_argument("--out " + out.getValue() + " is the folder of lightings " +
-                                  in.getValue() + ": its outputs would be read as lightings");
-
-    const auto start = std::chrono::steady_clock::now();
-    const sensors::LightingFolder folder = sensors::ReadLightingFolder(in.getValue());
-    const int m_count = int(folder.images.size());
-    if (inv_options.min_lightings > m_count)
-      throw std::invalid_argument("--min-lightings " + std::to_string(inv_options.min_lightings) +
-                                  " exceeds the " + std::to_string(m_count) + " lightings in " +
-                                  in.getValue());
-    std::fprintf(stderr, "[novelty-invariant] %d lightings of %dx%d from %s\n", m_count,
-                 folder.images[0].cols, folder.images[0].rows, in.getValue().c_str());
-    const std::vector<cv::Mat> coverage =
-        folder.mask.empty() ? std::vector<cv::Mat>{} : std::vector<cv::Mat>(m_count, folder.mask);
-    const illumination::InvariantImage invariant =
-        illumination::ComputeInvariantImage(folder.images, coverage, inv_options);
-    const illumination::IlluminationModel model =
-        illumination::LearnIlluminationModel(invariant, coverage, model_options);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    const fs::path dir = out.getValue();
-    for (const char* sub : {"illumination", "information", "shapes", "panels"})
-      fs::create_directories(dir / sub);
-    const cv::Mat reflectance =
-        illumination::LinearImage(invariant.log_invariant, invariant.covered);
-    WriteLinear((dir / "invariant.png").string(), reflectance, folder.images[0].depth());
-    double white = 0.0;
-    for (const cv::Mat& im : folder.images)
-      white = std::max(white, Percentile99(core::ToFloat255(im)));
-
-    eval::HtmlReport report("novelty-invariant: " + in.getValue());
-    report.Heading("Invariant image");
-    core::WriteRgbImage((dir / "invariant_display.png").string(), Display(reflectance, white));
-    report.Image("invariant_display.png",
-                 "illumination-invariant image R (linear, shown with gamma 1/2.2)");
-
-    std::vector<cv::Mat> luminance, saturation, valid;
-    std::vector<std::vector<std::string>> rows;
-    for (int m = 0; m < m_count; ++m) {
-      const illumination::IlluminationComponents c =
-          illumination::ComputeIlluminationComponents(invariant.log_illumination[m]);
-      const cv::Mat information =
-          illumination::InformationMap(c.luminance, model.luminance_step, model.luminance);
-      cv::Mat ok = invariant.covered.clone();
-      luminance.push_back(c.luminance);
-      saturation.push_back(c.saturation);
-      valid.push_back(ok);
-      const std::string stem = Stem(folder.names[m]);
-      cv::Mat lighting =
-                  illumination::LinearImage(invariant.log_illumination[m], invariant.covered),
-              lighting8;
-      ToRgb(lighting).convertTo(lighting8, CV_8UC3, 128.0);
-      core::WriteRgbImage((dir / "illumination" / (stem + ".png")).string(), lighting8);
-      cv::Mat info_shown = information.clone();
-      info_shown.setTo(std::nanf(""), invariant.covered == 0);
-      const cv::Mat info_rgb = core::FalseColor(info_shown, 2.0 * model.threshold);
-      core::WriteRgbImage((dir / "information" / (stem + ".png")).string(), info_rgb);
-      const cv::Mat shape_rgb = ToRgb(model.shapes[m]);
-      if (!cv::imwrite((dir / "shapes" / (stem + ".png")).string(), model.shapes[m]))
-        throw std::runtime_error((dir / "shapes" / (stem + ".png")).string() +
-                                 ": cannot be written");
-      const std::string panel = "panels/" + stem + ".png";
-      core::WriteRgbImage(
-          (dir / panel).string(),
-          eval::SideBySide(
-              {Display(core::ToFloat255(folder.images[m]), white), lighting8, info_rgb, shape_rgb},
-              4, {folder.names[m], "illumination (1 = 128)", "information i_Y", "i_Y > T_Y"}));
-      report.Image(panel, folder.names[m]);
-      const double share =
-          100.0 * cv::countNonZero(model.shapes[m]) / std::max(1, cv::countNonZero(ok));
-      rows.push_back({folder.names[m], cv::format("%.2f", share)});
-    }
-
-    std::ofstream model_csv(dir / "model.csv");
-    model_csv << "a_Y,b_Y,a_S,b_S,mean_information_Y,T_Y,kappa,lightings\n"
-              << model.luminance.alpha << "," << model.luminance.beta << ","
-              << model.saturation.alpha << "," << model.saturation.beta << ","
-              << model.mean_information << "," << model.threshold << "," << model_options.kappa
-              << "," << m_count << "\n";
-    std::ofstream findings(dir / "findings.csv");
-    findings << "finding,value,target,holds\n";
-    std::printf(
-        "%d lightings, %.2f s; gamma luminance a_Y %.3f b_Y %.3f, saturation a_S %.3f "
-        "b_S %.3f; T_Y %.3f (mean information %.3f, kappa %.2f)\n",
-        m_count, seconds, model.luminance.alpha, model.luminance.beta, model.saturation.alpha,
-        model.saturation.beta, model.threshold, model.mean_information, model_options.kappa);
-    report.Heading("Illumination statistics (6.2)");
-    report.Table(
-        {"a_Y", "b_Y", "a_S", "b_S", "mean i_Y", "T_Y", "κ"},
-        {{cv::format("%.3f", model.luminance.alpha), cv::format("%.3f", model.luminance.beta),
-          cv::format("%.3f", model.saturation.alpha), cv::format("%.3f", model.saturation.beta),
-          cv::format("%.3f", model.mean_information), cv::format("%.3f", model.threshold),
-          cv::format("%.2f", model_options.kappa)}});
-    report.Raw(HistogramPlot("luminance of the illumination images", luminance, valid,
-                             model.luminance, 3.0));
-    if (model.saturation.alpha > 0)
-      report.Raw(HistogramPlot("saturation of the illumination images", saturation, valid,
-                               model.saturation, 1.0));
-    report.Table({"lighting", "% of pixels above T_Y"}, rows);
-
-    if (!folder.reflectance.empty() && !folder.shading.empty() && !folder.diffuse.empty() &&
-        !folder.mask.empty()) {
-      // The benchmark's protocol: shading = diffuse image / reflectance estimate, in grey.
-      cv::Mat shading, grey_shading, true_shading = folder.shading;
-      cv::divide(ToRgb(folder.diffuse), ToRgb(reflectance), shading);
-      shading.setTo(cv::Scalar::all(0), folder.mask == 0);
-      grey_shading = core::ChannelMean(shading);
-      true_shading = core::ChannelMean(true_shading);
-      const eval::IntrinsicScore s = eval::ScoreIntrinsic(true_shading, folder.reflectance,
-                                                          grey_shading, reflectance, folder.mask);
-      findings << "LMSE," << s.lmse << ",(reported; MIT grey reference 0.0127 mean of 4),\n"
-               << "LMSE shading," << s.shading << ",,\n"
-               << "LMSE reflectance," << s.reflectance << ",,\n";
-      std::printf("LMSE %.5f (shading %.5f, reflectance %.5f)\n", s.lmse, s.shading, s.reflectance);
-      report.Heading("Against the ground truth (MIT Intrinsic Images LMSE)");
-      report.Table({"LMSE", "shading", "reflectance"},
-                   {{cv::format("%.5f", s.lmse), cv::format("%.5f", s.shading),
-                     cv::format("%.5f", s.reflectance)}});
-    }
-    findings << "lightings," << m_count << ",,\n"
-             << "T_Y," << model.threshold << ",,\n"
-             << "seconds," << seconds << ",,\n";
-    report.Save((dir / "report.html").string());
-    std::printf("→ %s\n", (dir / "report.html").c_str());
-    return 0;
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-invariant: %s (%s)\n", e.error().c_str(), e.argId().c_str());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-invariant: %s\n", e.what());
-  }
-  return 1;
+  return novelty::apps::RunProgram("novelty-invariant", [&] { return Run(argc, argv); });
 }

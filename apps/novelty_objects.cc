@@ -50,6 +50,8 @@
 #include <vector>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
+#include "apps/shell/program.h"
 #include "core/csv_field.h"
 #include "core/frame_stem.h"
 #include "core/nearest_pixel.h"
@@ -118,8 +120,8 @@ double Quantile(std::vector<double> v, double q) {
 // Learning: the focus against the new object's true box (fig. 5.3), and each db object's name:
 // the new object most often in view where it learnt.
 struct LearningEvaluation {
-  std::vector<std::string> names;               // per database object
-  std::vector<int> name_ids;                    // its id in the learning ground truth, −1 unknown
+  std::vector<std::string> names;  // per database object
+  std::vector<int> name_ids;       // its id in the learning ground truth, −1 unknown
   std::vector<eval::PlotSeries> plots_x, plots_y, plots_features;
   double median_centre_error_px = NAN;
   double median_box_covered = NAN;  // share of the true box inside the focus box
@@ -605,271 +607,272 @@ Args Parse(int argc, char** argv) {
   return a;
 }
 
+int Run(int argc, char** argv) {
+  Args a = Parse(argc, argv);
+  apps::OutputFolder folder(
+      "novelty-objects", a.out,
+      {a.learnt, a.learn_truth, a.rawlog, a.truth, a.learn_rawlog, a.baseline_map});
+  const std::string out = a.out;
+  a.out = folder.path();
+  mrpt_plugins::CObjectDatabaseMap map;
+  map.LoadFromFile(a.learnt + "/map.object_database");
+  const objects::FeatureDatabase& db = map.database();
+  if (db.objects() == 0)
+    throw std::runtime_error(a.learnt +
+                             "/map.object_database: no object was learnt; nothing to recognise");
+  const objects::ObjectAcquisitionOptions& options = map.config().map;
+  const std::vector<eval::ObjectStepRow> steps =
+      eval::ReadObjectStepsCsv(a.learnt + "/objects.csv");
+  const sim::GroundTruthReader learn_truth(a.learn_truth), truth(a.truth);
+  std::filesystem::create_directories(a.out + "/panels");
+
+  // 1. Learning (figs. 5.3) and what was learnt.
+  const LearningEvaluation learning = EvaluateLearning(steps, learn_truth, db.objects(), a.out);
+  core::Frame frame;  // its camera: the experiment's runs share one
+  if (!sensors::RawlogFrameReader(a.rawlog).Next(frame))
+    throw std::runtime_error(a.rawlog + ": no RGB-D frame");
+  int on_object = 0, judged = 0;
+  {
+    const std::vector<int> feature_frames = FeatureFrames(steps, db.features());
+    std::ofstream csv(a.out + "/features.csv");
+    csv << "feature,object,name,x,y,z,on_object\n";
+    for (int h = 0; h < db.features(); ++h) {
+      const int k = db.MostProbableObject(h);
+      const int on = FeatureOnObject(db, h, feature_frames[std::size_t(h)], learning, learn_truth,
+                                     frame.camera);
+      const Eigen::Vector3d& p = db.Position(h);
+      csv << h << ',' << k << ',' << core::CsvField(learning.names[std::size_t(k)]) << ',' << p.x()
+          << ',' << p.y() << ',' << p.z() << ',' << on << '\n';
+      if (on >= 0) ++judged, on_object += on;
+    }
+  }
+
+  // 2. Recognition in the other room (fig. 5.5), and the baseline's.
+  cv::Ptr<cv::Feature2D> extractor = objects::CreateFeatureExtractor(options.extractor);
+  objects::ObjectRecognitionOptions thesis;
+  thesis.match_ratio = options.learner.match_ratio;
+  thesis.verify = true;  // N_k is the same; the pose adds the verified score
+  thesis.verification = options.learner.verification;
+  const RecognitionRun run = RunRecognition(db, learning.names, *extractor, thesis, a, truth,
+                                            a.out + "/recognition.csv", a.out + "/panels", true);
+  const std::vector<RecognitionRow>& rows = run.rows;
+  const std::vector<eval::Roc>& rocs = run.rocs;
+  const int n = run.frames;
+  std::optional<Baseline> baseline;
+  std::optional<RecognitionRun> baseline_run;
+  if (!a.baseline_map.empty()) {
+    baseline = LearnBaseline(a, learn_truth, *extractor);
+    if (baseline->db.objects() == 0)
+      throw std::runtime_error("the baseline learnt no object from " + a.learn_rawlog);
+    // Only its matches are compared; its 26 868 features' nearest keypoints would take
+    // RANSAC over some 18 000 pairs per object and frame (most of the run's time).
+    Args without_nearest = a;
+    without_nearest.verify_nearest = 0;
+    baseline_run =
+        RunRecognition(baseline->db, baseline->names, *extractor, thesis, without_nearest, truth,
+                       a.out + "/recognition_baseline.csv", "", false);
+  }
+  const eval::Roc& roc = rocs[0];
+
+  // 3. Findings, report.
+  std::ofstream findings(a.out + "/findings.csv");
+  findings << "finding,value,target,holds\n";
+  eval::HtmlReport report("Object learning and recognition (thesis 5.2)");
+  std::vector<std::vector<std::string>> table;
+  const auto finding = [&](const std::string& what, const std::string& value,
+                           const std::string& target, int holds) {
+    findings << core::CsvField(what) << ',' << core::CsvField(value) << ','
+             << core::CsvField(target) << ','
+             << (holds < 0 ? ""
+                 : holds   ? "yes"
+                           : "no")
+             << '\n';
+    table.push_back({what, value, target, holds < 0 ? "" : holds ? "yes" : "no"});
+    std::printf("  %-58s %10s  (target %s)\n", what.c_str(), value.c_str(), target.c_str());
+  };
+  std::printf(
+      "novelty-objects: %d objects, %d features learnt; %d recognition frames, %d (frame, "
+      "object) decisions (%d visible)\n",
+      db.objects(), db.features(), n, roc.positives + roc.negatives, roc.positives);
+  finding("objects learnt", std::to_string(db.objects()), "3 (thesis)", db.objects() == 3);
+  finding("features in the database", std::to_string(db.features()), "88 (thesis)", -1);
+  finding("learnt features on their object",
+          judged ? Percent(double(on_object) / judged) +
+                       (judged < db.features() ? " of " + std::to_string(judged) + " judged"
+                                               : std::string())
+                 : "-",
+          "100 % (none from background)", judged ? on_object == judged : -1);
+  finding("focus box centre inside the new object's true box",
+          learning.compared_frames
+              ? Percent(double(learning.centre_inside) / learning.compared_frames)
+              : "-",
+          "(reported)", -1);
+  finding("median focus box centre error (px)", Num(learning.median_centre_error_px, "%.1f"),
+          "(reported)", -1);
+  finding("median share of the new object's true box inside the focus box",
+          std::isnan(learning.median_box_covered) ? "-" : Percent(learning.median_box_covered),
+          "(reported)", -1);
+  for (int i = 0; i < kScores; ++i) {
+    const std::string what = kScoreNames[i];
+    const eval::Roc& r = rocs[std::size_t(i)];
+    finding("TPR at FPR <= 0.3 %, " + what, Percent(r.TprAtFpr(0.003)), ">= 90 % (thesis 81.5 %)",
+            r.TprAtFpr(0.003) >= 0.9);
+    finding("TPR at FPR <= 1 %, " + what, Percent(r.TprAtFpr(0.01)), "(reported)", -1);
+    finding("TPR at FPR <= 5 %, " + what, Percent(r.TprAtFpr(0.05)), "(reported)", -1);
+    finding("AUC, " + what, Num(r.auc), "(reported)", -1);
+  }
+  // What the consistent keypoints' tolerances rest on (keypoint_consistency.h).
+  for (int on : {1, 0}) {
+    const std::string where = on ? "ratio matches on their object" : "ratio matches elsewhere";
+    finding(where + ": keypoint turn, median / 95th percentile (deg; matches)",
+            MedianAnd95(run.turn_deg[on], "%.1f"), "(diagnostic)", -1);
+    finding(where + ": metric size ratio, median / 95th percentile (matches)",
+            MedianAnd95(run.size_ratio[on], "%.2f"), "(diagnostic)", -1);
+  }
+  finding(
+      "ratio matches elsewhere, by the ground truth's name where they land (matches; per "
+      "million of its pixels)",
+      ElsewhereByName(run), "(diagnostic)", -1);
+  // Which objects the operating point finds: recall per object at the threshold of eq. 5.4's
+  // matches that keeps FPR ≤ 0.3 %, and the false positives each object adds there.
+  const double threshold = roc.ThresholdAtFpr(0.003);
+  for (int k = 0; k < db.objects(); ++k) {
+    int shown = 0, found = 0, false_positives = 0;
+    for (const RecognitionRow& r : run.rows)
+      if (r.object == k) {
+        const bool is_visible = r.visible_pixels >= a.min_visible,
+                   passes = r.scores[0] >= threshold;
+        shown += is_visible;
+        found += is_visible && passes;
+        false_positives += !is_visible && passes;
+      }
+    finding("TPR of " + learning.names[std::size_t(k)] + " at FPR <= 0.3 % (" +
+                (std::isinf(threshold) ? std::string("no threshold")
+                                       : ">= " + Num(threshold, "%.0f") + " matches") +
+                ")",
+            (shown ? Percent(double(found) / shown) + " of " + std::to_string(shown) : "-") + " (" +
+                std::to_string(false_positives) + " false positives)",
+            "(reported)", -1);
+  }
+  // Where the misses come from: the same matching among only the object's own keypoints.
+  for (int k = 0; k < db.objects(); ++k) {
+    int shown = 0, in_frame = 0, on_own = 0, distances = 0;
+    double distance = 0.0;
+    for (const RecognitionRow& r : run.rows)
+      if (r.object == k && r.visible_pixels >= a.min_visible) {
+        ++shown;
+        in_frame += r.scores[0] >= 1;
+        on_own += r.on_object.matches >= 1;
+        if (std::isfinite(r.on_object.mean_nearest_distance))
+          distance += r.on_object.mean_nearest_distance, ++distances;
+      }
+    if (shown == 0) continue;
+    finding(learning.names[std::size_t(k)] +
+                ": visible decisions with a match among its own keypoints (ground truth; in "
+                "the whole frame)",
+            Percent(double(on_own) / shown) + " (" + Percent(double(in_frame) / shown) + ")",
+            "(diagnostic)", -1);
+    finding(learning.names[std::size_t(k)] +
+                ": mean distance of a learnt feature to its nearest keypoint on the object",
+            distances ? Num(distance / distances) : "-", "(diagnostic)", -1);
+  }
+  if (baseline) {
+    const eval::Roc& b = baseline_run->rocs[0];
+    finding("baseline: features in the database", std::to_string(baseline->db.features()),
+            "5531 (thesis)", -1);
+    finding("baseline: segmentation IoU with the object, mean over " +
+                std::to_string(baseline->frames) + " frames",
+            Num(baseline->mean_iou), "(reported)", -1);
+    finding("baseline: TPR at FPR <= 0.3 %", Percent(b.TprAtFpr(0.003)), "(reported)", -1);
+    finding("baseline: TPR at FPR <= 1 %", Percent(b.TprAtFpr(0.01)), "(reported)", -1);
+    finding("baseline: TPR at FPR <= 5 %", Percent(b.TprAtFpr(0.05)), "(thesis: 81.5 % at 7.2 %)",
+            -1);
+    finding("baseline: AUC", Num(b.auc), "(reported)", -1);
+    finding("baseline: TPR at FPR <= 0.3 %, " + std::string(kScoreNames[kScores - 1]),
+            Percent(baseline_run->rocs[kScores - 1].TprAtFpr(0.003)), "(reported)", -1);
+    // The thesis's claim: the surprise-driven database ahead at every FPR up to 5 % — with the
+    // thesis's score, and with both databases' matches checked against their learnt keypoints.
+    for (int i : {0, kScores - 1}) {
+      const eval::Roc& ours = rocs[std::size_t(i)];
+      const eval::Roc& theirs = baseline_run->rocs[std::size_t(i)];
+      bool never_behind = true, ever_ahead = false;
+      for (int step = 1; step <= 50; ++step) {
+        const double fpr = 0.001 * step;
+        never_behind = never_behind && ours.TprAtFpr(fpr) >= theirs.TprAtFpr(fpr);
+        ever_ahead = ever_ahead || ours.TprAtFpr(fpr) > theirs.TprAtFpr(fpr);
+      }
+      const bool ahead = never_behind && ever_ahead;
+      finding(
+          std::string("surprise-driven TPR never below the baseline's at FPR <= 5 % (0.1 % steps), "
+                      "above somewhere") +
+              (i == 0 ? "" : ", " + std::string(kScoreNames[i])),
+          ahead ? "yes" : "no", i == 0 ? "yes (thesis)" : "(reported)", i == 0 ? ahead : -1);
+    }
+  }
+  findings.close();
+
+  report.Heading("Findings");
+  report.Table({"finding", "value", "target", "holds"}, table);
+  report.Paragraph("Learnt objects: " + [&] {
+    std::string s;
+    for (int k = 0; k < db.objects(); ++k) {
+      int count = 0;
+      for (int h = 0; h < db.features(); ++h) count += db.MostProbableObject(h) == k;
+      s += (k ? ", " : "") + learning.names[std::size_t(k)] + " (" + std::to_string(count) +
+           " features)";
+    }
+    return s;
+  }());
+  report.Heading("Learning: focus of attention (fig. 5.3)");
+  report.Raw(eval::SvgLinePlot("Focus box centre x", "frame", "x (px)", learning.plots_x));
+  report.Raw(eval::SvgLinePlot("Focus box centre y", "frame", "y (px)", learning.plots_y));
+  report.Raw(eval::SvgLinePlot("Features selected in the box", "frame", "features",
+                               learning.plots_features));
+  report.Heading("Recognition in another room (fig. 5.5)");
+  std::vector<eval::PlotSeries> per_object, shown;
+  const char* colours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9"};
+  for (int k = 0; k < db.objects(); ++k) {
+    eval::PlotSeries m{learning.names[std::size_t(k)], colours[k % 6], {}, 1};
+    eval::PlotSeries v{learning.names[std::size_t(k)], colours[k % 6], {}, 1};
+    for (const RecognitionRow& r : rows)
+      if (r.object == k) {
+        m.points.emplace_back(r.frame, r.scores[0]);
+        v.points.emplace_back(r.frame, r.visible_pixels >= a.min_visible ? k + 1 : NAN);
+      }
+    per_object.push_back(m);
+    shown.push_back(v);
+  }
+  report.Raw(eval::SvgLinePlot("Matches per frame per object", "frame", "matches", per_object));
+  report.Raw(
+      eval::SvgLinePlot("Visible (ground truth), one line per object", "frame", "object", shown));
+  std::vector<eval::PlotSeries> curves, zoom;
+  const auto add_curve = [&](const eval::Roc& curve, const std::string& name,
+                             const std::string& colour) {
+    curves.push_back(eval::RocPlotSeries(curve, name, colour));
+    zoom.push_back(eval::RocPlotSeries(curve, name, colour, {0.05}));
+  };
+  for (int i = 0; i < kScores; ++i)
+    add_curve(rocs[std::size_t(i)], kScoreNames[i], kScoreColours[i]);
+  if (baseline_run) add_curve(baseline_run->rocs[0], "baseline (eigenbackground)", "#000000");
+  report.Raw(eval::SvgLinePlot("ROC over (frame, object) decisions, sweeping the matches required",
+                               "FPR (%)", "TPR (%)", curves));
+  report.Raw(eval::SvgLinePlot("ROC up to FPR 5 %", "FPR (%)", "TPR (%)", zoom));
+  if (a.panels_every > 0) {
+    report.Heading("Panels (matches in cyan, as fig. 5.4)");
+    for (int f : run.panels)
+      report.Image("panels/" + core::FrameStem(f) + ".png", "frame " + std::to_string(f));
+  }
+  report.Save(a.out + "/report.html");
+  folder.Commit();
+  std::printf(
+      "  %s/findings.csv, recognition.csv, features.csv, focus.csv, report.html (%d frames "
+      "skipped)\n",
+      out.c_str(), run.skipped);
+  return apps::kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    const Args a = Parse(argc, argv);
-    mrpt_plugins::CObjectDatabaseMap map;
-    map.LoadFromFile(a.learnt + "/map.object_database");
-    const objects::FeatureDatabase& db = map.database();
-    if (db.objects() == 0)
-      throw std::runtime_error(a.learnt +
-                               "/map.object_database: no object was learnt; nothing to recognise");
-    const objects::ObjectAcquisitionOptions& options = map.config().map;
-    const std::vector<eval::ObjectStepRow> steps =
-        eval::ReadObjectStepsCsv(a.learnt + "/objects.csv");
-    const sim::GroundTruthReader learn_truth(a.learn_truth), truth(a.truth);
-    std::filesystem::create_directories(a.out + "/panels");
-
-    // 1. Learning (figs. 5.3) and what was learnt.
-    const LearningEvaluation learning = EvaluateLearning(steps, learn_truth, db.objects(), a.out);
-    core::Frame frame;  // its camera: the experiment's runs share one
-    if (!sensors::RawlogFrameReader(a.rawlog).Next(frame))
-      throw std::runtime_error(a.rawlog + ": no RGB-D frame");
-    int on_object = 0, judged = 0;
-    {
-      const std::vector<int> feature_frames = FeatureFrames(steps, db.features());
-      std::ofstream csv(a.out + "/features.csv");
-      csv << "feature,object,name,x,y,z,on_object\n";
-      for (int h = 0; h < db.features(); ++h) {
-        const int k = db.MostProbableObject(h);
-        const int on = FeatureOnObject(db, h, feature_frames[std::size_t(h)], learning, learn_truth,
-                                       frame.camera);
-        const Eigen::Vector3d& p = db.Position(h);
-        csv << h << ',' << k << ',' << core::CsvField(learning.names[std::size_t(k)]) << ','
-            << p.x() << ',' << p.y() << ',' << p.z() << ',' << on << '\n';
-        if (on >= 0) ++judged, on_object += on;
-      }
-    }
-
-    // 2. Recognition in the other room (fig. 5.5), and the baseline's.
-    cv::Ptr<cv::Feature2D> extractor = objects::CreateFeatureExtractor(options.extractor);
-    objects::ObjectRecognitionOptions thesis;
-    thesis.match_ratio = options.learner.match_ratio;
-    thesis.verify = true;  // N_k is the same; the pose adds the verified score
-    thesis.verification = options.learner.verification;
-    const RecognitionRun run = RunRecognition(db, learning.names, *extractor, thesis, a, truth,
-                                              a.out + "/recognition.csv", a.out + "/panels", true);
-    const std::vector<RecognitionRow>& rows = run.rows;
-    const std::vector<eval::Roc>& rocs = run.rocs;
-    const int n = run.frames;
-    std::optional<Baseline> baseline;
-    std::optional<RecognitionRun> baseline_run;
-    if (!a.baseline_map.empty()) {
-      baseline = LearnBaseline(a, learn_truth, *extractor);
-      if (baseline->db.objects() == 0)
-        throw std::runtime_error("the baseline learnt no object from " + a.learn_rawlog);
-      // Only its matches are compared; its 26 868 features' nearest keypoints would take
-      // RANSAC over some 18 000 pairs per object and frame (most of the run's time).
-      Args without_nearest = a;
-      without_nearest.verify_nearest = 0;
-      baseline_run =
-          RunRecognition(baseline->db, baseline->names, *extractor, thesis, without_nearest, truth,
-                         a.out + "/recognition_baseline.csv", "", false);
-    }
-    const eval::Roc& roc = rocs[0];
-
-    // 3. Findings, report.
-    std::ofstream findings(a.out + "/findings.csv");
-    findings << "finding,value,target,holds\n";
-    eval::HtmlReport report("Object learning and recognition (thesis 5.2)");
-    std::vector<std::vector<std::string>> table;
-    const auto finding = [&](const std::string& what, const std::string& value,
-                             const std::string& target, int holds) {
-      findings << core::CsvField(what) << ',' << core::CsvField(value) << ','
-               << core::CsvField(target) << ','
-               << (holds < 0 ? ""
-                   : holds   ? "yes"
-                             : "no")
-               << '\n';
-      table.push_back({what, value, target, holds < 0 ? "" : holds ? "yes" : "no"});
-      std::printf("  %-58s %10s  (target %s)\n", what.c_str(), value.c_str(), target.c_str());
-    };
-    std::printf(
-        "novelty-objects: %d objects, %d features learnt; %d recognition frames, %d (frame, "
-        "object) decisions (%d visible)\n",
-        db.objects(), db.features(), n, roc.positives + roc.negatives, roc.positives);
-    finding("objects learnt", std::to_string(db.objects()), "3 (thesis)", db.objects() == 3);
-    finding("features in the database", std::to_string(db.features()), "88 (thesis)", -1);
-    finding("learnt features on their object",
-            judged ? Percent(double(on_object) / judged) +
-                         (judged < db.features() ? " of " + std::to_string(judged) + " judged"
-                                                 : std::string())
-                   : "-",
-            "100 % (none from background)", judged ? on_object == judged : -1);
-    finding("focus box centre inside the new object's true box",
-            learning.compared_frames
-                ? Percent(double(learning.centre_inside) / learning.compared_frames)
-                : "-",
-            "(reported)", -1);
-    finding("median focus box centre error (px)", Num(learning.median_centre_error_px, "%.1f"),
-            "(reported)", -1);
-    finding("median share of the new object's true box inside the focus box",
-            std::isnan(learning.median_box_covered) ? "-" : Percent(learning.median_box_covered),
-            "(reported)", -1);
-    for (int i = 0; i < kScores; ++i) {
-      const std::string what = kScoreNames[i];
-      const eval::Roc& r = rocs[std::size_t(i)];
-      finding("TPR at FPR <= 0.3 %, " + what, Percent(r.TprAtFpr(0.003)), ">= 90 % (thesis 81.5 %)",
-              r.TprAtFpr(0.003) >= 0.9);
-      finding("TPR at FPR <= 1 %, " + what, Percent(r.TprAtFpr(0.01)), "(reported)", -1);
-      finding("TPR at FPR <= 5 %, " + what, Percent(r.TprAtFpr(0.05)), "(reported)", -1);
-      finding("AUC, " + what, Num(r.auc), "(reported)", -1);
-    }
-    // What the consistent keypoints' tolerances rest on (keypoint_consistency.h).
-    for (int on : {1, 0}) {
-      const std::string where = on ? "ratio matches on their object" : "ratio matches elsewhere";
-      finding(where + ": keypoint turn, median / 95th percentile (deg; matches)",
-              MedianAnd95(run.turn_deg[on], "%.1f"), "(diagnostic)", -1);
-      finding(where + ": metric size ratio, median / 95th percentile (matches)",
-              MedianAnd95(run.size_ratio[on], "%.2f"), "(diagnostic)", -1);
-    }
-    finding(
-        "ratio matches elsewhere, by the ground truth's name where they land (matches; per "
-        "million of its pixels)",
-        ElsewhereByName(run), "(diagnostic)", -1);
-    // Which objects the operating point finds: recall per object at the threshold of eq. 5.4's
-    // matches that keeps FPR ≤ 0.3 %, and the false positives each object adds there.
-    const double threshold = roc.ThresholdAtFpr(0.003);
-    for (int k = 0; k < db.objects(); ++k) {
-      int shown = 0, found = 0, false_positives = 0;
-      for (const RecognitionRow& r : run.rows)
-        if (r.object == k) {
-          const bool is_visible = r.visible_pixels >= a.min_visible,
-                     passes = r.scores[0] >= threshold;
-          shown += is_visible;
-          found += is_visible && passes;
-          false_positives += !is_visible && passes;
-        }
-      finding("TPR of " + learning.names[std::size_t(k)] + " at FPR <= 0.3 % (" +
-                  (std::isinf(threshold) ? std::string("no threshold")
-                                         : ">= " + Num(threshold, "%.0f") + " matches") +
-                  ")",
-              (shown ? Percent(double(found) / shown) + " of " + std::to_string(shown) : "-") +
-                  " (" + std::to_string(false_positives) + " false positives)",
-              "(reported)", -1);
-    }
-    // Where the misses come from: the same matching among only the object's own keypoints.
-    for (int k = 0; k < db.objects(); ++k) {
-      int shown = 0, in_frame = 0, on_own = 0, distances = 0;
-      double distance = 0.0;
-      for (const RecognitionRow& r : run.rows)
-        if (r.object == k && r.visible_pixels >= a.min_visible) {
-          ++shown;
-          in_frame += r.scores[0] >= 1;
-          on_own += r.on_object.matches >= 1;
-          if (std::isfinite(r.on_object.mean_nearest_distance))
-            distance += r.on_object.mean_nearest_distance, ++distances;
-        }
-      if (shown == 0) continue;
-      finding(learning.names[std::size_t(k)] +
-                  ": visible decisions with a match among its own keypoints (ground truth; in "
-                  "the whole frame)",
-              Percent(double(on_own) / shown) + " (" + Percent(double(in_frame) / shown) + ")",
-              "(diagnostic)", -1);
-      finding(learning.names[std::size_t(k)] +
-                  ": mean distance of a learnt feature to its nearest keypoint on the object",
-              distances ? Num(distance / distances) : "-", "(diagnostic)", -1);
-    }
-    if (baseline) {
-      const eval::Roc& b = baseline_run->rocs[0];
-      finding("baseline: features in the database", std::to_string(baseline->db.features()),
-              "5531 (thesis)", -1);
-      finding("baseline: segmentation IoU with the object, mean over " +
-                  std::to_string(baseline->frames) + " frames",
-              Num(baseline->mean_iou), "(reported)", -1);
-      finding("baseline: TPR at FPR <= 0.3 %", Percent(b.TprAtFpr(0.003)), "(reported)", -1);
-      finding("baseline: TPR at FPR <= 1 %", Percent(b.TprAtFpr(0.01)), "(reported)", -1);
-      finding("baseline: TPR at FPR <= 5 %", Percent(b.TprAtFpr(0.05)), "(thesis: 81.5 % at 7.2 %)",
-              -1);
-      finding("baseline: AUC", Num(b.auc), "(reported)", -1);
-      finding("baseline: TPR at FPR <= 0.3 %, " + std::string(kScoreNames[kScores - 1]),
-              Percent(baseline_run->rocs[kScores - 1].TprAtFpr(0.003)), "(reported)", -1);
-      // The thesis's claim: the surprise-driven database ahead at every FPR up to 5 % — with the
-      // thesis's score, and with both databases' matches checked against their learnt keypoints.
-      for (int i : {0, kScores - 1}) {
-        const eval::Roc& ours = rocs[std::size_t(i)];
-        const eval::Roc& theirs = baseline_run->rocs[std::size_t(i)];
-        bool never_behind = true, ever_ahead = false;
-        for (int step = 1; step <= 50; ++step) {
-          const double fpr = 0.001 * step;
-          never_behind = never_behind && ours.TprAtFpr(fpr) >= theirs.TprAtFpr(fpr);
-          ever_ahead = ever_ahead || ours.TprAtFpr(fpr) > theirs.TprAtFpr(fpr);
-        }
-        const bool ahead = never_behind && ever_ahead;
-        finding(std::string(
-                    "surprise-driven TPR never below the baseline's at FPR <= 5 % (0.1 % steps), "
-                    "above somewhere") +
-                    (i == 0 ? "" : ", " + std::string(kScoreNames[i])),
-                ahead ? "yes" : "no", i == 0 ? "yes (thesis)" : "(reported)", i == 0 ? ahead : -1);
-      }
-    }
-    findings.close();
-
-    report.Heading("Findings");
-    report.Table({"finding", "value", "target", "holds"}, table);
-    report.Paragraph("Learnt objects: " + [&] {
-      std::string s;
-      for (int k = 0; k < db.objects(); ++k) {
-        int count = 0;
-        for (int h = 0; h < db.features(); ++h) count += db.MostProbableObject(h) == k;
-        s += (k ? ", " : "") + learning.names[std::size_t(k)] + " (" + std::to_string(count) +
-             " features)";
-      }
-      return s;
-    }());
-    report.Heading("Learning: focus of attention (fig. 5.3)");
-    report.Raw(eval::SvgLinePlot("Focus box centre x", "frame", "x (px)", learning.plots_x));
-    report.Raw(eval::SvgLinePlot("Focus box centre y", "frame", "y (px)", learning.plots_y));
-    report.Raw(eval::SvgLinePlot("Features selected in the box", "frame", "features",
-                                 learning.plots_features));
-    report.Heading("Recognition in another room (fig. 5.5)");
-    std::vector<eval::PlotSeries> per_object, shown;
-    const char* colours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00", "#56b4e9"};
-    for (int k = 0; k < db.objects(); ++k) {
-      eval::PlotSeries m{learning.names[std::size_t(k)], colours[k % 6], {}, 1};
-      eval::PlotSeries v{learning.names[std::size_t(k)], colours[k % 6], {}, 1};
-      for (const RecognitionRow& r : rows)
-        if (r.object == k) {
-          m.points.emplace_back(r.frame, r.scores[0]);
-          v.points.emplace_back(r.frame, r.visible_pixels >= a.min_visible ? k + 1 : NAN);
-        }
-      per_object.push_back(m);
-      shown.push_back(v);
-    }
-    report.Raw(eval::SvgLinePlot("Matches per frame per object", "frame", "matches", per_object));
-    report.Raw(
-        eval::SvgLinePlot("Visible (ground truth), one line per object", "frame", "object", shown));
-    std::vector<eval::PlotSeries> curves, zoom;
-    const auto add_curve = [&](const eval::Roc& curve, const std::string& name,
-                               const std::string& colour) {
-      curves.push_back(eval::RocPlotSeries(curve, name, colour));
-      zoom.push_back(eval::RocPlotSeries(curve, name, colour, {0.05}));
-    };
-    for (int i = 0; i < kScores; ++i)
-      add_curve(rocs[std::size_t(i)], kScoreNames[i], kScoreColours[i]);
-    if (baseline_run) add_curve(baseline_run->rocs[0], "baseline (eigenbackground)", "#000000");
-    report.Raw(
-        eval::SvgLinePlot("ROC over (frame, object) decisions, sweeping the matches required",
-                          "FPR (%)", "TPR (%)", curves));
-    report.Raw(eval::SvgLinePlot("ROC up to FPR 5 %", "FPR (%)", "TPR (%)", zoom));
-    if (a.panels_every > 0) {
-      report.Heading("Panels (matches in cyan, as fig. 5.4)");
-      for (int f : run.panels)
-        report.Image("panels/" + core::FrameStem(f) + ".png", "frame " + std::to_string(f));
-    }
-    report.Save(a.out + "/report.html");
-    std::printf(
-        "  %s/findings.csv, recognition.csv, features.csv, focus.csv, report.html (%d frames "
-        "skipped)\n",
-        a.out.c_str(), run.skipped);
-    return 0;
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-objects: %s (%s)\n", e.error().c_str(), e.argId().c_str());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-objects: %s\n", e.what());
-  }
-  return 1;
+  return novelty::apps::RunProgram("novelty-objects", [&] { return Run(argc, argv); });
 }

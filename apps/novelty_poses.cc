@@ -34,6 +34,7 @@
 #include <sstream>
 
 #include "apps/command_line.h"
+#include "apps/shell/program.h"
 #include "core/range_check.h"
 #include "core/same_file.h"
 #include "sensors/localization/direct_odometry.h"
@@ -70,8 +71,8 @@ sensors::PoseTrajectory TrackerPoses(const std::string& rawlog, int* rejected) {
   std::fprintf(stderr,
                "[novelty-poses] plate calibrated from %d samples (%.1f s still): LED1 (%.4f, "
                "%.4f, %.4f) LED2 (%.4f, %.4f, %.4f) LED3 (%.4f, %.4f, %.4f) m\n",
-               t.still_samples, t.still_seconds, leds[0].x(), leds[0].y(), leds[0].z(),
-               leds[1].x(), leds[1].y(), leds[1].z(), leds[2].x(), leds[2].y(), leds[2].z());
+               t.still_samples, t.still_seconds, leds[0].x(), leds[0].y(), leds[0].z(), leds[1].x(),
+               leds[1].y(), leds[1].z(), leds[2].x(), leds[2].y(), leds[2].z());
   *rejected = t.rejected;
   return t.poses;
 }
@@ -116,124 +117,121 @@ std::map<double, Eigen::Isometry3d> VisualPoses(const std::string& rawlog,
   return poses;
 }
 
+int Run(int argc, char** argv) {
+  novelty::apps::CommandLine cmd("Adds camera poses (LED tracker or vision) to a rawlog.", "0.1");
+  TCLAP::UnlabeledValueArg<std::string> in("input", "Input rawlog", true, "", "IN.rawlog", cmd);
+  TCLAP::ValueArg<std::string> out("o", "out", "Output rawlog", true, "", "OUT.rawlog", cmd);
+  std::vector<std::string> sources = {"tracker", "visual"};
+  TCLAP::ValuesConstraint<std::string> allowed(sources);
+  TCLAP::ValueArg<std::string> source("", "source", "Where poses come from", true, "", &allowed,
+                                      cmd);
+  std::vector<std::string> methods = {"direct", "features"};
+  TCLAP::ValuesConstraint<std::string> allowed_methods(methods);
+  TCLAP::ValueArg<std::string> method("", "visual-method",
+                                      "Visual localization: direct (photometric, default) or "
+                                      "features (KLT + PnP, as the thesis)",
+                                      false, "direct", &allowed_methods, cmd);
+  TCLAP::ValueArg<double> smoothing(
+      "", "smoothing", "Half-width (s) of the local linear pose fit; 0 = plain SLERP", false,
+      sensors::PoseInterpolationOptions().smoothing_half_window, "S", cmd);
+  TCLAP::ValueArg<std::string> truth("", "groundtruth", "Report errors against this folder", false,
+                                     "", "DIR", cmd);
+  cmd.Parse(argc, argv);
+  core::CheckInRange(smoothing.getValue(), 0, 60, "--smoothing");
+  if (core::SameFile(in.getValue(), out.getValue()))
+    throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
+                                in.getValue() + ": it would be overwritten");
+
+  const bool visual = source.getValue() == "visual";
+  int rejected = 0;
+  std::optional<sensors::PoseTrajectory> trajectory;
+  std::map<double, Eigen::Isometry3d> visual_poses;
+  if (visual) {
+    std::optional<Eigen::Isometry3d> first;
+    if (truth.isSet()) {
+      const auto gt = sim::GroundTruthReader(truth.getValue()).CameraPoses();
+      if (!gt.empty()) first = gt.begin()->second;
+    }
+    visual_poses = VisualPoses(in.getValue(), method.getValue(), first, &rejected);
+  } else {
+    trajectory = TrackerPoses(in.getValue(), &rejected);
+  }
+  sensors::PoseInterpolationOptions interpolation;
+  interpolation.smoothing_half_window = smoothing.getValue();
+  auto pose_at = [&](double t, std::string* why) -> std::optional<Eigen::Isometry3d> {
+    if (!visual) return trajectory->At(t, interpolation, why);
+    const auto it = visual_poses.find(t);
+    if (it != visual_poses.end()) return it->second;
+    *why = "no visual pose at " + std::to_string(t) + " s";
+    return std::nullopt;
+  };
+  const std::string label = visual ? "POSE_VISUAL" : "POSE_TRACKER";
+
+  sensors::RawlogInput input(in.getValue());
+  sensors::RawlogOutput output(out.getValue());
+  output.ShareImagesOf(in.getValue());
+  int cameras = 0, posed = 0;
+  std::vector<std::string> reasons;
+  // Every camera time (a rig's images share one) with its pose, if it got one: in time order
+  // they are the frames 1, 2, … of novelty-sim's ground truth.
+  std::map<double, std::optional<Eigen::Isometry3d>> frame_poses;
+  while (const auto obj = input.Next()) {
+    if (const auto mount = CameraMount(*obj)) {
+      ++cameras;
+      const auto& o = dynamic_cast<const mrpt::obs::CObservation&>(*obj);
+      std::string why;
+      const double t = mrpt::Clock::toDouble(o.timestamp);
+      const auto pose = pose_at(t, &why);
+      if (pose) {
+        output.Write(sensors::MakeCameraPoseObservation(t, *pose, *mount, label, 0.001, 0.003));
+        ++posed;
+      } else {
+        reasons.push_back(why);
+      }
+      frame_poses.emplace(t, pose);
+    }
+    output.Write(*obj);
+  }
+  output.Close();
+  std::printf("%d of %d camera observations got a pose (%d %s rejected) → %s\n", posed, cameras,
+              rejected, visual ? "frames" : "tracker samples", output.path().c_str());
+  for (size_t i = 0; i < std::min<size_t>(reasons.size(), 5); ++i)
+    std::printf("  no pose: %s\n", reasons[i].c_str());
+  if (reasons.size() > 5) std::printf("  … and %zu more\n", reasons.size() - 5);
+
+  if (truth.isSet()) {  // pose error per frame against novelty-sim's ground truth
+    const auto gt = sim::GroundTruthReader(truth.getValue()).CameraPoses();
+    std::vector<std::pair<int, Eigen::Isometry3d>> estimated;  // frame index, pose
+    int frame = 0;
+    for (const auto& [t, pose] : frame_poses) {
+      ++frame;
+      if (pose) estimated.emplace_back(frame, *pose);
+    }
+    std::vector<double> angle, shift;
+    for (const auto& [index, pose] : estimated) {
+      const auto g = gt.find(index);
+      if (g == gt.end()) continue;
+      angle.push_back(Eigen::AngleAxisd(pose.linear().transpose() * g->second.linear()).angle() *
+                      180 / M_PI);
+      shift.push_back((pose.translation() - g->second.translation()).norm() * 1000);
+    }
+    if (!angle.empty()) {
+      std::printf("last frame %d: %.3f°, %.1f mm off\n", estimated.back().first, angle.back(),
+                  shift.back());
+      std::sort(angle.begin(), angle.end());
+      std::sort(shift.begin(), shift.end());
+      std::printf(
+          "error against ground truth over %zu frames: rotation median %.3f° "
+          "(95 %%: %.3f°), translation median %.2f mm (95 %%: %.2f mm)\n",
+          angle.size(), angle[angle.size() / 2], angle[angle.size() * 95 / 100],
+          shift[shift.size() / 2], shift[shift.size() * 95 / 100]);
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    novelty::apps::CommandLine cmd("Adds camera poses (LED tracker or vision) to a rawlog.", "0.1");
-    TCLAP::UnlabeledValueArg<std::string> in("input", "Input rawlog", true, "", "IN.rawlog", cmd);
-    TCLAP::ValueArg<std::string> out("o", "out", "Output rawlog", true, "", "OUT.rawlog", cmd);
-    std::vector<std::string> sources = {"tracker", "visual"};
-    TCLAP::ValuesConstraint<std::string> allowed(sources);
-    TCLAP::ValueArg<std::string> source("", "source", "Where poses come from", true, "", &allowed,
-                                        cmd);
-    std::vector<std::string> methods = {"direct", "features"};
-    TCLAP::ValuesConstraint<std::string> allowed_methods(methods);
-    TCLAP::ValueArg<std::string> method("", "visual-method",
-                                        "Visual localization: direct (photometric, default) or "
-                                        "features (KLT + PnP, as the thesis)",
-                                        false, "direct", &allowed_methods, cmd);
-    TCLAP::ValueArg<double> smoothing(
-        "", "smoothing", "Half-width (s) of the local linear pose fit; 0 = plain SLERP", false,
-        sensors::PoseInterpolationOptions().smoothing_half_window, "S", cmd);
-    TCLAP::ValueArg<std::string> truth("", "groundtruth", "Report errors against this folder",
-                                       false, "", "DIR", cmd);
-    cmd.Parse(argc, argv);
-    core::CheckInRange(smoothing.getValue(), 0, 60, "--smoothing");
-    if (core::SameFile(in.getValue(), out.getValue()))
-      throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
-                                  in.getValue() + ": it would be overwritten");
-
-    const bool visual = source.getValue() == "visual";
-    int rejected = 0;
-    std::optional<sensors::PoseTrajectory> trajectory;
-    std::map<double, Eigen::Isometry3d> visual_poses;
-    if (visual) {
-      std::optional<Eigen::Isometry3d> first;
-      if (truth.isSet()) {
-        const auto gt = sim::GroundTruthReader(truth.getValue()).CameraPoses();
-        if (!gt.empty()) first = gt.begin()->second;
-      }
-      visual_poses = VisualPoses(in.getValue(), method.getValue(), first, &rejected);
-    } else {
-      trajectory = TrackerPoses(in.getValue(), &rejected);
-    }
-    sensors::PoseInterpolationOptions interpolation;
-    interpolation.smoothing_half_window = smoothing.getValue();
-    auto pose_at = [&](double t, std::string* why) -> std::optional<Eigen::Isometry3d> {
-      if (!visual) return trajectory->At(t, interpolation, why);
-      const auto it = visual_poses.find(t);
-      if (it != visual_poses.end()) return it->second;
-      *why = "no visual pose at " + std::to_string(t) + " s";
-      return std::nullopt;
-    };
-    const std::string label = visual ? "POSE_VISUAL" : "POSE_TRACKER";
-
-    sensors::RawlogInput input(in.getValue());
-    sensors::RawlogOutput output(out.getValue());
-    output.ShareImagesOf(in.getValue());
-    int cameras = 0, posed = 0;
-    std::vector<std::string> reasons;
-    // Every camera time (a rig's images share one) with its pose, if it got one: in time order
-    // they are the frames 1, 2, … of novelty-sim's ground truth.
-    std::map<double, std::optional<Eigen::Isometry3d>> frame_poses;
-    while (const auto obj = input.Next()) {
-      if (const auto mount = CameraMount(*obj)) {
-        ++cameras;
-        const auto& o = dynamic_cast<const mrpt::obs::CObservation&>(*obj);
-        std::string why;
-        const double t = mrpt::Clock::toDouble(o.timestamp);
-        const auto pose = pose_at(t, &why);
-        if (pose) {
-          output.Write(sensors::MakeCameraPoseObservation(t, *pose, *mount, label, 0.001, 0.003));
-          ++posed;
-        } else {
-          reasons.push_back(why);
-        }
-        frame_poses.emplace(t, pose);
-      }
-      output.Write(*obj);
-    }
-    output.Close();
-    std::printf("%d of %d camera observations got a pose (%d %s rejected) → %s\n", posed, cameras,
-                rejected, visual ? "frames" : "tracker samples", output.path().c_str());
-    for (size_t i = 0; i < std::min<size_t>(reasons.size(), 5); ++i)
-      std::printf("  no pose: %s\n", reasons[i].c_str());
-    if (reasons.size() > 5) std::printf("  … and %zu more\n", reasons.size() - 5);
-
-    if (truth.isSet()) {  // pose error per frame against novelty-sim's ground truth
-      const auto gt = sim::GroundTruthReader(truth.getValue()).CameraPoses();
-      std::vector<std::pair<int, Eigen::Isometry3d>> estimated;  // frame index, pose
-      int frame = 0;
-      for (const auto& [t, pose] : frame_poses) {
-        ++frame;
-        if (pose) estimated.emplace_back(frame, *pose);
-      }
-      std::vector<double> angle, shift;
-      for (const auto& [index, pose] : estimated) {
-        const auto g = gt.find(index);
-        if (g == gt.end()) continue;
-        angle.push_back(Eigen::AngleAxisd(pose.linear().transpose() * g->second.linear()).angle() *
-                        180 / M_PI);
-        shift.push_back((pose.translation() - g->second.translation()).norm() * 1000);
-      }
-      if (!angle.empty()) {
-        std::printf("last frame %d: %.3f°, %.1f mm off\n", estimated.back().first, angle.back(),
-                    shift.back());
-        std::sort(angle.begin(), angle.end());
-        std::sort(shift.begin(), shift.end());
-        std::printf(
-            "error against ground truth over %zu frames: rotation median %.3f° "
-            "(95 %%: %.3f°), translation median %.2f mm (95 %%: %.2f mm)\n",
-            angle.size(), angle[angle.size() / 2], angle[angle.size() * 95 / 100],
-            shift[shift.size() / 2], shift[shift.size() * 95 / 100]);
-      }
-    }
-    return 0;
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-poses: %s (%s)\n", e.error().c_str(), e.argId().c_str());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-poses: %s\n", e.what());
-  }
-  return 1;
+  return novelty::apps::RunProgram("novelty-poses", [&] { return Run(argc, argv); });
 }

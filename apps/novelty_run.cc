@@ -48,6 +48,10 @@
 #include <sstream>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
+#include "apps/shell/program.h"
+#include "apps/shell/progress.h"
+#include "apps/shell/skipped_frames.h"
 #include "core/frame_stem.h"
 #include "core/same_file.h"
 #include "core/write_rgb_image.h"
@@ -286,8 +290,8 @@ RunArgs ParseArgs(int argc, char** argv) {
       "M", cmd);
   TCLAP::ValueArg<std::string> objects_in(
       "", "objects-in",
-      "Start the CObjectDatabaseMap (declared in --config) from a saved object database",
-      false, "", "D", cmd);
+      "Start the CObjectDatabaseMap (declared in --config) from a saved object database", false, "",
+      "D", cmd);
   TCLAP::ValueArg<int> objects_from(
       "", "objects-from",
       "The CObjectDatabaseMap takes frames from this one on (default 1); before, the appearance "
@@ -343,9 +347,6 @@ RunArgs ParseArgs(int argc, char** argv) {
   return a;
 }
 
-// A rawlog that ends early: results for the frames read were written, and the exit says so.
-constexpr int kExitPartial = 3;
-
 // The maps' .ini: --config (checked to be a text file), else kDefaultMaps.
 std::unique_ptr<mrpt::config::CConfigFileBase> OpenMapsConfig(const std::string& path) {
   if (path.empty()) return std::make_unique<mrpt::config::CConfigFileMemory>(kDefaultMaps);
@@ -358,7 +359,7 @@ struct Played {
   std::vector<int> panel_frames;
   int frames = 0;
   double seconds = 0.0;
-  double warp_sigma_sum = 0.0;  // the appearance map's floor s (px), summed over frames
+  double warp_sigma_sum = 0.0;   // the appearance map's floor s (px), summed over frames
   double aligned_deg_sum = 0.0;  // align_to_prior: the rotations applied (deg), summed
   int aligned_frames = 0;
 };
@@ -376,6 +377,9 @@ Played Play(const RunArgs& a, RunMaps& maps, const sim::GroundTruthReader& groun
   Played run;
   int index = 0;
   const auto start = std::chrono::steady_clock::now();
+  const int poses = int(ground_truth.CameraPoses().size());
+  apps::Progress progress("novelty-run: playing",
+                          a.max_frames ? std::min(*a.max_frames, poses) : poses);
   while ((!a.max_frames || run.frames < *a.max_frames) && player.Next(maps.multi, index)) {
     // The next frame is index + 1: the object database takes it from --objects-from on.
     if (maps.objects()) maps.objects()->setPaused(index + 1 < a.objects_from);
@@ -410,29 +414,21 @@ Played Play(const RunArgs& a, RunMaps& maps, const sim::GroundTruthReader& groun
       ++run.aligned_frames;
     }
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (run.frames % 50 == 0) {
-      std::fprintf(stderr, "\r[novelty-run] frame %d, %.1f frames/s, %d views   ", index,
-                   run.frames / run.seconds, map.map().store().size());
-    }
+    progress.Update(index);
   }
-  std::fprintf(stderr, "\n");
+  progress.Finish();
   return run;
 }
 
-// Skipped frames on stderr (the first few reasons, then a count: one line per frame can be
-// thousands) and as notes for the report; an early end of the rawlog too.
+// Skipped frames in one line on stderr (one line per frame can be thousands) and as a note for
+// the report; an early end of the rawlog too.
 std::vector<std::string> SkipNotes(const mrpt_plugins::RawlogMapPlayer& player, int frames) {
-  constexpr std::size_t kReasonsShown = 10;
   const auto& reasons = player.skip_reasons();
-  for (std::size_t k = 0; k < std::min(reasons.size(), kReasonsShown); ++k)
-    std::fprintf(stderr, "novelty-run: skipped %s\n", reasons[k].c_str());
-  if (reasons.size() > kReasonsShown)
-    std::fprintf(stderr, "novelty-run: … and %zu more frames skipped\n",
-                 reasons.size() - kReasonsShown);
   std::vector<std::string> notes;
-  if (!reasons.empty())
-    notes.push_back(std::to_string(reasons.size()) +
-                    " frames skipped; the first: " + reasons.front());
+  if (!reasons.empty()) {
+    notes.push_back(apps::SkippedFramesSummary(frames + int(reasons.size()), reasons));
+    std::fprintf(stderr, "novelty-run: %s\n", notes.back().c_str());
+  }
   if (!player.stopped_by().empty()) {
     notes.push_back("The rawlog ends early: " + player.stopped_by() + ". Results cover the " +
                     std::to_string(frames) + " frames read.");
@@ -441,78 +437,81 @@ std::vector<std::string> SkipNotes(const mrpt_plugins::RawlogMapPlayer& player, 
   return notes;
 }
 
+int Run(int argc, char** argv) {
+  RunArgs a = ParseArgs(argc, argv);
+  // Results go to OUT.partial, renamed at the end; the map too when it goes inside OUT.
+  apps::OutputFolder folder("novelty-run", a.out,
+                            {a.rawlog, a.truth, a.config, a.map_in, a.objects_in});
+  const std::string out = a.out;
+  const bool map_inside = a.map_out.rfind(out + "/", 0) == 0;
+  a.out = folder.path();
+  if (map_inside) a.map_out = folder.path() + a.map_out.substr(out.size());
+  const std::unique_ptr<mrpt::config::CConfigFileBase> ini = OpenMapsConfig(a.config);
+  RunMaps maps(*ini, a.config.empty() ? "default maps" : a.config, a.reduction,
+               ParseFactors(a.compare_views));
+  mrpt_plugins::CAppearanceMap& map = maps.appearance();
+  if (!a.map_in.empty()) {
+    map.LoadFromFile(a.map_in);
+    std::fprintf(stderr,
+                 "novelty-run: continuing %s with the options saved in it (the .ini's options "
+                 "and --view-reduction apply to the other maps)\n",
+                 a.map_in.c_str());
+  }
+  if (!a.objects_in.empty()) {
+    if (!maps.objects())
+      throw std::invalid_argument("--objects-in " + a.objects_in +
+                                  ": --config declares no CObjectDatabaseMap to load it into");
+    maps.objects()->LoadFromFile(a.objects_in);
+    std::fprintf(stderr,
+                 "novelty-run: object database from %s, with the options saved in it (the "
+                 ".ini's CObjectDatabaseMap options do not apply)\n",
+                 a.objects_in.c_str());
+  }
+  const sim::GroundTruthReader ground_truth(a.truth);
+  std::filesystem::create_directories(a.out + "/panels");
+  if (const auto parent = std::filesystem::path(a.map_out).parent_path(); !parent.empty())
+    std::filesystem::create_directories(parent);
+  mrpt_plugins::RawlogMapPlayer player(a.rawlog, mrpt_plugins::ParsePoseSource(a.pose_source),
+                                       ground_truth.CameraPoses());
+  const Played run = Play(a, maps, ground_truth, player);
+  if (run.frames == 0) {  // nothing to report, and a saved map must not be replaced by an empty one
+    const auto& reasons = player.skip_reasons();
+    throw std::runtime_error(a.rawlog + ": no frame was inserted into the maps (" +
+                             (reasons.empty() ? std::string("no camera observation")
+                                              : apps::SkippedFramesSummary(0, reasons)) +
+                             ")");
+  }
+  const std::vector<std::string> notes = SkipNotes(player, run.frames);
+  std::printf("Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");
+  WriteReport(a.out, run.rows, ground_truth.Phases(),
+              ThesisFindings(ground_truth.Phases(), ground_truth.CameraPoses()), maps,
+              run.panel_frames, run.frames, run.seconds, map.map().store().size(), notes);
+  map.SaveToFile(a.map_out);
+  map.SaveSceneFile(a.out + "/map.3Dscene");  // for SceneViewer3D
+  if (const mrpt_plugins::CObjectDatabaseMap* objects = maps.objects())
+    objects->SaveToFile(a.out + "/map.object_database");
+  folder.Commit();
+  a.out = out;
+  if (map_inside) a.map_out = out + a.map_out.substr(folder.path().size());
+  if (const mrpt_plugins::CObjectDatabaseMap* objects = maps.objects())
+    std::printf("  objects: %s/objects.csv, %s/map.object_database\n  %s\n", a.out.c_str(),
+                a.out.c_str(), objects->asString().c_str());
+  std::printf(
+      "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
+      "  map:     %s (%s)\n  report:  %s/report.html\n",
+      run.frames, player.skipped(), run.seconds, a.out.c_str(), a.map_out.c_str(),
+      map.asString().c_str(), a.out.c_str());
+  if (run.warp_sigma_sum > 0.0)
+    std::printf("  warp-error floor: s = %.2f px on average over the frames\n",
+                run.warp_sigma_sum / run.frames);
+  if (run.aligned_frames > 0)
+    std::printf("  aligned to the prior: %d frames, by %.3f deg on average\n", run.aligned_frames,
+                run.aligned_deg_sum / run.aligned_frames);
+  return player.stopped_by().empty() ? apps::kExitOk : apps::kExitPartial;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    const RunArgs a = ParseArgs(argc, argv);
-    const std::unique_ptr<mrpt::config::CConfigFileBase> ini = OpenMapsConfig(a.config);
-    RunMaps maps(*ini, a.config.empty() ? "default maps" : a.config, a.reduction,
-                 ParseFactors(a.compare_views));
-    mrpt_plugins::CAppearanceMap& map = maps.appearance();
-    if (!a.map_in.empty()) {
-      map.LoadFromFile(a.map_in);
-      std::fprintf(stderr,
-                   "novelty-run: continuing %s with the options saved in it (the .ini's options "
-                   "and --view-reduction apply to the other maps)\n",
-                   a.map_in.c_str());
-    }
-    if (!a.objects_in.empty()) {
-      if (!maps.objects())
-        throw std::invalid_argument("--objects-in " + a.objects_in +
-                                    ": --config declares no CObjectDatabaseMap to load it into");
-      maps.objects()->LoadFromFile(a.objects_in);
-      std::fprintf(stderr,
-                   "novelty-run: object database from %s, with the options saved in it (the "
-                   ".ini's CObjectDatabaseMap options do not apply)\n",
-                   a.objects_in.c_str());
-    }
-    const sim::GroundTruthReader ground_truth(a.truth);
-    std::filesystem::create_directories(a.out + "/panels");
-    if (const auto parent = std::filesystem::path(a.map_out).parent_path(); !parent.empty())
-      std::filesystem::create_directories(parent);
-    mrpt_plugins::RawlogMapPlayer player(a.rawlog, mrpt_plugins::ParsePoseSource(a.pose_source),
-                                         ground_truth.CameraPoses());
-    const Played run = Play(a, maps, ground_truth, player);
-    const std::vector<std::string> notes = SkipNotes(player, run.frames);
-    if (run.frames ==
-        0) {  // nothing to report, and a saved map must not be replaced by an empty one
-      const auto& reasons = player.skip_reasons();
-      throw std::runtime_error(a.rawlog + ": no frame was inserted into the maps" +
-                               (reasons.empty()
-                                    ? std::string(" (no camera observation)")
-                                    : " (" + std::to_string(reasons.size()) +
-                                          " skipped; the first: " + reasons.front() + ")"));
-    }
-    std::printf(
-        "Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n");
-    WriteReport(a.out, run.rows, ground_truth.Phases(),
-                ThesisFindings(ground_truth.Phases(), ground_truth.CameraPoses()), maps,
-                run.panel_frames, run.frames, run.seconds, map.map().store().size(), notes);
-    map.SaveToFile(a.map_out);
-    map.SaveSceneFile(a.out + "/map.3Dscene");  // for SceneViewer3D
-    if (const mrpt_plugins::CObjectDatabaseMap* objects = maps.objects()) {
-      objects->SaveToFile(a.out + "/map.object_database");
-      std::printf("  objects: %s/objects.csv, %s/map.object_database\n  %s\n", a.out.c_str(),
-                  a.out.c_str(), objects->asString().c_str());
-    }
-    std::printf(
-        "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
-        "  map:     %s (%s)\n  report:  %s/report.html\n",
-        run.frames, player.skipped(), run.seconds, a.out.c_str(), a.map_out.c_str(),
-        map.asString().c_str(), a.out.c_str());
-    if (run.warp_sigma_sum > 0.0)
-      std::printf("  warp-error floor: s = %.2f px on average over the frames\n",
-                  run.warp_sigma_sum / run.frames);
-    if (run.aligned_frames > 0)
-      std::printf("  aligned to the prior: %d frames, by %.3f deg on average\n",
-                  run.aligned_frames, run.aligned_deg_sum / run.aligned_frames);
-    return player.stopped_by().empty() ? 0 : kExitPartial;
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-run: %s (%s)\n", e.error().c_str(), e.argId().c_str());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-run: %s\n", sensors::BriefMessage(e, 600).c_str());
-    return 1;
-  }
+  return novelty::apps::RunProgram("novelty-run", [&] { return Run(argc, argv); });
 }

@@ -18,6 +18,9 @@
 #include <memory>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
+#include "apps/shell/program.h"
+#include "apps/shell/progress.h"
 #include "core/resident_memory.h"
 #include "eval/html_report.h"
 #include "eval/memory_plateau.h"
@@ -66,76 +69,73 @@ void WriteReport(const std::string& out, const std::vector<eval::SoakSample>& sa
   report.Save(out + "/soak.html");
 }
 
+int Run(int argc, char** argv) {
+  novelty::apps::CommandLine cmd("Memory of a long run: a rawlog played into the maps in a loop.",
+                                 "0.1");
+  TCLAP::ValueArg<std::string> rawlog("", "rawlog", "RGB-D rawlog", true, "", "R.rawlog", cmd);
+  TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground-truth folder (poses)", true, "",
+                                     "DIR", cmd);
+  TCLAP::ValueArg<std::string> out("", "out", "Output folder", true, "", "OUT", cmd);
+  TCLAP::ValueArg<int> frames("", "frames", "Frames in all (1…10⁷)", false, 10000, "N", cmd);
+  TCLAP::ValueArg<int> every("", "sample-every", "Frames between samples", false, 100, "K", cmd);
+  TCLAP::ValueArg<std::string> config("", "config", "Multimap .ini (default: one map of each)",
+                                      false, "", "maps.ini", cmd);
+  cmd.Parse(argc, argv);
+  if (frames.getValue() < 1 || frames.getValue() > 10000000)
+    throw std::invalid_argument("--frames must be in 1…10000000");
+  if (every.getValue() < 1) throw std::invalid_argument("--sample-every must be >= 1");
+
+  mrpt::maps::CMultiMetricMap maps;
+  maps.setListOfMaps(Maps(config.getValue()));
+  const auto appearance = maps.mapByClass<mrpt_plugins::CAppearanceMap>();
+  if (!appearance) throw std::runtime_error("the maps hold no CAppearanceMap");
+  const sim::GroundTruthReader ground_truth(truth.getValue());
+  apps::OutputFolder folder("novelty-soak", out.getValue(),
+                            {rawlog.getValue(), truth.getValue(), config.getValue()});
+
+  std::vector<eval::SoakSample> samples;
+  std::vector<double> map_mb;
+  int played = 0, loops = 0;
+  apps::Progress progress("[novelty-soak] playing", frames.getValue());
+  while (played < frames.getValue()) {
+    mrpt_plugins::RawlogMapPlayer player(rawlog.getValue(), mrpt_plugins::PoseSource::kGroundTruth,
+                                         ground_truth.CameraPoses());
+    int index = 0, in_loop = 0;
+    while (played < frames.getValue() && player.Next(maps, index)) {
+      ++played;
+      ++in_loop;
+      if (played % every.getValue() == 0 || played == frames.getValue()) {
+        const auto& store = appearance->map().store();
+        samples.push_back({played, core::ResidentMegabytes(), store.size()});
+        map_mb.push_back(double(store.BytesUsed()) / (1 << 20));
+      }
+      progress.Update(played);
+    }
+    if (in_loop == 0)
+      throw std::runtime_error(rawlog.getValue() + ": no frame was inserted into the maps");
+    ++loops;
+  }
+  progress.Finish();
+  const eval::MemoryPlateau p = eval::FindMemoryPlateau(samples);
+  WriteReport(folder.path(), samples, map_mb, p);
+  folder.Commit();  // the samples are results also when the memory grew
+  std::printf("%d frames in %d loops; resident %.1f MiB at the first sample, %.1f at the end\n",
+              played, loops, samples.front().resident_mb, samples.back().resident_mb);
+  if (!p.reached) {
+    std::printf("the map was still growing at the end (%d views): no plateau\n",
+                samples.back().views);
+    return 1;
+  }
+  std::printf(
+      "map stopped growing at frame %d (%d views); resident memory from there %.1f → "
+      "%.1f MiB (%+.2f %%, bound %.0f %%)\n  %s/soak.csv, %s/soak.html\n",
+      p.frame, samples.back().views, p.start_mb, p.end_mb, 100 * p.growth, 100 * kMaxGrowth,
+      out.getValue().c_str(), out.getValue().c_str());
+  return p.growth < kMaxGrowth ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    novelty::apps::CommandLine cmd("Memory of a long run: a rawlog played into the maps in a loop.",
-                                   "0.1");
-    TCLAP::ValueArg<std::string> rawlog("", "rawlog", "RGB-D rawlog", true, "", "R.rawlog", cmd);
-    TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground-truth folder (poses)", true, "",
-                                       "DIR", cmd);
-    TCLAP::ValueArg<std::string> out("", "out", "Output folder", true, "", "OUT", cmd);
-    TCLAP::ValueArg<int> frames("", "frames", "Frames in all (1…10⁷)", false, 10000, "N", cmd);
-    TCLAP::ValueArg<int> every("", "sample-every", "Frames between samples", false, 100, "K", cmd);
-    TCLAP::ValueArg<std::string> config("", "config", "Multimap .ini (default: one map of each)",
-                                        false, "", "maps.ini", cmd);
-    cmd.Parse(argc, argv);
-    if (frames.getValue() < 1 || frames.getValue() > 10000000)
-      throw std::invalid_argument("--frames must be in 1…10000000");
-    if (every.getValue() < 1) throw std::invalid_argument("--sample-every must be >= 1");
-
-    mrpt::maps::CMultiMetricMap maps;
-    maps.setListOfMaps(Maps(config.getValue()));
-    const auto appearance = maps.mapByClass<mrpt_plugins::CAppearanceMap>();
-    if (!appearance) throw std::runtime_error("the maps hold no CAppearanceMap");
-    const sim::GroundTruthReader ground_truth(truth.getValue());
-    std::filesystem::create_directories(out.getValue());
-
-    std::vector<eval::SoakSample> samples;
-    std::vector<double> map_mb;
-    int played = 0, loops = 0;
-    while (played < frames.getValue()) {
-      mrpt_plugins::RawlogMapPlayer player(
-          rawlog.getValue(), mrpt_plugins::PoseSource::kGroundTruth, ground_truth.CameraPoses());
-      int index = 0, in_loop = 0;
-      while (played < frames.getValue() && player.Next(maps, index)) {
-        ++played;
-        ++in_loop;
-        if (played % every.getValue() == 0 || played == frames.getValue()) {
-          const auto& store = appearance->map().store();
-          samples.push_back({played, core::ResidentMegabytes(), store.size()});
-          map_mb.push_back(double(store.BytesUsed()) / (1 << 20));
-          std::fprintf(stderr,
-                       "\r[novelty-soak] frame %d (loop %d): %.1f MiB resident, %d views   ",
-                       played, loops + 1, samples.back().resident_mb, samples.back().views);
-        }
-      }
-      if (in_loop == 0)
-        throw std::runtime_error(rawlog.getValue() + ": no frame was inserted into the maps");
-      ++loops;
-    }
-    std::fprintf(stderr, "\n");
-    const eval::MemoryPlateau p = eval::FindMemoryPlateau(samples);
-    WriteReport(out.getValue(), samples, map_mb, p);
-    std::printf("%d frames in %d loops; resident %.1f MiB at the first sample, %.1f at the end\n",
-                played, loops, samples.front().resident_mb, samples.back().resident_mb);
-    if (!p.reached) {
-      std::printf("the map was still growing at the end (%d views): no plateau\n",
-                  samples.back().views);
-      return 1;
-    }
-    std::printf(
-        "map stopped growing at frame %d (%d views); resident memory from there %.1f → "
-        "%.1f MiB (%+.2f %%, bound %.0f %%)\n  %s/soak.csv, %s/soak.html\n",
-        p.frame, samples.back().views, p.start_mb, p.end_mb, 100 * p.growth, 100 * kMaxGrowth,
-        out.getValue().c_str(), out.getValue().c_str());
-    return p.growth < kMaxGrowth ? 0 : 1;
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-soak: %s (%s)\n", e.error().c_str(), e.argId().c_str());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-soak: %s\n", sensors::BriefMessage(e, 600).c_str());
-    return 1;
-  }
+  return novelty::apps::RunProgram("novelty-soak", [&] { return Run(argc, argv); });
 }

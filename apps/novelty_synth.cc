@@ -27,6 +27,7 @@
 #include <sstream>
 
 #include "apps/command_line.h"
+#include "apps/shell/program.h"
 #include "core/frame_stem.h"
 #include "core/range_check.h"
 #include "core/write_rgb_image.h"
@@ -161,9 +162,7 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int Run(int argc, char** argv) {
   novelty::apps::CommandLine cmd(
       "Synthesises camera views from reference views with depth and poses.", "0.1");
   TCLAP::ValueArg<std::string> frames("", "frames", "RGB-D folder (color/, depth/, pose.txt)",
@@ -201,45 +200,43 @@ int main(int argc, char** argv) {
                                 "Weight views by (cos(angle between viewing rays) / that of the "
                                 "pixel's best view)^A (0 = off, the thesis's average)",
                                 false, defaults.blend.angle_power, "A", cmd);
-  try {
-    cmd.Parse(argc, argv);
-    core::CheckInRange(jump.getValue(), 1e-6, 100, "--max-depth-jump");
-    core::CheckInRange(tolerance.getValue(), 0, 100, "--depth-tolerance");
-    core::CheckInRange(power.getValue(), 0, 100, "--resolution-power");
-    core::CheckInRange(angle.getValue(), 0, 100, "--angle-power");
-    core::CheckInRange(scale.getValue(), 1e-3, 1e9, "--depth-scale");
-    core::CheckInRange(every.getValue(), 2, 1e6, "--every");
-    views::SynthesisOptions options;
-    views::WarpOptions& wo = options.warp;
-    wo.max_relative_depth_jump = jump.getValue();
-    views::BlendOptions& bo = options.blend;
-    bo.depth_tolerance = tolerance.getValue();
-    bo.resolution_power = power.getValue();
-    bo.angle_power = angle.getValue();
-    views::DepthMeshWarper warper(wo, views::WarpOutputsFor(bo));
-    if (rawlog.isSet()) {
-      if (!truth.isSet()) throw std::invalid_argument("--rawlog needs --groundtruth DIR");
-      return RawlogMode(rawlog.getValue(), truth.getValue(), every.getValue(), out.getValue(),
-                        warper, options);
-    }
-    if (!frames.isSet() || !fx.isSet() || !fy.isSet() || !cx.isSet() || !cy.isSet() ||
-        !target.isSet() || !sources.isSet()) {
-      throw std::invalid_argument(
-          "give either --rawlog R --groundtruth DIR, or --frames DIR with "
-          "--fx --fy --cx --cy --target --sources");
-    }
-    core::PinholeCamera cam;
-    cam.fx = fx.getValue();
-    cam.fy = fy.getValue();
-    cam.cx = cx.getValue();
-    cam.cy = cy.getValue();
-    return FolderMode(frames.getValue(), cam, scale.getValue(), target.getValue(),
-                      sources.getValue(), out.getValue(), warper, options);
-  } catch (const TCLAP::ArgException& e) {
-    std::fprintf(stderr, "novelty-synth: %s (%s)\n", e.error().c_str(), e.argId().c_str());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "novelty-synth: %s\n", e.what());
-    return 1;
+  cmd.Parse(argc, argv);
+  core::CheckInRange(jump.getValue(), 1e-6, 100, "--max-depth-jump");
+  core::CheckInRange(tolerance.getValue(), 0, 100, "--depth-tolerance");
+  core::CheckInRange(power.getValue(), 0, 100, "--resolution-power");
+  core::CheckInRange(angle.getValue(), 0, 100, "--angle-power");
+  core::CheckInRange(scale.getValue(), 1e-3, 1e9, "--depth-scale");
+  core::CheckInRange(every.getValue(), 2, 1e6, "--every");
+  views::SynthesisOptions options;
+  views::WarpOptions& wo = options.warp;
+  wo.max_relative_depth_jump = jump.getValue();
+  views::BlendOptions& bo = options.blend;
+  bo.depth_tolerance = tolerance.getValue();
+  bo.resolution_power = power.getValue();
+  bo.angle_power = angle.getValue();
+  views::DepthMeshWarper warper(wo, views::WarpOutputsFor(bo));
+  if (rawlog.isSet()) {
+    if (!truth.isSet()) throw std::invalid_argument("--rawlog needs --groundtruth DIR");
+    return RawlogMode(rawlog.getValue(), truth.getValue(), every.getValue(), out.getValue(), warper,
+                      options);
   }
+  if (!frames.isSet() || !fx.isSet() || !fy.isSet() || !cx.isSet() || !cy.isSet() ||
+      !target.isSet() || !sources.isSet()) {
+    throw std::invalid_argument(
+        "give either --rawlog R --groundtruth DIR, or --frames DIR with "
+        "--fx --fy --cx --cy --target --sources");
+  }
+  core::PinholeCamera cam;
+  cam.fx = fx.getValue();
+  cam.fy = fy.getValue();
+  cam.cx = cx.getValue();
+  cam.cy = cy.getValue();
+  return FolderMode(frames.getValue(), cam, scale.getValue(), target.getValue(), sources.getValue(),
+                    out.getValue(), warper, options);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return novelty::apps::RunProgram("novelty-synth", [&] { return Run(argc, argv); });
 }

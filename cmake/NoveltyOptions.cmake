@@ -158,8 +158,10 @@ function(novelty_add_hwcaps_variant name level sources)
 endfunction()
 
 # novelty_add_app(NAME SOURCE [DEPS ...]) -> build/bin/NAME
+# Every program is a shell over novelty_shell (apps/shell/program.h) and is installed.
 function(novelty_add_app name source)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
   add_executable(${name} ${source})
-  target_link_libraries(${name} PRIVATE ${ARG_DEPS} novelty_build_flags)
+  target_link_libraries(${name} PRIVATE novelty_shell ${ARG_DEPS} novelty_build_flags)
+  set_property(GLOBAL APPEND PROPERTY novelty_programs ${name})
 endfunction()

@@ -11,7 +11,7 @@ PACKAGES=(
   libeigen3-dev libceres-dev liboctomap-dev libopengv-dev
   libode-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libtclap-dev zlib1g-dev libzstd-dev
+  libtclap-dev zlib1g-dev libzstd-dev libpng-dev
 )
 
 missing=()

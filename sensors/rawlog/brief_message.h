@@ -9,7 +9,8 @@
 namespace novelty::sensors {
 
 /// The "Message:" parts of an MRPT exception joined by ": " (any other text as is), on one line,
-/// with control and non-ASCII bytes shown as '?', at most `max_length` characters.
+/// with control bytes and bytes that are not UTF-8 shown as '?', at most `max_length` bytes (cut
+/// between characters, then "…").
 std::string BriefMessage(const std::exception& e, std::size_t max_length = 300);
 
 /// The same for a message text.

@@ -41,6 +41,11 @@ TEST(BriefMessage, PlainTextStaysAndBinaryBytesAreMasked) {
             "class <?"
             "?> x y");
   EXPECT_EQ(BriefMessage(std::string(500, 'a'), 10), std::string(10, 'a') + "…");
+  // UTF-8 stays (the programs' own messages use it); a cut never splits a character, and a
+  // lone continuation or truncated sequence is masked.
+  EXPECT_EQ(BriefMessage(std::string("need 2…512 hypotheses")), "need 2…512 hypotheses");
+  EXPECT_EQ(BriefMessage(std::string("ab…"), 3), "ab…");
+  EXPECT_EQ(BriefMessage(std::string("x\x80y\xe2\x80")), "x?y??");
 }
 
 }  // namespace

@@ -1,0 +1,119 @@
+#include "apps/shell/output_folder.h"
+
+#include <stdlib.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace novelty::apps {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The program named in `dir`'s marker, "" if there is none.
+std::string WrittenBy(const fs::path& dir) {
+  std::ifstream in(dir / OutputFolder::kMarker);
+  std::string program;
+  std::getline(in, program);
+  return program;
+}
+
+bool Empty(const fs::path& dir) {
+  return fs::is_empty(dir);
+}
+
+// True if `inner` is `outer` or lies inside it (both made absolute and normal; symbolic links
+// resolved where the paths exist).
+std::vector<std::string> Components(const fs::path& p) {
+  std::error_code ec;
+  fs::path full = fs::weakly_canonical(fs::absolute(p), ec);
+  if (ec) full = fs::absolute(p).lexically_normal();
+  std::vector<std::string> parts;
+  for (const fs::path& part : full)
+    if (!part.empty()) parts.push_back(part.string());
+  return parts;
+}
+
+bool Within(const fs::path& inner, const fs::path& outer) {
+  const std::vector<std::string> a = Components(inner), b = Components(outer);
+  return a.size() >= b.size() && std::equal(b.begin(), b.end(), a.begin());
+}
+
+// May `dir` be replaced by `program`'s results?
+void CheckReplaceable(const fs::path& dir, const std::string& program, const std::string& out) {
+  if (!fs::exists(fs::symlink_status(dir))) return;
+  if (!fs::is_directory(fs::symlink_status(dir)))
+    throw std::runtime_error(dir.string() + ": exists and is not a folder; choose another --out");
+  if (Empty(dir)) return;
+  const std::string by = WrittenBy(dir);
+  if (by == program) return;
+  throw std::runtime_error(out + ": " +
+                           (by.empty() ? "holds files that are not " + program + "'s results"
+                                       : "holds " + by + "'s results") +
+                           (dir.string() == out ? "" : " (in " + dir.string() + ")") +
+                           "; choose another --out");
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(const std::string& program, const std::string& out,
+                           const std::vector<std::string>& inputs)
+    : program_(program), out_(out) {
+  if (out.empty()) throw std::runtime_error(program + ": the output folder is empty (--out)");
+  while (out_.size() > 1 && out_.back() == '/') out_.pop_back();
+  partial_ = out_ + ".partial";
+  for (const std::string& input : inputs) {
+    if (input.empty()) continue;
+    if (Within(input, out_))
+      throw std::runtime_error(out_ + ": holds an input of the run (" + input +
+                               "); choose another --out");
+  }
+  CheckReplaceable(out_, program_, out_);
+  CheckReplaceable(partial_, program_, out_);
+  fs::remove_all(partial_);
+  std::error_code ec;
+  fs::create_directories(partial_, ec);
+  if (ec)
+    throw std::runtime_error(partial_ + ": cannot create the output folder (" + ec.message() + ")");
+  // Marked at once: a partial folder left by a killed run is this program's to remove.
+  std::ofstream(fs::path(partial_) / kMarker) << program_ << "\n";
+}
+
+OutputFolder::~OutputFolder() {
+  if (committed_) return;
+  std::error_code ignored;
+  fs::remove_all(partial_, ignored);
+}
+
+std::string OutputFolder::File(const std::string& name) const {
+  return (fs::path(partial_) / name).string();
+}
+
+void OutputFolder::Commit() {
+  if (committed_) return;
+  std::error_code ec;
+  std::string old;  // the earlier output moves to a new, unique name, then goes
+  if (fs::exists(fs::symlink_status(out_))) {
+    std::string name = out_ + ".old.XXXXXX";
+    if (!mkdtemp(name.data()))
+      throw std::runtime_error(out_ + ": cannot replace the earlier output (no folder beside it)");
+    old = name;
+    fs::rename(out_, old, ec);  // onto the empty folder mkdtemp made
+    if (ec) {
+      fs::remove(old);
+      throw std::runtime_error(out_ + ": cannot replace the earlier output (" + ec.message() + ")");
+    }
+  }
+  fs::rename(partial_, out_, ec);
+  if (ec) {
+    if (!old.empty()) fs::rename(old, out_);
+    throw std::runtime_error(out_ + ": cannot publish the results from " + partial_ + " (" +
+                             ec.message() + ")");
+  }
+  committed_ = true;
+  if (!old.empty()) fs::remove_all(old, ec);
+}
+
+}  // namespace novelty::apps
