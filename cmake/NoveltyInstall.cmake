@@ -15,8 +15,10 @@ install(TARGETS ${NOVELTY_EXPORTED} EXPORT NoveltyMapsTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION include/novelty)
 install(TARGETS novelty_sim LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})  # for the programs
-install(TARGETS novelty-run novelty-sim novelty-depth novelty-poses novelty-synth novelty-info
-        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS novelty_shell LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})  # for the programs
+get_property(novelty_programs GLOBAL PROPERTY novelty_programs)  # every novelty_add_app
+install(TARGETS ${novelty_programs} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(DIRECTORY examples/ DESTINATION ${CMAKE_INSTALL_DATADIR}/novelty/examples)
 foreach(part core maps eval sensors mrpt_plugins)
   install(DIRECTORY ${part} DESTINATION include/novelty FILES_MATCHING PATTERN "*.h")
 endforeach()

@@ -26,4 +26,17 @@ cmake --build "$work/build"
   "$work/out" 20
 pngs=$(find "$work/out" -name 'surprise_*.png' | wc -l)
 [ "$pngs" -eq 4 ] || { echo "example: expected 4 surprise PNGs, found $pngs" >&2; exit 1; }
-echo "example: built against $prefix with default flags; 4 PNGs; save, load, continue within 1 %"
+# The README's program: 40 frames, a PNG every tenth.
+mkdir -p "$work/readme"
+"$work/build/surprise_pngs" "$work/clip/glass_and_cup.rawlog" examples/maps.ini "$work/readme" > /dev/null
+pngs=$(find "$work/readme" -name 'surprise_*.png' | wc -l)
+[ "$pngs" -eq 4 ] || { echo "example: surprise_pngs wrote $pngs PNGs, expected 4" >&2; exit 1; }
+# Every program is installed.
+for p in novelty novelty-sim novelty-run novelty-depth novelty-poses novelty-synth novelty-objects \
+         novelty-invariant novelty-illumination novelty-illumination-map novelty-soak novelty-info; do
+  [ -x "$prefix/bin/$p" ] || { echo "example: $prefix/bin/$p is not installed" >&2; exit 1; }
+done
+"$prefix/bin/novelty" info > /dev/null
+[ -f "$prefix/share/novelty/examples/surprise_pngs.cc" ] || { echo "example: examples/ not installed" >&2; exit 1; }
+echo "example: built against $prefix with default flags; 4 PNGs; save, load, continue within 1 %;"
+echo "  the README's surprise_pngs: 4 PNGs; every program installed"

@@ -22,15 +22,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # The tests listed in tests/sanitizer_skip.txt (whole sequences, 30 s to 5 min each under the
 # sanitizers) run in the plain build only. A line that names no test is an error: a renamed test
 # would otherwise run here again, unnoticed, and the stage outgrow CI's time.
-list=tests/sanitizer_skip.txt
-[ -r "$list" ] || { echo "sanitize: cannot read $list" >&2; exit 1; }
-mapfile -t patterns < <(sed -E 's/^[[:space:]]+//; s/[[:space:]]+$//' "$list" | grep -vE '^(#|$)')
-[ "${#patterns[@]}" -gt 0 ] || { echo "sanitize: $list names no test" >&2; exit 1; }
-for p in "${patterns[@]}"; do
-  case "$p" in *'('*) echo "sanitize: $list: '$p': no parentheses (see the file)" >&2; exit 1 ;; esac
-  n=$(ctest --test-dir build-sanitize -N -R "$p" | sed -n 's/^Total Tests: //p')
-  [ "${n:-0}" -gt 0 ] || { echo "sanitize: $list: '$p' names no test" >&2; exit 1; }
-done
-skip=$(IFS='|'; echo "${patterns[*]}")
+source scripts/ctest_patterns.sh
+skip=$(ctest_patterns tests/sanitizer_skip.txt build-sanitize)
 ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)" --timeout 1800 \
   --no-tests=error -E "$skip"

@@ -1,14 +1,13 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs every test (GoogleTest suites and benchmark smoke runs) with ctest; then
-# the example built with default flags against this build's installed package (scripts/example.sh),
-# the portable build: its kernel tests on each CPU variant and the example against it
-# (scripts/portable.sh), and the sanitizer build: the tests again under ASan, UBSan and LSan but
-# the whole-sequence ones of tests/sanitizer_skip.txt, and the fuzzers from their seeds
-# (scripts/sanitize.sh).
+# The README's test command: sets up, builds and runs the test suite (GoogleTest suites, the
+# programs' bad-input cases and benchmark smoke runs) but the long whole-sequence tests of
+# tests/long_tests.txt, then the example built with default flags against this build's installed
+# package (scripts/example.sh). CI then runs scripts/test_builds.sh: the long tests, the
+# portable build's CPU variants and the sanitizer build with the fuzzers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/ctest_patterns.sh
 bash scripts/build.sh "$@"
-ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 900
+long=$(ctest_patterns tests/long_tests.txt build)
+ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 900 -E "$long"
 bash scripts/example.sh build  # this build's package, -march=native, used with default flags
-bash scripts/portable.sh
-bash scripts/sanitize.sh
