@@ -1,7 +1,7 @@
 // Depth as every part takes it (core/frame.h): float metres, 0 or NaN where unknown. A negative or
 // infinite depth is neither: a broken sensor, decoder or file, and would warp pixels behind the
 // camera or to infinity. Frames (appearance_map.h CheckFrame) and map files
-// (mrpt_plugins/map_files.cc) refuse them with this count.
+// (mrpt_plugins/view_archive.cc) refuse them with this count.
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "mrpt_plugins/appearance_map_options.h"
-#include "mrpt_plugins/map_files.h"
 #include "mrpt_plugins/register_maps.h"
+#include "mrpt_plugins/view_display.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 using novelty::mrpt_plugins::CAppearanceMap;

@@ -4,8 +4,8 @@
 
 #include <sstream>
 
-#include "mrpt_plugins/map_files.h"
 #include "mrpt_plugins/register_maps.h"
+#include "mrpt_plugins/view_display.h"
 
 using novelty::mrpt_plugins::CDifferencingMap;
 

@@ -9,8 +9,11 @@
 
 #include "core/false_color.h"
 #include "mrpt_plugins/cimage_products.h"
-#include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/map_file.h"
+#include "mrpt_plugins/observation_frame.h"
 #include "mrpt_plugins/register_maps.h"
+#include "mrpt_plugins/view_archive.h"
+#include "mrpt_plugins/view_display.h"
 
 using novelty::mrpt_plugins::CIlluminationInvariantMap;
 
@@ -129,7 +132,7 @@ void CIlluminationInvariantMap::saveMetricMapRepresentationToFile(const std::str
 }
 
 // Map file, version 0: every option by key (option_table.h); the lightings and viewpoint counts;
-// per viewpoint its view (map_files.h WriteView: camera, pose, depth, planes "invariant" and
+// per viewpoint its view (view_archive.h WriteView: camera, pose, depth, planes "invariant" and
 // "shapes"), its coverage and its model (gamma fits of luminance and saturation, quantisation
 // widths, mean information, T_Y).
 // Version 1 adds per viewpoint the missing texture's tail table (entries, values, ln(N + 1); no

@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "maps/objects/feature_extractor.h"
-#include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/map_file.h"
 #include "mrpt_plugins/register_maps.h"
 
 using novelty::mrpt_plugins::CObjectDatabaseMap;
@@ -173,7 +173,7 @@ void CObjectDatabaseMap::SaveToFile(const std::string& path) const {
 }
 
 void CObjectDatabaseMap::LoadFromFile(const std::string& path) {
-  RegisterMaps();  // the archive names the class
+  RegisterMaps();             // the archive names the class
   CObjectDatabaseMap loaded;  // a fresh map: on failure this one is untouched
   LoadInto(loaded, path, "CObjectDatabaseMap");
   config_ = loaded.config_;
@@ -201,7 +201,8 @@ void CObjectDatabaseMap::serializeTo(mrpt::serialization::CArchive& out) const {
   const objects::FeatureDatabase& db = database();
   const cv::Mat& d = db.descriptors();
   out << int32_t(db.objects()) << int32_t(d.rows) << int32_t(d.rows ? d.cols : 0);
-  for (int h = 0; h < d.rows; ++h) out.WriteBufferFixEndianness(d.ptr<float>(h), std::size_t(d.cols));
+  for (int h = 0; h < d.rows; ++h)
+    out.WriteBufferFixEndianness(d.ptr<float>(h), std::size_t(d.cols));
   for (const auto& counts : db.counts()) {
     out << uint32_t(counts.size());
     for (const auto& [object, n] : counts) out << int32_t(object) << int32_t(n);

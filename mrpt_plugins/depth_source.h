@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "mrpt_plugins/map_files.h"
+#include "core/frame.h"
 #include "sensors/stereo/stereo_depth.h"
 
 namespace novelty::mrpt_plugins {

@@ -30,7 +30,7 @@
 
 namespace novelty::mrpt_plugins {
 
-/// How errors in a map file's content begin (LoadInto in map_files.h puts the path instead).
+/// How errors in a map file's content begin (LoadInto in map_file.h puts the path instead).
 inline constexpr const char* kMapFileError = "map file: ";
 
 /// A string as MRPT's `<<` writes it (uint32 length, bytes), refused before any allocation when

@@ -20,7 +20,9 @@
 
 #include "mrpt_plugins/cimage_products.h"
 #include "mrpt_plugins/depth_source.h"
-#include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/map_file.h"
+#include "mrpt_plugins/observation_frame.h"
+#include "mrpt_plugins/view_archive.h"
 #include "mrpt_plugins/pose_check.h"
 #include "mrpt_plugins/register_maps.h"
 #include "sensors/rawlog/rgbd_observation.h"

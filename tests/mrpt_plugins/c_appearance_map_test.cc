@@ -11,7 +11,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/map_file.h"
+#include "mrpt_plugins/view_archive.h"
 #include "tests/mrpt_plugins/clip_observations.h"
 
 namespace novelty::mrpt_plugins {

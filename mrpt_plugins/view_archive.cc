@@ -1,24 +1,15 @@
-#include "mrpt_plugins/map_files.h"
-
-#include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileOutputStream.h>
-#include <mrpt/obs/CObservation3DRangeScan.h>
-#include <mrpt/opengl/CFrustum.h>
+#include "mrpt_plugins/view_archive.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "core/depth_check.h"
-#include "core/temporary_file.h"
 #include "maps/views/plane_codec.h"
 #include "mrpt_plugins/option_table.h"
-#include "sensors/rawlog/brief_message.h"
-#include "sensors/rawlog/rgbd_observation.h"
 
 namespace novelty::mrpt_plugins {
 
@@ -184,22 +175,6 @@ void WritePlanes(mrpt::serialization::CArchive& out, const views::EncodedView& e
 
 }  // namespace
 
-bool DecodeObservation(const mrpt::obs::CObservation& obs,
-                       const std::optional<const mrpt::poses::CPose3D>& robot, core::Frame& frame) {
-  const auto* scan = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obs);
-  if (!scan) return false;
-  scan->load();
-  try {
-    sensors::DecodeRgbd(*scan, frame.rgb, frame.depth, frame.camera);
-  } catch (const std::exception& e) {
-    throw std::invalid_argument("observation '" + scan->sensorLabel + "': " + e.what());
-  }
-  const Eigen::Isometry3d world_from_robot =
-      robot ? sensors::ToEigen(*robot) : Eigen::Isometry3d::Identity();
-  frame.T_world_cam = world_from_robot * sensors::CameraOnRobot(*scan);
-  return true;
-}
-
 void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map,
                   uint8_t version) {
   const views::ReferenceViewStore& store = map.store();
@@ -275,84 +250,6 @@ views::ReferenceView ReadView(mrpt::serialization::CArchive& in, const std::stri
     throw std::runtime_error(std::string(kMapFileError) + error.what());
   }
   return v;
-}
-
-std::string StoreSummary(const views::ReferenceViewStore& store) {
-  int decoded = 0;
-  for (int j = 0; j < store.size(); ++j) decoded += store.decoded(j);
-  char text[200];
-  std::snprintf(text, sizeof text, "%d reference views, %.1f MiB", store.size(),
-                double(store.BytesUsed()) / (1 << 20));
-  std::string s = text;
-  if (store.options().decoded_views > 0) {
-    std::snprintf(text, sizeof text,
-                  " (%d decoded, the rest compact; %ld encodings, %ld decodings)", decoded,
-                  store.counts().encoded, store.counts().decoded);
-    s += text;
-  }
-  return s;
-}
-
-void AddViewFrusta(const views::ReferenceViewStore& store, const std::vector<double>& badness,
-                   mrpt::opengl::CSetOfObjects& o) {
-  // Frusta point along their +X: turn the camera's +Z onto it.
-  Eigen::Isometry3d cam_from_frustum = Eigen::Isometry3d::Identity();
-  cam_from_frustum.linear() << 0, -1, 0, 0, 0, -1, 1, 0, 0;
-  for (int j = 0; j < store.size(); ++j) {
-    const core::PinholeCamera& c = store.camera(j);
-    const double hfov = 2.0 * std::atan(0.5 * c.width / std::abs(c.fx));
-    const double vfov = 2.0 * std::atan(0.5 * c.height / std::abs(c.fy));
-    auto f = mrpt::opengl::CFrustum::Create(0.01f, 0.08f, float(hfov * 180 / M_PI),
-                                            float(vfov * 180 / M_PI), 1.0f, true, false);
-    if (badness.empty()) {
-      f->setColor_u8(160, 160, 160);
-    } else {
-      const double u = std::clamp(badness[std::size_t(j)], 0.0, 1.0);
-      f->setColor_u8(uint8_t(255 * u), uint8_t(255 * (1 - u)), 40);
-    }
-    f->setPose(sensors::ToMrpt(store.pose(j) * cam_from_frustum));
-    o.insert(f);
-  }
-}
-
-void SaveAtomically(const mrpt::serialization::CSerializable& object, const std::string& path) {
-  try {
-    // A new name created exclusively: a file or link already at "<path>.tmp" is left alone.
-    core::TemporaryFile tmp(path);
-    {
-      // Plain: the planes are compressed already (views::EncodePlane); MRPT's reader takes plain
-      // and gzip'd files alike, so maps saved gzip'd before load as they did.
-      mrpt::io::CFileOutputStream file(tmp.path());
-      if (!file.fileOpenCorrectly()) throw std::runtime_error("cannot open " + tmp.path());
-      auto arch = mrpt::serialization::archiveFrom(file);
-      arch << object;
-      file.close();
-    }
-    tmp.Commit();  // on disk, then renamed: a power cut leaves the old map or the new one
-  } catch (const std::exception& e) {  // MRPT's own message spans many lines: one is enough
-    throw std::runtime_error(path + ": cannot save (folder missing, not writable or full?): " +
-                             sensors::BriefMessage(e));
-  }
-}
-
-void LoadInto(mrpt::serialization::CSerializable& object, const std::string& path,
-              const std::string& kind) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path + ": no such map file");
-  try {
-    mrpt::io::CFileGZInputStream file(path);
-    auto arch = mrpt::serialization::archiveFrom(file);
-    arch >> object;
-  } catch (const std::exception& e) {
-    // What our own reader says of the file's content (OptionTable: "map file: …") is kept; MRPT's
-    // own message spans several lines of parser detail: say what matters.
-    const std::string what = e.what();
-    if (const auto ours = what.find(kMapFileError); ours != std::string::npos) {
-      const auto from = ours + std::string(kMapFileError).size();
-      throw std::runtime_error(path + ": " + what.substr(from, what.find('\n', from) - from));
-    }
-    throw std::runtime_error(path + ": not a readable " + kind +
-                             " (truncated, or another kind of file)");
-  }
 }
 
 }  // namespace novelty::mrpt_plugins

@@ -1,4 +1,4 @@
-#include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/view_archive.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -72,7 +72,7 @@ const SavedMap& Saved() {
   return saved;
 }
 
-// Offsets in the first view (map_files.cc's layout): count, camera, pose, anchor, depth, planes
+// Offsets in the first view (view_archive.cc's layout): count, camera, pose, anchor, depth, planes
 // ("ab_sigma" CV_16FC7, then "tau" CV_32FC3, in name order).
 struct Layout {
   std::size_t camera, anchor, depth_data, plane_count, ab_name, ab_data, tau_data;
@@ -178,55 +178,6 @@ TEST(MapFiles, ShortStringsReadWhatMrptWritesAndRefuseHugeLengths) {
   h.assignMemoryNotOwn(huge.data(), huge.size());
   auto hin = mrpt::serialization::archiveFrom(h);
   EXPECT_THROW(ReadShortString(hin, 64, "name"), std::runtime_error);
-}
-
-std::vector<char> FileBytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// A process saving two maps in turn onto one file is killed (SIGKILL) at random moments: the file
-// on disk is always exactly one of the two maps, and loads.
-TEST(SaveAtomically, AProcessKilledWhileSavingLeavesTheOldMapOrTheNew) {
-  CAppearanceMap a, b;
-  for (int k = 0; k < 2; ++k) a.insertObservation(Observation(Frames()[k]));
-  for (int k = 0; k < 6; ++k) b.insertObservation(Observation(Frames()[k]));
-  const fs::path dir = fs::temp_directory_path() / "novelty_sigkill";
-  fs::create_directories(dir);
-  const fs::path file = dir / "map.appearance_map";
-  a.SaveToFile((dir / "a").string());
-  b.SaveToFile((dir / "b").string());
-  const std::vector<char> bytes_a = FileBytes(dir / "a"), bytes_b = FileBytes(dir / "b");
-  ASSERT_NE(bytes_a, bytes_b);
-  std::mt19937 random(7);
-  int saw_a = 0, saw_b = 0;
-  constexpr int kKills = 40;
-  for (int kill = 0; kill < kKills; ++kill) {
-    a.SaveToFile(file.string());
-    const pid_t child = fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {  // saves b, a, b, … until killed
-      for (int i = 0;; ++i) (i % 2 ? a : b).SaveToFile(file.string());
-    }
-    // Saves take a few milliseconds: moments spread over several of them.
-    std::this_thread::sleep_for(
-        std::chrono::microseconds(std::uniform_int_distribution<int>(0, 300000)(random)));
-    ::kill(child, SIGKILL);
-    int status = 0;
-    waitpid(child, &status, 0);
-    ASSERT_TRUE(WIFSIGNALED(status)) << "the saving process ended by itself";
-    const std::vector<char> on_disk = FileBytes(file);
-    const bool is_a = on_disk == bytes_a, is_b = on_disk == bytes_b;
-    EXPECT_TRUE(is_a || is_b) << "kill " << kill << ": " << on_disk.size() << " bytes, neither map";
-    saw_a += is_a;
-    saw_b += is_b;
-    CAppearanceMap loaded;
-    EXPECT_NO_THROW(loaded.LoadFromFile(file.string())) << "kill " << kill;
-  }
-  EXPECT_GT(saw_b, 0) << "no kill came after a save finished: the test proves nothing";
-  std::printf("[ SIGKILL  ] %d kills: %d left the first map, %d the second\n", kKills, saw_a,
-              saw_b);
-  fs::remove_all(dir);
 }
 
 }  // namespace
