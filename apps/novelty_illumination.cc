@@ -44,6 +44,7 @@
 #include "apps/command_line.h"
 #include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
+#include "apps/shell/table_flags.h"
 #include "core/false_color.h"
 #include "core/float_image.h"
 #include "core/range_check.h"
@@ -58,6 +59,7 @@
 #include "maps/illumination/invariant_image.h"
 #include "maps/illumination/spherical_color_change.h"
 #include "maps/views/view_synthesis.h"
+#include "mrpt_plugins/illumination_invariant_map_options.h"
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rig_frame_reader.h"
@@ -554,34 +556,15 @@ int Run(int argc, char** argv) {
       "", "reference-frame",
       "Static camera: the baselines' reference image (default: first training frame)", false, 0,
       "F", cmd);
-  TCLAP::ValueArg<double> kappa("", "kappa", "kappa of eq. 6.18 (0.2: specular scenes)", false, 0.2,
-                                "K", cmd);
-  std::vector<std::string> colours = {"per-channel", "luminance-chromaticity"};
-  TCLAP::ValuesConstraint<std::string> colour_names(colours);
-  TCLAP::ValueArg<std::string> colour("", "colour", "Colour mode of the invariant image", false,
-                                      "per-channel", &colour_names, cmd);
-  const illumination::ZernikeOptions zernike_defaults;
-  TCLAP::ValueArg<int> grid("", "grid", "Cells per side of the Zernike descriptor's disc", false,
-                            zernike_defaults.grid, "N", cmd);
-  std::vector<std::string> scales = {"frame", "empty"};
-  TCLAP::ValuesConstraint<std::string> scale_names(scales);
-  TCLAP::ValueArg<std::string> shape_scale(
-      "", "shape-scale",
-      "e-hat of eq. 6.24: frame (the frame's largest e, the thesis) or empty (each region's "
-      "distance to the empty shape)",
-      false, "frame", &scale_names, cmd);
-  TCLAP::ValueArg<int> max_order("", "max-order", "Highest Zernike order (eq. 6.21)", false,
-                                 zernike_defaults.max_order, "N", cmd);
-  const illumination::IlluminationMapOptions map_defaults;
-  TCLAP::ValueArg<double> viewpoint_distance(
-      "", "viewpoint-distance",
-      "Moving camera: metres between the map's viewpoints along the first lighting's path", false,
-      map_defaults.viewpoint_distance, "M", cmd);
-  TCLAP::SwitchArg missing_texture(
-      "", "missing-texture",
-      "Also judge the texture the invariant image has and the frame lacks (beyond the thesis: "
-      "finds objects coloured like the surface they hide)",
-      cmd);
+  // The illumination options are CIlluminationInvariantMap's, with its table's defaults.
+  apps::TableFlags<mrpt_plugins::IlluminationInvariantMapConfig> options(
+      cmd, {{"kappa", "kappa"},
+            {"colour", "colour"},
+            {"zernike_grid", "grid"},
+            {"shape_scale", "shape-scale"},
+            {"zernike_max_order", "max-order"},
+            {"viewpoint_distance", "viewpoint-distance"},
+            {"missing_texture", "missing-texture"}});
   std::vector<std::string> pose_sources = {"groundtruth", "rawlog"};
   TCLAP::ValuesConstraint<std::string> pose_names(pose_sources);
   TCLAP::ValueArg<std::string> poses(
@@ -590,26 +573,13 @@ int Run(int argc, char** argv) {
       "observations (novelty-poses: tracker or visual localization)",
       false, "groundtruth", &pose_names, cmd);
   cmd.Parse(argc, argv);
-  if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
-    throw std::invalid_argument("--kappa must be in [0, 1)");
-  core::CheckInRange(max_order.getValue(), 0, 200, "--max-order");
-  core::CheckInRange(grid.getValue(), 2, 512, "--grid");
-  if (!(viewpoint_distance.getValue() >= 0.0))
-    throw std::invalid_argument("--viewpoint-distance must be >= 0");
+  const illumination::IlluminationMapOptions map = options.Values().map;
   Settings settings;
-  settings.novelty.shape_scale =
-      shape_scale.getValue() == "frame"
-          ? illumination::IlluminationNoveltyOptions::ShapeScale::kFrameMaximum
-          : illumination::IlluminationNoveltyOptions::ShapeScale::kEmptyShape;
-  settings.invariant.colour =
-      colour.getValue() == "per-channel"
-          ? illumination::InvariantImageOptions::Colour::kPerChannel
-          : illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
-  settings.model.kappa = kappa.getValue();
-  settings.model.missing_texture = missing_texture.getValue();
-  settings.zernike.max_order = max_order.getValue();
-  settings.zernike.grid = grid.getValue();
-  settings.viewpoint_distance = viewpoint_distance.getValue();
+  settings.invariant = map.invariant;
+  settings.model = map.model;
+  settings.zernike = map.zernike;
+  settings.novelty = map.novelty;
+  settings.viewpoint_distance = map.viewpoint_distance;
   settings.poses_from_rawlog = poses.getValue() == "rawlog";
 
   const sim::GroundTruthReader truth(truth_dir.getValue());

@@ -25,6 +25,7 @@
 #include "apps/command_line.h"
 #include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
+#include "apps/shell/table_flags.h"
 #include "core/false_color.h"
 #include "core/float_image.h"
 #include "core/range_check.h"
@@ -35,6 +36,7 @@
 #include "eval/side_by_side.h"
 #include "maps/illumination/illumination_model.h"
 #include "maps/illumination/invariant_image.h"
+#include "mrpt_plugins/illumination_invariant_map_options.h"
 #include "sensors/dataset/lighting_folder_reader.h"
 
 using namespace novelty;
@@ -118,41 +120,17 @@ int Run(int argc, char** argv) {
       "0.1");
   TCLAP::UnlabeledValueArg<std::string> in("folder", "Folder of lightings", true, "", "DIR", cmd);
   TCLAP::ValueArg<std::string> out("o", "out", "Output folder", true, "", "OUT", cmd);
-  const illumination::InvariantImageOptions inv_defaults;
-  const illumination::IlluminationModelOptions model_defaults;
-  std::vector<std::string> colours = {"per-channel", "luminance-chromaticity"};
-  TCLAP::ValuesConstraint<std::string> colour_names(colours);
-  TCLAP::ValueArg<std::string> colour(
-      "", "colour",
-      "per-channel: each RGB channel alone (the thesis); luminance-chromaticity: the channel "
-      "mean by the median of gradients, the colour by the median of channel shares",
-      false, "per-channel", &colour_names, cmd);
-  TCLAP::ValueArg<double> min_intensity("", "min-intensity",
-                                        "Intensities below this (0..255) are clipped", false,
-                                        inv_defaults.min_intensity, "I", cmd);
-  TCLAP::ValueArg<int> min_lightings("", "min-lightings",
-                                     "Fewest lightings that make a gradient's median", false,
-                                     inv_defaults.min_lightings, "N", cmd);
-  TCLAP::ValueArg<double> kappa("", "kappa",
-                                "kappa of T_Y (eq. 6.18): 0.5 Lambertian, 0.2 specular", false,
-                                model_defaults.kappa, "K", cmd);
+  // The invariant image's and model's options are CIlluminationInvariantMap's, with its
+  // table's defaults.
+  apps::TableFlags<mrpt_plugins::IlluminationInvariantMapConfig> options(
+      cmd, {{"colour", "colour"},
+            {"min_intensity", "min-intensity"},
+            {"min_lightings", "min-lightings"},
+            {"kappa", "kappa"}});
   cmd.Parse(argc, argv);
-
-  illumination::InvariantImageOptions inv_options;
-  core::CheckInRange(min_intensity.getValue(), 1e-6, 255, "--min-intensity");
-  inv_options.min_intensity = min_intensity.getValue();
-  if (min_lightings.getValue() < 2)
-    throw std::invalid_argument(
-        "--min-lightings must be >= 2 (the median of one lighting is "
-        "not invariant)");
-  inv_options.min_lightings = min_lightings.getValue();
-  inv_options.colour = colour.getValue() == "per-channel"
-                           ? illumination::InvariantImageOptions::Colour::kPerChannel
-                           : illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
-  illumination::IlluminationModelOptions model_options;
-  if (!(kappa.getValue() >= 0.0 && kappa.getValue() < 1.0))
-    throw std::invalid_argument("--kappa must be in [0, 1)");
-  model_options.kappa = kappa.getValue();
+  const illumination::IlluminationMapOptions map = options.Values().map;
+  const illumination::InvariantImageOptions& inv_options = map.invariant;
+  const illumination::IlluminationModelOptions& model_options = map.model;
   apps::OutputFolder out_folder("novelty-invariant", out.getValue(), {in.getValue()});
 
   const auto start = std::chrono::steady_clock::now();

@@ -1,0 +1,74 @@
+#include "apps/shell/table_flags.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "apps/command_line.h"
+#include "mrpt_plugins/illumination_invariant_map_options.h"
+
+namespace novelty::apps {
+namespace {
+
+using Config = mrpt_plugins::IlluminationInvariantMapConfig;
+
+// The options after parsing `args` (without the program name).
+Config Parse(std::vector<std::string> args) {
+  CommandLine cmd("test", "0");
+  TableFlags<Config> flags(cmd, {{"kappa", "kappa"},
+                                 {"colour", "colour"},
+                                 {"zernike_grid", "grid"},
+                                 {"missing_texture", "missing-texture"}});
+  args.insert(args.begin(), "program");
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  cmd.Parse(int(argv.size()), argv.data());
+  return flags.Values();
+}
+
+std::string UsageMessage(std::vector<std::string> args) {
+  try {
+    Parse(std::move(args));
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TableFlags, NothingGivenIsTheTablesDefaults) {
+  const Config c = Parse({});
+  const Config defaults;
+  EXPECT_EQ(c.map.model.kappa, defaults.map.model.kappa);
+  EXPECT_EQ(c.map.model.kappa, 0.5);  // eq. 6.18's Lambertian value, the map's default
+  EXPECT_EQ(c.map.zernike.grid, defaults.map.zernike.grid);
+  EXPECT_FALSE(c.map.model.missing_texture);
+}
+
+TEST(TableFlags, FlagsAndSetReachTheFieldsAsTheIniDoes) {
+  const Config c =
+      Parse({"--kappa", "0.2", "--colour", "luminance-chromaticity", "--grid", "64",
+             "--missing-texture", "--set", "texture_block=5", "--set", "viewpoint_angle_deg=10"});
+  EXPECT_EQ(c.map.model.kappa, 0.2);
+  EXPECT_EQ(c.map.invariant.colour,
+            illumination::InvariantImageOptions::Colour::kLuminanceChromaticity);
+  EXPECT_EQ(c.map.zernike.grid, 64);
+  EXPECT_TRUE(c.map.model.missing_texture);
+  EXPECT_EQ(c.map.model.texture.block, 5);
+  EXPECT_EQ(c.map.viewpoint_angle_deg, 10.0);
+}
+
+TEST(TableFlags, BadValuesAreUsageErrorsNamingTheFlag) {
+  EXPECT_EQ(UsageMessage({"--kappa", "1"}), "--kappa must be in [0, 0.999], got 1");
+  EXPECT_EQ(UsageMessage({"--kappa", "x"}), "--kappa x: not a number");
+  EXPECT_EQ(UsageMessage({"--grid", "2.5"}).rfind("--grid 2.5: ", 0), 0u);
+  EXPECT_EQ(UsageMessage({"--colour", "rainbow"}),
+            "--colour rainbow: not per-channel or luminance-chromaticity");
+  EXPECT_NE(UsageMessage({"--set", "kapa=0.5"}).find("has no option 'kapa'"), std::string::npos);
+  EXPECT_NE(UsageMessage({"--set", "kappa"}).find("expected KEY=VALUE"), std::string::npos);
+  EXPECT_NE(UsageMessage({"--set", "texture_block=8"}).find("texture_block: 8 is even"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace novelty::apps
