@@ -49,6 +49,7 @@
 #include "core/float_image.h"
 #include "core/range_check.h"
 #include "core/write_rgb_image.h"
+#include "eval/findings_table.h"
 #include "eval/html_report.h"
 #include "eval/roc.h"
 #include "eval/side_by_side.h"
@@ -185,8 +186,7 @@ void Finish(const Evaluation& e, const Learnt& learnt, const std::string& lighti
             double learn_seconds, const fs::path& dir, eval::HtmlReport& report) {
   std::vector<eval::Roc> rocs;
   for (const Method& m : e.methods) rocs.push_back(eval::ComputeRoc(m.scores, e.positive));
-  std::ofstream findings(dir / "findings.csv");
-  findings << "finding,value,target,holds\n";
+  eval::FindingsTable findings;
   std::vector<std::vector<std::string>> rows;
   std::vector<eval::PlotSeries> curves;
   for (size_t k = 0; k < e.methods.size(); ++k) {
@@ -206,40 +206,33 @@ void Finish(const Evaluation& e, const Learnt& learnt, const std::string& lighti
     rows.push_back({name, Percent(roc.TprAtFpr(0.01)), Percent(roc.TprAtFpr(0.05)),
                     Percent(roc.TprAtFpr(0.10)), cv::format("%.3f", roc.auc),
                     Percent(lighting_share)});
-    findings << name << ": TPR at FPR <= 1 %," << Percent(roc.TprAtFpr(0.01)) << ",(reported),\n"
-             << name << ": TPR at FPR <= 5 %," << Percent(roc.TprAtFpr(0.05)) << ",(reported),\n"
-             << name << ": AUC," << roc.auc << "," << (k == 0 ? ">= 0.95," : "(reported),")
-             << (k == 0 ? (roc.auc >= 0.95 ? "yes" : "no") : "") << "\n"
-             << name << ": lighting-only change flagged at TPR 90 %," << Percent(lighting_share)
-             << ",(reported),\n";
+    findings.Add(name + ": TPR at FPR <= 1 %", Percent(roc.TprAtFpr(0.01)), "(reported)");
+    findings.Add(name + ": TPR at FPR <= 5 %", Percent(roc.TprAtFpr(0.05)), "(reported)");
+    if (k == 0)
+      findings.Add(name + ": AUC", eval::NumberText(roc.auc), ">= 0.95", roc.auc >= 0.95);
+    else
+      findings.Add(name + ": AUC", eval::NumberText(roc.auc), "(reported)");
+    findings.Add(name + ": lighting-only change flagged at TPR 90 %", Percent(lighting_share),
+                 "(reported)");
     eval::PlotSeries s{name, e.methods[k].colour, {}, 0.0};
     for (const auto& p : roc.points) s.points.push_back({p.fpr, p.tpr});
     curves.push_back(s);
   }
   // Ahead of both baselines at every FPR ≤ 10 % (0.1 % steps).
-  bool ahead = true;
-  double first_behind = NAN;
-  for (int step = 1; step <= 100; ++step) {
-    const double fpr = step / 1000.0;
-    const double mine = rocs[0].TprAtFpr(fpr);
-    const double best = std::max(rocs[1].TprAtFpr(fpr), rocs[2].TprAtFpr(fpr));
-    if (!(mine > best || (mine == 1.0 && best == 1.0))) {
-      ahead = false;
-      first_behind = fpr;
-      break;
-    }
-  }
+  const std::optional<double> first_behind =
+      eval::FirstFprNotAbove(rocs[0], {&rocs[1], &rocs[2]}, 0.10);
+  const bool ahead = !first_behind;
   const double scored_share = double(e.positive.size()) / double(std::max(1L, e.candidate_pixels));
-  findings << "novelty TPR above NGC and SCT at every FPR <= 10 % (0.1 % steps),"
-           << (ahead ? "yes" : cv::format("no (from FPR %.1f %%)", 100 * first_behind)) << ",yes,"
-           << (ahead ? "yes" : "no") << "\n"
-           << "test frames," << e.tested << ",,\n"
-           << "evaluated pixels," << e.positive.size() << ",,\n"
-           << "evaluated share of the test frames' pixels," << Percent(scored_share) << ",,\n"
-           << "object pixels," << rocs[0].positives << ",,\n";
-  for (const auto& [name, value] : learnt.findings) findings << name << "," << value << ",,\n";
-  findings << "learning seconds," << learn_seconds << ",,\n"
-           << "detection ms per frame," << 1000.0 * e.detect_seconds / e.tested << ",,\n";
+  findings.Add("novelty TPR above NGC and SCT at every FPR <= 10 % (0.1 % steps)",
+               ahead ? "yes" : cv::format("no (from FPR %.1f %%)", 100 * *first_behind), "yes",
+               ahead);
+  findings.Add("test frames", std::to_string(e.tested));
+  findings.Add("evaluated pixels", std::to_string(e.positive.size()));
+  findings.Add("evaluated share of the test frames' pixels", Percent(scored_share));
+  findings.Add("object pixels", std::to_string(rocs[0].positives));
+  for (const auto& [name, value] : learnt.findings) findings.Add(name, value);
+  findings.Add("learning seconds", eval::NumberText(learn_seconds));
+  findings.Add("detection ms per frame", eval::NumberText(1000.0 * e.detect_seconds / e.tested));
   // The baselines against every lighting as the reference: how much their result depends on the
   // one reference the thesis picks, and whether the novelty leads their best.
   const std::vector<double> lead_fprs = {0.01, 0.05};
@@ -254,16 +247,15 @@ void Finish(const Evaluation& e, const Learnt& learnt, const std::string& lighti
         best_tpr[f] = std::max(best_tpr[f], roc.TprAtFpr(lead_fprs[f]));
     }
     const std::string& name = e.methods[k + 1].name;
-    findings << name << " over the " << e.alternatives[k].size() << " " << lightings_name
-             << " as reference: AUC," << cv::format("%.3f to %.3f", auc_min, auc_max)
-             << ",(reported),\n";
+    findings.Add(name + " over the " + std::to_string(e.alternatives[k].size()) + " " +
+                     lightings_name + " as reference: AUC",
+                 cv::format("%.3f to %.3f", auc_min, auc_max), "(reported)");
     for (size_t f = 0; f < lead_fprs.size(); ++f) {
       const double mine = rocs[0].TprAtFpr(lead_fprs[f]);
-      findings << "novelty TPR above " << name
-               << "'s best reference at FPR <= " << 100 * lead_fprs[f] << " %," << Percent(mine)
-               << " vs " << Percent(best_tpr[f]) << ",(reported),"
-               << (mine > best_tpr[f] || (mine == 1.0 && best_tpr[f] == 1.0) ? "yes" : "no")
-               << "\n";
+      findings.Add("novelty TPR above " + name +
+                       "'s best reference at FPR <= " + eval::NumberText(100 * lead_fprs[f]) + " %",
+                   Percent(mine) + " vs " + Percent(best_tpr[f]), "(reported)",
+                   mine > best_tpr[f] || (mine == 1.0 && best_tpr[f] == 1.0));
     }
   }
   {
@@ -285,6 +277,7 @@ void Finish(const Evaluation& e, const Learnt& learnt, const std::string& lighti
       "novelty ahead of both baselines at every FPR <= 10 %%: %s.",
       e.tested, e.positive.size(), Percent(scored_share).c_str(), rocs[0].positives,
       learnt.summary.c_str(), ahead ? "yes" : "no"));
+  findings.WriteCsv((dir / "findings.csv").string());
   report.Save((dir / "report.html").string());
   for (const auto& r : rows)
     std::printf("%-24s TPR@1%% %s  TPR@5%% %s  TPR@10%% %s  AUC %s  lighting flagged %s\n",

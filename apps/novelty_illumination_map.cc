@@ -17,9 +17,9 @@
 // the map atomically (--map-out replaces an earlier map, nothing else). Judging writes
 // OUT/novelty/FRAME.png (Δ in false colour), OUT/frames.csv
 // (per frame: coverage, regions, matched regions, mean and largest Δ; with --groundtruth the
-// pixel AUC of Δ against the novelty mask), OUT/findings.csv and OUT/report.html: plots of Δ,
-// coverage and AUC per frame, the pixel ROC (with --groundtruth), and a panel (camera,
-// invariant image, information i_Y, Δ) every --panels-every frames; all of it into
+// pixel AUC of Δ against the novelty mask), OUT/findings.csv (finding,value,target,holds) and
+// OUT/report.html: plots of Δ, coverage and AUC per frame, the pixel ROC (with --groundtruth), and
+// a panel (camera, invariant image, information i_Y, Δ) every --panels-every frames; all of it into
 // OUT.partial, renamed to OUT at the end (OUT may be an earlier output, nothing else), so a failed
 // run leaves the earlier output whole. Frames that cannot be used are skipped and counted; a
 // rawlog that ends early, or before the frames asked, gives results and exit 3.
@@ -46,6 +46,7 @@
 #include "apps/shell/skipped_frames.h"
 #include "core/false_color.h"
 #include "core/write_rgb_image.h"
+#include "eval/findings_table.h"
 #include "eval/html_report.h"
 #include "eval/roc.h"
 #include "eval/roc_plot.h"
@@ -338,17 +339,18 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
     std::fprintf(stderr,
                  "[novelty-illumination-map] %s: frames %d-%d asked, the last one judged is %d\n",
                  pass.spec.c_str(), pass.first, pass.last, last);
-  std::ofstream findings(out / "findings.csv");
-  findings << "finding,value\nframes judged," << frames << "\nframes skipped," << skipped
-           << "\nms per frame," << 1000 * seconds / frames << "\n";
+  eval::FindingsTable findings;
+  findings.Add("frames judged", std::to_string(frames));
+  findings.Add("frames skipped", std::to_string(skipped));
+  findings.Add("ms per frame", eval::NumberText(1000 * seconds / frames));
   std::string summary = cv::format("%d frames judged, %d skipped, %.1f ms a frame", frames, skipped,
                                    1000 * seconds / frames);
   const long n = long(std::count(positive.begin(), positive.end(), true));
   std::optional<eval::Roc> roc;
   if (n > 0 && n < long(positive.size())) {
     roc = eval::ComputeRoc(scores, positive);
-    findings << "pixel AUC of novelty over all frames," << roc->auc << "\nTPR at FPR 1 %,"
-             << roc->TprAtFpr(0.01) << "\n";
+    findings.Add("pixel AUC of novelty over all frames", eval::NumberText(roc->auc), "(reported)");
+    findings.Add("TPR at FPR 1 %", eval::NumberText(roc->TprAtFpr(0.01)), "(reported)");
     summary += cv::format("; pixel AUC %.3f, TPR at FPR 1 %% %.1f %%", roc->auc,
                           100 * roc->TprAtFpr(0.01));
   }
@@ -374,8 +376,8 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
   }
   if (!panels.empty()) report.Heading("Panels");
   for (const auto& [path, caption] : panels) report.Image(path, caption);
+  findings.WriteCsv((out / "findings.csv").string());
   report.Save((out / "report.html").string());
-  findings.close();
   frames_csv.close();
   folder.Commit();
   std::printf("%s → %s/report.html\n", summary.c_str(), out_dir.c_str());

@@ -31,6 +31,7 @@
 #include "core/range_check.h"
 #include "core/same_file.h"
 #include "core/write_rgb_image.h"
+#include "eval/findings_table.h"
 #include "eval/html_report.h"
 #include "eval/lmse.h"
 #include "eval/side_by_side.h"
@@ -206,8 +207,7 @@ int Run(int argc, char** argv) {
             << model.luminance.alpha << "," << model.luminance.beta << "," << model.saturation.alpha
             << "," << model.saturation.beta << "," << model.mean_information << ","
             << model.threshold << "," << model_options.kappa << "," << m_count << "\n";
-  std::ofstream findings(dir / "findings.csv");
-  findings << "finding,value,target,holds\n";
+  eval::FindingsTable findings;
   std::printf(
       "%d lightings, %.2f s; gamma luminance a_Y %.3f b_Y %.3f, saturation a_S %.3f "
       "b_S %.3f; T_Y %.3f (mean information %.3f, kappa %.2f)\n",
@@ -237,20 +237,21 @@ int Run(int argc, char** argv) {
     true_shading = core::ChannelMean(true_shading);
     const eval::IntrinsicScore s = eval::ScoreIntrinsic(true_shading, folder.reflectance,
                                                         grey_shading, reflectance, folder.mask);
-    findings << "LMSE," << s.lmse << ",(reported; MIT grey reference 0.0127 mean of 4),\n"
-             << "LMSE shading," << s.shading << ",,\n"
-             << "LMSE reflectance," << s.reflectance << ",,\n";
+    findings.Add("LMSE", eval::NumberText(s.lmse),
+                 "(reported; MIT grey reference 0.0127 mean of 4)");
+    findings.Add("LMSE shading", eval::NumberText(s.shading));
+    findings.Add("LMSE reflectance", eval::NumberText(s.reflectance));
     std::printf("LMSE %.5f (shading %.5f, reflectance %.5f)\n", s.lmse, s.shading, s.reflectance);
     report.Heading("Against the ground truth (MIT Intrinsic Images LMSE)");
     report.Table({"LMSE", "shading", "reflectance"},
                  {{cv::format("%.5f", s.lmse), cv::format("%.5f", s.shading),
                    cv::format("%.5f", s.reflectance)}});
   }
-  findings << "lightings," << m_count << ",,\n"
-           << "T_Y," << model.threshold << ",,\n"
-           << "seconds," << seconds << ",,\n";
+  findings.Add("lightings", std::to_string(m_count));
+  findings.Add("T_Y", eval::NumberText(model.threshold));
+  findings.Add("seconds", eval::NumberText(seconds));
+  findings.WriteCsv((dir / "findings.csv").string());
   report.Save((dir / "report.html").string());
-  findings.close();
   out_folder.Commit();
   std::printf("→ %s/report.html\n", out_folder.final_path().c_str());
   return apps::kExitOk;

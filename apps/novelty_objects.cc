@@ -55,6 +55,7 @@
 #include "core/csv_field.h"
 #include "core/frame_stem.h"
 #include "core/nearest_pixel.h"
+#include "eval/findings_table.h"
 #include "eval/html_report.h"
 #include "eval/matches_on_object.h"
 #include "eval/object_steps_csv.h"
@@ -675,20 +676,12 @@ int Run(int argc, char** argv) {
   const eval::Roc& roc = rocs[0];
 
   // 3. Findings, report.
-  std::ofstream findings(a.out + "/findings.csv");
-  findings << "finding,value,target,holds\n";
   eval::HtmlReport report("Object learning and recognition (thesis 5.2)");
-  std::vector<std::vector<std::string>> table;
+  eval::FindingsTable findings;
+  findings.EchoTo(stdout);
   const auto finding = [&](const std::string& what, const std::string& value,
-                           const std::string& target, int holds) {
-    findings << core::CsvField(what) << ',' << core::CsvField(value) << ','
-             << core::CsvField(target) << ','
-             << (holds < 0 ? ""
-                 : holds   ? "yes"
-                           : "no")
-             << '\n';
-    table.push_back({what, value, target, holds < 0 ? "" : holds ? "yes" : "no"});
-    std::printf("  %-58s %10s  (target %s)\n", what.c_str(), value.c_str(), target.c_str());
+                           const std::string& target, int holds) {  // holds -1: nothing to hold
+    findings.Add(what, value, target, holds < 0 ? std::nullopt : std::optional<bool>(holds != 0));
   };
   std::printf(
       "novelty-objects: %d objects, %d features learnt; %d recognition frames, %d (frame, "
@@ -809,10 +802,10 @@ int Run(int argc, char** argv) {
           ahead ? "yes" : "no", i == 0 ? "yes (thesis)" : "(reported)", i == 0 ? ahead : -1);
     }
   }
-  findings.close();
+  findings.WriteCsv(a.out + "/findings.csv");
 
   report.Heading("Findings");
-  report.Table({"finding", "value", "target", "holds"}, table);
+  findings.AddTo(report);
   report.Paragraph("Learnt objects: " + [&] {
     std::string s;
     for (int k = 0; k < db.objects(); ++k) {

@@ -60,4 +60,18 @@ Roc ComputeRoc(const std::vector<double>& scores, const std::vector<bool>& posit
   return roc;
 }
 
+std::optional<double> FirstFprNotAbove(const Roc& a, const std::vector<const Roc*>& others,
+                                       double max_fpr, int divisions) {
+  const int steps = int(std::lround(max_fpr * divisions));
+  for (int k = 1; k <= steps; ++k) {
+    const double fpr = k / double(divisions);
+    const double mine = a.TprAtFpr(fpr);
+    for (const Roc* other : others) {
+      const double theirs = other->TprAtFpr(fpr);
+      if (!(mine > theirs || (mine == 1.0 && theirs == 1.0))) return fpr;
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace novelty::eval

@@ -6,6 +6,7 @@
 // a random negative, ties counting one half (Mann–Whitney).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 namespace novelty::eval {
@@ -31,5 +32,12 @@ struct Roc {
 
 /// Throws std::invalid_argument if the sizes differ, a score is NaN, or either class is empty.
 Roc ComputeRoc(const std::vector<double>& scores, const std::vector<bool>& positive);
+
+/// Dominance up to an FPR (the thesis's "above the baselines at every FPR up to …"): the first
+/// FPR of k / divisions, k = 1, 2, … up to max_fpr, at which `a`'s TprAtFpr is not above every
+/// one of `others`' (equal at TPR 1 counts as above: nothing is left to find); none if `a` is
+/// above at every one.
+std::optional<double> FirstFprNotAbove(const Roc& a, const std::vector<const Roc*>& others,
+                                       double max_fpr, int divisions = 1000);
 
 }  // namespace novelty::eval

@@ -95,5 +95,28 @@ TEST(Roc, PerfectAndBadInputs) {
   EXPECT_THROW(ComputeRoc({1, std::nan("")}, {true, false}), std::invalid_argument);
 }
 
+Roc FromPoints(std::vector<RocPoint> points) {
+  Roc r;
+  r.points = std::move(points);
+  return r;
+}
+
+// a: TPR 0.5 from FPR 0, 0.9 from 2 %; b: 0.4 from 0.1 %, 0.95 from 1 %. a is above on 0.1 %
+// to 0.9 %, and at FPR 0.1 % steps first not above at 1.0 %.
+TEST(FirstFprNotAbove, TheFirstGridFprWhereAnotherCurveCatchesUp) {
+  const Roc a = FromPoints({{INFINITY, 0, 0}, {3, 0, 0.5}, {2, 0.02, 0.9}, {1, 1, 1}});
+  const Roc b = FromPoints({{INFINITY, 0, 0}, {3, 0.001, 0.4}, {2, 0.01, 0.95}, {1, 1, 1}});
+  const Roc low = FromPoints({{INFINITY, 0, 0}, {1, 1, 1}});
+  ASSERT_TRUE(FirstFprNotAbove(a, {&b}, 0.1).has_value());
+  EXPECT_DOUBLE_EQ(*FirstFprNotAbove(a, {&b}, 0.1), 0.01);
+  EXPECT_FALSE(FirstFprNotAbove(a, {&b}, 0.005).has_value());
+  EXPECT_FALSE(FirstFprNotAbove(a, {&low}, 0.1).has_value());
+  EXPECT_DOUBLE_EQ(*FirstFprNotAbove(a, {&low, &b}, 0.1), 0.01) << "above every one of them";
+  EXPECT_DOUBLE_EQ(*FirstFprNotAbove(b, {&a}, 0.1), 0.001) << "equal is not above";
+  // Both at TPR 1: nothing is left to find, which counts as above.
+  const Roc perfect = FromPoints({{INFINITY, 0, 0}, {1, 0, 1}, {0, 1, 1}});
+  EXPECT_FALSE(FirstFprNotAbove(perfect, {&perfect}, 0.1).has_value());
+}
+
 }  // namespace
 }  // namespace novelty::eval
