@@ -14,7 +14,7 @@ install(TARGETS ${NOVELTY_EXPORTED} EXPORT NoveltyMapsTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION include/novelty)
-install(TARGETS novelty_sim LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})  # for the programs
+install(TARGETS novelty_sim novelty_experiments LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})  # for the programs
 install(TARGETS novelty_shell LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})  # for the programs
 get_property(novelty_programs GLOBAL PROPERTY novelty_programs)  # every novelty_add_app
 install(TARGETS ${novelty_programs} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

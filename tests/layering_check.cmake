@@ -1,5 +1,6 @@
 # The layering of DESIGN.md, checked on every source's #include "part/…" lines:
-#   core → maps → sensors → sim;  maps → eval;  maps, sensors → mrpt_plugins;  all → apps.
+#   core → maps → sensors → sim;  maps → eval;  maps, sensors → mrpt_plugins;
+#   eval, sim, mrpt_plugins → experiments;  all → apps.
 # A part may include only itself and the parts below it. Run: cmake -DSOURCE_DIR=… -P this file.
 set(allowed_core core)
 set(allowed_maps core maps)
@@ -7,8 +8,9 @@ set(allowed_eval core maps eval)
 set(allowed_sensors core maps sensors)
 set(allowed_sim core maps sensors sim)
 set(allowed_mrpt_plugins core maps sensors mrpt_plugins)
+set(allowed_experiments core maps eval sensors sim mrpt_plugins experiments)
 set(violations "")
-foreach(part core maps eval sensors sim mrpt_plugins)
+foreach(part core maps eval sensors sim mrpt_plugins experiments)
   file(GLOB_RECURSE sources "${SOURCE_DIR}/${part}/*.h" "${SOURCE_DIR}/${part}/*.cc")
   foreach(source ${sources})
     file(STRINGS "${source}" includes REGEX "^#include \"[a-z_]+/")
