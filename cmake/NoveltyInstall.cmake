@@ -18,6 +18,7 @@ install(TARGETS novelty_sim novelty_experiments LIBRARY DESTINATION ${CMAKE_INST
 install(TARGETS novelty_shell LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})  # for the programs
 get_property(novelty_programs GLOBAL PROPERTY novelty_programs)  # every novelty_add_app
 install(TARGETS ${novelty_programs} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+add_custom_target(novelty-programs DEPENDS ${novelty_programs})  # what the install needs built
 install(DIRECTORY examples/ DESTINATION ${CMAKE_INSTALL_DATADIR}/novelty/examples)
 foreach(part core maps eval sensors mrpt_plugins)
   install(DIRECTORY ${part} DESTINATION include/novelty FILES_MATCHING PATTERN "*.h")

@@ -23,7 +23,7 @@
 #include <string>
 
 #include "mrpt_plugins/c_appearance_map.h"
-#include "mrpt_plugins/map_files.h"
+#include "mrpt_plugins/map_file.h"
 #include "mrpt_plugins/multi_map_config.h"
 #include "sensors/rawlog/rawlog_input.h"
 
@@ -44,7 +44,6 @@ bool Close(const cv::Mat& a, const cv::Mat& b) {
 }
 
 int Play(const std::string& rawlog, const std::string& ini, const std::string& out, int k) {
-  // README example begins
   // The maps an .ini declares (examples/maps.ini: a CAppearanceMap and a CDifferencingMap);
   // a misspelt class, section or key is an error naming the file, section and key.
   mrpt::maps::CMultiMetricMap maps, resumed;
@@ -73,7 +72,6 @@ int Play(const std::string& rawlog, const std::string& ini, const std::string& o
                         resumed.mapByClass<CAppearanceMap>()->lastProducts().surprise);
     }
   }
-  // README example ends
   std::printf(
       "%d frames; after loading the maps saved at frame %d, %d of %d frames gave the "
       "surprise of the maps never saved (within 1 %%)\n",

@@ -12,8 +12,8 @@ tests=(lanes_test row_windows_test with_count_test normal_gamma_batch_test ycbcr
        view_blender_test view_based_map_test c_appearance_map_test)
 cmake -S . -B build-portable -G Ninja -DCMAKE_BUILD_TYPE=Release -DNOVELTY_NATIVE=OFF \
   -DNOVELTY_PORTABLE=ON > /dev/null
-cmake --build build-portable --parallel "$(nproc)" --target "${tests[@]}" novelty-sim novelty-run \
-  novelty-depth novelty-poses novelty-synth novelty-info
+# Every program (target novelty-programs): scripts/example.sh installs them all.
+cmake --build build-portable --parallel "$(nproc)" --target "${tests[@]}" novelty-programs
 
 # The variant the loader picks for a test, e.g. "glibc-hwcaps/x86-64-v3" or "" (baseline).
 variant() {

@@ -8,7 +8,7 @@
 // map learn this uncertainty from the deviations it sees at edges (fig. 4.4d, 4.10). It does not
 // with a tracker whose error is smoothed over 0.4 s: the frames of one pass agree with each other
 // and with the views they make, so the map learns little at edges, and a later pass, whose poses
-// are off in another direction, lands every edge about a pixel away (docs/experiments.md, "From
+// are off in another direction, lands every edge about a pixel away (docs/appearance.md, "From
 // sensor data"). The floor gives every warped prior at least the variance its own position error
 // implies: β ≥ α·s²·|∇τ|² per channel (β/α is the variance the normal-gamma prior expects,
 // eq. 4.9). It is a floor, not an addition, so it does not compound through the stored posterior

@@ -3,7 +3,7 @@
 // objects it learns stand upright, so a feature on an object turns little in the image from one
 // view to another; and a feature's size in metres — its keypoint's size times its depth over the
 // focal length — does not change with distance. A descriptor that matches by chance, on print
-// elsewhere in the room, has no reason to agree in either (docs/experiments.md measures both on
+// elsewhere in the room, has no reason to agree in either (docs/objects.md measures both on
 // the experiment of thesis 5.2). Unknown quantities (no depth, no orientation) pass.
 #pragma once
 
@@ -25,7 +25,7 @@ struct KeypointConsistencyOptions {
   bool enabled = false;  ///< false: every ratio match counts (the thesis)
   /// Degrees a matched keypoint's orientation may differ from the learnt one's. In the learning
   /// room of thesis 5.2, 95 % of the matches on their object turn by less than 13.3°; 20° leaves
-  /// half as much again for other views' tilt (docs/experiments.md).
+  /// half as much again for other views' tilt (docs/objects.md).
   double max_angle_deg = 20.0;
   /// Factor a matched keypoint's metric size may differ from the learnt one's, either way: 95 %
   /// of the matches on their object there stay within 1.3.

@@ -88,7 +88,7 @@ AcquisitionStep ObjectAcquisition::Process(const cv::Mat& rgb, const cv::Mat& de
   step.learning = !step.focus.box.empty() && (added || unchanged_object);
   // Where something now stands that the map did not see, once per frame and only for an option
   // that uses it. Only an added region grows: grown in unchanged ones too, the focus took in
-  // more and recognition found less (docs/experiments.md).
+  // more and recognition found less (docs/objects.md).
   cv::Mat nearer;
   const bool added_uses_nearer = kind == ChangeKind::kAdded &&
                                  (options_.nearer_is_surprising || options_.grow_focus_over_nearer);

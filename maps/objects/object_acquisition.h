@@ -87,7 +87,7 @@ struct ObjectAcquisitionOptions {
   /// Only features with ρ_S > T are learnt, so alone it adds little: pair it with
   /// nearer_is_surprising (ρ_S counts the object's depth) and learn_only_nearer_features (the
   /// table in the grown box is left out): the three together learnt the experiment's three
-  /// objects as three classes at closings of 5–12 px (docs/experiments.md). Regions judged
+  /// objects as three classes at closings of 5–12 px (docs/objects.md). Regions judged
   /// unchanged do not grow: grown there too, the experiment recognised less. false: the region
   /// of surprise alone (the thesis).
   bool grow_focus_over_nearer = false;

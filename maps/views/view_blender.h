@@ -41,7 +41,7 @@ struct BlendOptions {
   /// uncovers a pixel that a view covers. 0 = no such weighting (the thesis's average), the
   /// default: the weighting gains little on real data (view_synthesis_data_test.cc, ICL-NUIM) and
   /// nothing along the simulated path, and it takes the appearance map's seven-view frame over
-  /// its budget (BM_AppearanceMapSevenViews); docs/experiments.md has the figures.
+  /// its budget (BM_AppearanceMapSevenViews); docs/appearance.md has the figures.
   double angle_power = 0.0;
 
   /// The thesis's rule: every covering view counts the same (3.3.2).

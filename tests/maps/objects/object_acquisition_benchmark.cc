@@ -113,7 +113,7 @@ void BM_AcquisitionFrame_Akaze(benchmark::State& s) {
   Run(s, With(FeatureExtractor::kAkaze, int(s.range(0))));
 }
 
-// The setting that meets the thesis 5.2 experiment's target (docs/experiments.md, "The room as it
+// The setting that meets the thesis 5.2 experiment's target (docs/objects.md, "The room as it
 // was when learning began"): SIFT, a 12 px closing, pose verification, static features
 // recognising, and the depth tests, with the box 0.5 m nearer than the map expects (added).
 void BM_AcquisitionFrame_SiftRecommended(benchmark::State& s) {
