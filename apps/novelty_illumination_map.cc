@@ -43,9 +43,9 @@
 #include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
 #include "apps/shell/progress.h"
-#include "apps/shell/skipped_frames.h"
 #include "core/false_color.h"
 #include "core/write_rgb_image.h"
+#include "eval/skipped_frames.h"
 #include "eval/findings_table.h"
 #include "eval/html_report.h"
 #include "eval/roc.h"
@@ -153,7 +153,7 @@ int ReportSkips(const mrpt_plugins::RawlogMapPlayer& player, const std::string& 
   if (player.skipped())
     std::fprintf(
         stderr, "[novelty-illumination-map] %s: %s\n", what.c_str(),
-        apps::SkippedFramesSummary(frames + player.skipped(), player.skip_reasons()).c_str());
+        eval::SkippedFramesSummary(frames + player.skipped(), player.skip_reasons()).c_str());
   if (!player.stopped_by().empty())
     std::fprintf(stderr, "[novelty-illumination-map] %s ends early: %s\n", what.c_str(),
                  player.stopped_by().c_str());

@@ -24,9 +24,16 @@ void SilentWarning(png_structp, png_const_charp) {
   ++Silenced();
 }
 
-template <typename F>
-F Real(const char* symbol) {
-  return reinterpret_cast<F>(dlsym(RTLD_NEXT, symbol));  // libpng's own, after this library
+using Create = png_structp (*)(png_const_charp, png_voidp, png_error_ptr, png_error_ptr);
+
+// libpng's own `symbol` (the next definition after this library's) called with the silent
+// handlers where the caller gave none; a caller's own handlers are kept.
+png_structp CreateQuietly(const char* symbol, png_const_charp version, png_voidp error_ptr,
+                          png_error_ptr error_fn, png_error_ptr warn_fn) {
+  const auto real = reinterpret_cast<Create>(dlsym(RTLD_NEXT, symbol));
+  if (!real) return nullptr;  // as libpng says it cannot make one; callers check
+  return real(version, error_ptr, error_fn ? error_fn : SilentError,
+              warn_fn ? warn_fn : SilentWarning);
 }
 
 }  // namespace
@@ -41,21 +48,16 @@ int SilencedLibpngMessages() {
 
 extern "C" {
 
-// A caller's own handlers are kept; only the missing ones are filled in.
 png_structp png_create_read_struct(png_const_charp version, png_voidp error_ptr,
                                    png_error_ptr error_fn, png_error_ptr warn_fn) {
-  using Create = png_structp (*)(png_const_charp, png_voidp, png_error_ptr, png_error_ptr);
-  static const Create real = novelty::apps::Real<Create>("png_create_read_struct");
-  return real(version, error_ptr, error_fn ? error_fn : novelty::apps::SilentError,
-              warn_fn ? warn_fn : novelty::apps::SilentWarning);
+  return novelty::apps::CreateQuietly("png_create_read_struct", version, error_ptr, error_fn,
+                                      warn_fn);
 }
 
 png_structp png_create_write_struct(png_const_charp version, png_voidp error_ptr,
                                     png_error_ptr error_fn, png_error_ptr warn_fn) {
-  using Create = png_structp (*)(png_const_charp, png_voidp, png_error_ptr, png_error_ptr);
-  static const Create real = novelty::apps::Real<Create>("png_create_write_struct");
-  return real(version, error_ptr, error_fn ? error_fn : novelty::apps::SilentError,
-              warn_fn ? warn_fn : novelty::apps::SilentWarning);
+  return novelty::apps::CreateQuietly("png_create_write_struct", version, error_ptr, error_fn,
+                                      warn_fn);
 }
 
 }  // extern "C"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace novelty::apps {
+namespace novelty::eval {
 
 /// "skipped 3 of 120 frames: 2 no pose (first: frame 4), 1 depth 80x60, not 320x240 (frame 9)"
 /// from reasons written "WHERE: WHY" (RawlogMapPlayer::skip_reasons, RawlogFrameReader's), grouped
@@ -15,4 +15,4 @@ namespace novelty::apps {
 std::string SkippedFramesSummary(int frames, const std::vector<std::string>& reasons,
                                  std::size_t kinds = 3);
 
-}  // namespace novelty::apps
+}  // namespace novelty::eval

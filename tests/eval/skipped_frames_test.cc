@@ -1,8 +1,8 @@
-#include "apps/shell/skipped_frames.h"
+#include "eval/skipped_frames.h"
 
 #include <gtest/gtest.h>
 
-namespace novelty::apps {
+namespace novelty::eval {
 namespace {
 
 TEST(SkippedFramesSummary, GroupedByReasonInTheOrderTheyCame) {
@@ -21,4 +21,4 @@ TEST(SkippedFramesSummary, GroupedByReasonInTheOrderTheyCame) {
 }
 
 }  // namespace
-}  // namespace novelty::apps
+}  // namespace novelty::eval

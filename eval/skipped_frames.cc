@@ -1,10 +1,10 @@
-#include "apps/shell/skipped_frames.h"
+#include "eval/skipped_frames.h"
 
 #include <algorithm>
 #include <regex>
 #include <utility>
 
-namespace novelty::apps {
+namespace novelty::eval {
 
 std::string SkippedFramesSummary(int frames, const std::vector<std::string>& reasons,
                                  std::size_t kinds) {
@@ -48,4 +48,4 @@ std::string SkippedFramesSummary(int frames, const std::vector<std::string>& rea
   return s;
 }
 
-}  // namespace novelty::apps
+}  // namespace novelty::eval
