@@ -1,6 +1,7 @@
 #include "eval/object_steps_csv.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -9,8 +10,10 @@
 namespace novelty::eval {
 namespace {
 
+// Per process: ctest runs this file's tests in parallel, and two once shared one file.
 std::string TempPath(const char* name) {
-  return (std::filesystem::temp_directory_path() / name).string();
+  return (std::filesystem::temp_directory_path() / (std::to_string(getpid()) + "_" + name))
+      .string();
 }
 
 // What ReadObjectStepsCsv reads from a file (object_steps_csv_text_test.csv) holding `text`.
