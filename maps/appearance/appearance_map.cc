@@ -52,7 +52,7 @@ constexpr int kChannels = AppearanceMap::kChannels, kAlpha = AppearanceMap::kAlp
 // (about 30 of 320 floats per row) stay in cache from the blend of its prior and the colour
 // conversion through the kernel to the stored posterior. The threads take one tile at a time:
 // tiles differ in cost with the views covering them, and single tiles keep both cores busy to
-// the end, faster than tiles in one stripe per thread (appearance_map_benchmark; figures in
+// the end, which one stripe of tiles per thread does not (appearance_map_benchmark;
 // docs/performance_history.md).
 constexpr int kTileRows = 8;
 

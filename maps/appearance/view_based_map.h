@@ -41,7 +41,8 @@ struct ViewBasedMapOptions {
   views::BlendOptions blend;  ///< the blend view synthesis uses (view_blender.h defaults)
   /// How the views are held: compact (plane_codec.h) but for the 12 used last, which leaves
   /// room for the 7 a prediction selects and the views around them as the camera moves on.
-  /// 200 appearance-map views at 320×240: about 140 MB instead of 460 (docs/map_storage.md).
+  /// 200 appearance-map views at 320×240 take about 143 MB in memory instead of 461 MB
+  /// (docs/map_storage.md).
   views::ReferenceViewStoreOptions storage{12, {}};
 };
 

@@ -16,8 +16,8 @@ namespace novelty::stats {
 namespace {
 
 // Pixels per packet: two AVX-512 registers per value. The kernel's chains (exp, divisions,
-// logarithms) are long, and two independent ones interleaved keep the core busier than one
-// (kernel −15 %, in spite of more register spills).
+// logarithms) are long, and two independent ones interleaved keep the core busier than one, in
+// spite of more register spills (measured: docs/performance_history.md).
 constexpr int kLanes = 32;
 // Packets per parallel block: enough work per task to hide the thread pool's overhead.
 constexpr std::size_t kPacketsPerBlock = 256;

@@ -68,8 +68,7 @@ inline __attribute__((always_inline)) void AddView(const WarpField& w, const Pla
 // Planes of 2–8 half or float channels (Plane::WholePixels) are read a pixel at a time: one
 // masked load gives all channels of a corner, where the gather path needs a gather per corner and
 // word, and a gather costs several times a load (with AVX-512) or is a loop of scalar loads
-// (without). Seven views' parameter planes (7 half and 3 float channels) blend about 1.7× faster
-// this way with AVX-512, and several times faster with AVX2 alone (BM_BlendParameterPlanes).
+// (without); BM_BlendParameterPlanes measures both.
 constexpr bool kPixelReads = true;
 typedef float F8 __attribute__((vector_size(32)));
 
@@ -144,7 +143,7 @@ inline void AddViewPixels(const WarpField& w, const Plane& p, float view_weight,
   const I16 o00 = row0 + col0, o10 = row0 + col1, o01 = row1 + col0, o11 = row1 + col1;
   // The source lines the next virtual rows will read, fetched ahead: these samples wait on
   // memory (seven views' parameter planes are 14 MB), and a turned view's rows slant where the
-  // hardware prefetcher does not follow (parameter blend ≈ −20 %).
+  // hardware prefetcher does not follow.
   constexpr int kRowsAhead = 2;
   const std::size_t ahead = std::size_t(kRowsAhead) * std::size_t(p.RowBytes());
   for (int k : {0, 4, 8, 12, 15}) {  // sixteen pixels' bottom corners span a few lines
