@@ -19,10 +19,12 @@
 
 #include "apps/command_line.h"
 #include "apps/shell/program.h"
+#include "apps/shell/progress.h"
 #include "core/frame_stem.h"
 #include "core/range_check.h"
 #include "core/same_file.h"
 #include "eval/depth_accuracy.h"
+#include "eval/skipped_frames.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rawlog_output.h"
 #include "sensors/rawlog/rig_frame_reader.h"
@@ -71,7 +73,8 @@ int Run(int argc, char** argv) {
   if (truth.isSet()) ground_truth.emplace(truth.getValue());
   sensors::RigFrameReader reader(in.getValue());
   sensors::RawlogOutput output(out.getValue());
-  const auto start = std::chrono::steady_clock::now();
+  apps::Progress progress("[novelty-depth] depth frames",
+                          max_frames.getValue() > 0 ? max_frames.getValue() : 0);
   int frames = 0, scored = 0;
   double within_sum = 0.0;
   std::vector<mrpt::serialization::CSerializable::Ptr> others;
@@ -93,23 +96,24 @@ int Run(int argc, char** argv) {
         const auto a = eval::MeasureDepthAccuracy(depth.depth, true_depth, f.images[0], {});
         within_sum += a.within_fraction;
         ++scored;
-        std::fprintf(stderr,
-                     "\n  frame %d: %.1f %% of %d textured pixels within 3 %% (an estimate on "
-                     "%.1f %% of them; the others count as wrong)",
-                     f.index, 100 * a.within_fraction, a.textured_pixels,
-                     a.textured_pixels ? 100.0 * a.scored_pixels / a.textured_pixels : 0.0);
+        std::printf(
+            "  frame %d: %.1f %% of %d textured pixels within 3 %% (an estimate on %.1f %% of "
+            "them; the others count as wrong)\n",
+            f.index, 100 * a.within_fraction, a.textured_pixels,
+            a.textured_pixels ? 100.0 * a.scored_pixels / a.textured_pixels : 0.0);
       }
     }
-    const double s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "\r[novelty-depth] frame %d, %.2f s per frame   ", frames, s / frames);
+    progress.Update(frames);
   }
+  progress.Finish();
   for (const auto& o : others) output.Write(*o);
   output.Close();
-  std::fprintf(stderr, "\n");
   std::printf("%d depth frames (%d rig frames skipped) → %s\n", frames, reader.skipped(),
               output.path().c_str());
-  for (const auto& why : reader.skip_reasons()) std::printf("  skipped: %s\n", why.c_str());
+  if (reader.skipped())
+    std::printf(
+        "  %s\n",
+        eval::SkippedFramesSummary(frames + reader.skipped(), reader.skip_reasons()).c_str());
   if (scored > 0)
     std::printf("mean share of textured pixels within 3 %% of the true depth: %.1f %%\n",
                 100 * within_sum / scored);

@@ -35,6 +35,7 @@
 
 #include "apps/command_line.h"
 #include "apps/shell/program.h"
+#include "apps/shell/progress.h"
 #include "core/range_check.h"
 #include "core/same_file.h"
 #include "sensors/localization/direct_odometry.h"
@@ -103,6 +104,7 @@ std::map<double, Eigen::Isometry3d> VisualPoses(const std::string& rawlog,
           : MakeTracker<sensors::VisualOdometry, sensors::VisualOdometryOptions>(origin);
   std::map<double, Eigen::Isometry3d> poses;
   int frames = 0;
+  apps::Progress progress("[novelty-poses] stereo frames", 0);
   for (sensors::RigFrame f; reader.Next(f, nullptr);) {
     sensors::StereoPair pair{f.time,       f.images[0],  f.images[1],
                              f.cameras[0], f.cameras[1], f.ref_from_camera[1]};
@@ -110,9 +112,10 @@ std::map<double, Eigen::Isometry3d> VisualPoses(const std::string& rawlog,
     if (const auto pose = track(pair, &why))
       poses[f.time] = *pose;
     else
-      ++*lost, std::fprintf(stderr, "\n[novelty-poses] frame %d: %s\n", f.index, why.c_str());
-    if (++frames % 10 == 0) std::fprintf(stderr, "\r[novelty-poses] frame %d   ", frames);
+      ++*lost, std::fprintf(stderr, "[novelty-poses] frame %d: %s\n", f.index, why.c_str());
+    progress.Update(++frames);
   }
+  progress.Finish();
   if (frames == 0) throw std::runtime_error(rawlog + ": no stereo or trinocular frames");
   return poses;
 }

@@ -28,10 +28,12 @@
 
 #include "apps/command_line.h"
 #include "apps/shell/program.h"
+#include "apps/shell/progress.h"
 #include "core/frame_stem.h"
 #include "core/range_check.h"
 #include "core/write_rgb_image.h"
 #include "eval/psnr.h"
+#include "eval/skipped_frames.h"
 #include "maps/views/depth_mesh_warper.h"
 #include "maps/views/reference_view_store.h"
 #include "maps/views/view_blender.h"
@@ -110,9 +112,11 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
       path.back().rgb = f.rgb.clone();
     }
   }
-  for (const std::string& why : reader.skip_reasons()) {
-    std::fprintf(stderr, "novelty-synth: skipped %s\n", why.c_str());
-  }
+  if (reader.skipped())
+    std::fprintf(stderr, "novelty-synth: %s\n",
+                 eval::SkippedFramesSummary(reader.skipped() + store.size() + int(path.size()),
+                                            reader.skip_reasons())
+                     .c_str());
   if (store.size() == 0) throw std::runtime_error(rawlog + ": no RGB-D frame to use as reference");
   std::filesystem::create_directories(out_dir);
   std::ofstream csv(out_dir + "/frames.csv");
@@ -126,6 +130,7 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
   const views::ViewSelectionOptions selection;
   double psnr_sum = 0.0, coverage_sum = 0.0;
   int n = 0;
+  apps::Progress progress("[novelty-synth] virtual views", int(path.size()));
   for (const core::Frame& f : path) {
     const Eigen::Isometry3d& pose = poses.at(f.index);
     const auto t0 = std::chrono::steady_clock::now();
@@ -148,12 +153,9 @@ int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int ever
         << "," << r.coverage << "\n";
     psnr_sum += psnr;
     coverage_sum += r.coverage;
-    ++n;
-    if (n % 25 == 0 || n == int(path.size())) {
-      std::fprintf(stderr, "\r[novelty-synth] %d/%zu virtual views", n, path.size());
-    }
+    progress.Update(++n);
   }
-  std::fprintf(stderr, "\n");
+  progress.Finish();
   std::printf(
       "%d virtual views from %d reference views, mean PSNR=%.2f dB over covered pixels, "
       "mean coverage=%.4f, %d frames skipped\n  frames: %s/frames.csv\n",
