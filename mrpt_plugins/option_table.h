@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "core/range_check.h"
+#include "mrpt_plugins/ini_file.h"
 
 namespace novelty::mrpt_plugins {
 
@@ -37,9 +38,6 @@ inline constexpr const char* kMapFileError = "map file: ";
 /// the length exceeds `max_length`: a corrupt length must not ask for gigabytes.
 std::string ReadShortString(mrpt::serialization::CArchive& in, std::size_t max_length,
                             const std::string& what);
-
-/// The file behind `config` (a CConfigFile), else "map definition": how errors name it.
-std::string ConfigSourceName(const mrpt::config::CConfigFileBase& config);
 
 /// How an option's text is read and written.
 enum class OptionKind { kNumber, kWhole, kFlag, kChoice };
@@ -64,9 +62,6 @@ double ParseOptionText(const OptionEntry& entry, const std::string& text);
 /// A field's value as the `.ini` writes it (in file units): the shortest text that reads back to
 /// exactly this field value.
 std::string OptionText(const OptionEntry& entry, double field_value);
-/// The value part of an `.ini` line: inline comments (after ';', '#' or "//") and trailing blanks
-/// removed.
-std::string StripIniComment(std::string text);
 
 template <class Options>
 class OptionTable {
@@ -322,14 +317,6 @@ void CheckPositive(double value, const char* key);
 void CheckNotNegative(double value, const char* key);
 /// Throws std::invalid_argument "KEY must be in [lo, hi], got VALUE" (NaN fails too).
 using core::CheckInRange;
-
-/// Throws std::runtime_error "PATH:LINE: …" for `.ini` text with lines MRPT's parser would skip
-/// in silence (an unclosed "[section", a line without '=', a key before any section), or
-/// "PATH: not a text .ini file" for binary content.
-void CheckIniText(const std::string& content, const std::string& path);
-/// Opens an `.ini` file for TabledOptions::FromFile; throws std::runtime_error naming a missing
-/// file, one that is not text (CheckIniText), or one MRPT cannot parse.
-std::unique_ptr<mrpt::config::CConfigFileBase> OpenConfigFile(const std::string& path);
 
 template <class Derived>
 Derived TabledOptions<Derived>::FromFile(const std::string& path, const std::string& section) {

@@ -205,33 +205,6 @@ TEST(OptionTable, IncludeCarriesEntriesAndChecks) {
                std::runtime_error);
 }
 
-// Lines MRPT's parser skips in silence would drop their options: each is an error naming the
-// file and line.
-TEST(OpenConfigFile, LinesMrptWouldSkipAreErrorsNamingFileAndLine) {
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / "novelty_lint.ini";
-  const std::pair<std::string, const char*> cases[] = {
-      {"[map]\nCAppearanceMap_count = 1\n[map_CAppearanceMap_00_options\nxi = 1\n",
-       ":3: bad section header '[map_CAppearanceMap_00_options'"},
-      {"xi = 1\n[map]\n", ":1: 'xi = 1' is outside any [section]"},
-      {"[map]\nCAppearanceMap_count 1\n", ":2: expected 'key = value' or '[section]'"},
-      {"[map]]\n", ":1: bad section header"},
-      {std::string("\x89PNG\r\n\x1a\n\0\0", 10), "not a text .ini file"},
-  };
-  for (const auto& [text, says] : cases) {
-    std::ofstream(file, std::ios::binary) << text;
-    try {
-      OpenConfigFile(file.string());
-      ADD_FAILURE() << text;
-    } catch (const std::runtime_error& e) {
-      EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
-    }
-  }
-  std::ofstream(file) << "; comment\n\n[map]  ; why\nCAppearanceMap_count = 1 # one\n";
-  EXPECT_NO_THROW(OpenConfigFile(file.string()));
-  std::filesystem::remove(file);
-}
-
 TEST(CheckInRange, NamesKeyRangeAndValueAndRefusesNaN) {
   try {
     CheckInRange(1e30, 0, 255, "initial_tau");
