@@ -12,47 +12,16 @@
 #include "experiments/surprise_experiment.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/scenario_runner.h"
+#include "tests/mrpt_plugins/box_clip.h"
 
 namespace novelty::experiments {
 namespace {
 
 namespace fs = std::filesystem;
 
-// The shared textures folder, or "" (the test then skips: the box is photo-printed).
-std::string Textures() {
-  const char* shared = std::getenv("NOVELTY_SHARED_DATA");
-  const std::string dir = std::string(shared ? shared : "") + "/textures";
-  return shared && fs::exists(dir + "/fruits.jpg") ? dir : "";
-}
-
-// c_object_database_map_test's clip: an arc past a table, a photo-printed box put down at 4 s
-// (frame 29), the arc driven back. The whole of 5.2 on it: learnt with novelty-run's
-// experiment (the object database from frame 29 on), then recognised along the same clip.
-constexpr const char* kClip = R"(name objects
-frames 54
-fps 7
-seed 5
-camera 320 240 60
-rig rgbd
-sensor noise 1.0 gamma 2.2
-mount 0.0 0.0 1.10 90 16
-room 6 6 2.8
-ambient 0.10 0.10 0.11
-material wood phong 0.45 0.28 0.14 0.1 20
-material cloth phong 0.92 0.90 0.84
-texture cloth stripes 0.25 0.35 0.70 20
-material print phong 0.9 0.9 0.9 0.1 20
-texture print image fruits.jpg
-object table box 1.2 0.8 0.72 wood at 0 0 fixed
-object cloth plane 1.3 0.9 cloth at 0 0 on table
-object box box 0.40 0.12 0.30 print at 0.05 0.10 on cloth mass 0.4 absent
-lamp l1 -1.0 0.8 2.6 2.2 2.1 1.9
-arc 0 0 1.0 -105 -75 0.15
-stop 0.5
-arc 0 0 1.0 -75 -105 0.15
-event 4.0 add box
-)";
-
+// c_object_database_map_test's clip (tests/mrpt_plugins/box_clip.h): the box put down at 4 s
+// (frame 29). The whole of 5.2 on it: learnt with novelty-run's experiment (the object database
+// from frame 29 on), then recognised along the same clip.
 std::string Value(const ObjectExperimentResult& r, const std::string& what) {
   for (const auto& row : r.findings.rows())
     if (row.what == what) return row.value;
@@ -60,12 +29,12 @@ std::string Value(const ObjectExperimentResult& r, const std::string& what) {
 }
 
 TEST(ObjectExperiment, TheBoxPutDownIsLearntFromItsOwnFeaturesAndJudgedInEveryFrame) {
-  const std::string textures = Textures();
+  const std::string textures = mrpt_plugins::Textures();
   if (textures.empty()) GTEST_SKIP() << "textures/ of the shared test data is absent";
   const fs::path dir =
       fs::temp_directory_path() / ("novelty_object_experiment_" + std::to_string(getpid()));
   fs::remove_all(dir);
-  std::istringstream scn(kClip);
+  std::istringstream scn(mrpt_plugins::ClipText(true, 0.5));
   sim::RunOptions run;
   run.out_dir = (dir / "sim").string();
   run.progress = false;

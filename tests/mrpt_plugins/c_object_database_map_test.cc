@@ -21,48 +21,12 @@
 #include "sensors/rawlog/rgbd_observation.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/simulate_frames.h"
+#include "tests/mrpt_plugins/box_clip.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The shared textures folder, or "" (the photo-textured tests then skip).
-std::string Textures() {
-  const char* shared = std::getenv("NOVELTY_SHARED_DATA");
-  const std::string dir = std::string(shared ? shared : "") + "/textures";
-  return shared && fs::exists(dir + "/fruits.jpg") ? dir : "";
-}
-
-// Pass 1 (frames before kEvent) sees the table; the robot stands for `stop` s from 3.5 s, the box
-// is added (or removed) at kEvent, and the robot drives the arc back.
-constexpr double kEvent = 4.0;  // s
-std::string ClipText(bool box_added, double stop) {
-  return std::string(R"(
-name objects
-frames 54
-fps 7
-seed 5
-camera 320 240 60
-rig rgbd
-sensor noise 1.0 gamma 2.2
-mount 0.0 0.0 1.10 90 16
-room 6 6 2.8
-ambient 0.10 0.10 0.11
-material wood phong 0.45 0.28 0.14 0.1 20
-material cloth phong 0.92 0.90 0.84
-texture cloth stripes 0.25 0.35 0.70 20
-material print phong 0.9 0.9 0.9 0.1 20
-texture print image fruits.jpg
-object table box 1.2 0.8 0.72 wood at 0 0 fixed
-object cloth plane 1.3 0.9 cloth at 0 0 on table
-)") + "object box box 0.40 0.12 0.30 print at 0.05 0.10 on cloth mass 0.4" +
-         (box_added ? " absent\n" : "\n") + R"(lamp l1 -1.0 0.8 2.6 2.2 2.1 1.9
-arc 0 0 1.0 -105 -75 0.15
-stop )" + std::to_string(stop) + R"(
-arc 0 0 1.0 -75 -105 0.15
-)" + "event 4.0 " + (box_added ? "add" : "remove") + " box\n";
-}
 
 // The clip's first `frames` frames (all if 0).
 std::vector<sim::SimulatedFrame> Simulate(bool box_added, double stop = 0.5, int frames = 0) {
@@ -71,9 +35,8 @@ std::vector<sim::SimulatedFrame> Simulate(bool box_added, double stop = 0.5, int
 }
 
 mrpt::obs::CObservation3DRangeScan Observation(const sim::SimulatedFrame& f) {
-  return sensors::MakeRgbdObservation(f.time, f.rgb, f.depth,
-                                      core::PinholeCamera::FromFov(320, 240, M_PI / 3),
-                                      f.T_world_cam);
+  return sensors::MakeRgbdObservation(
+      f.time, f.rgb, f.depth, core::PinholeCamera::FromFov(320, 240, M_PI / 3), f.T_world_cam);
 }
 
 // Plays a clip: the first pass into the appearance map alone (the thesis's I1), the rest into
@@ -236,9 +199,9 @@ TEST(CObjectDatabaseMap, SavedAndLoadedItIsTheSameDatabase) {
   loaded.LoadFromFile(file.string());
   EXPECT_EQ(loaded.database().features(), p.objects.database().features());
   EXPECT_EQ(loaded.database().objects(), p.objects.database().objects());
-  EXPECT_EQ(cv::norm(loaded.database().descriptors(), p.objects.database().descriptors(),
-                     cv::NORM_INF),
-            0.0);
+  EXPECT_EQ(
+      cv::norm(loaded.database().descriptors(), p.objects.database().descriptors(), cv::NORM_INF),
+      0.0);
   for (int h = 0; h < loaded.database().features(); ++h) {
     EXPECT_EQ(loaded.database().counts()[std::size_t(h)],
               p.objects.database().counts()[std::size_t(h)]);
