@@ -40,6 +40,10 @@ int Run(int argc, char** argv) {
   if (argc < 2) return Usage(stderr);
   const std::string command = argv[1];
   if (command == "--help" || command == "-h" || command == "help") return Usage(stdout);
+  if (command == "--version") {
+    std::printf("novelty %s\n", NOVELTY_VERSION);
+    return novelty::apps::kExitOk;
+  }
   bool known = false;
   for (const auto& c : kCommands) known = known || command == c[0];
   if (!known)

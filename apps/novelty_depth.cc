@@ -18,6 +18,7 @@
 #include <optional>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
 #include "apps/shell/progress.h"
 #include "core/frame_stem.h"
@@ -68,6 +69,9 @@ int Run(int argc, char** argv) {
   if (core::SameFile(in.getValue(), out.getValue()))
     throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
                                 in.getValue() + ": it would be overwritten");
+  // Nothing but a rawlog is replaced, and nothing inside an input's folder (the ground truth).
+  apps::CheckOutputFile("--out", out.getValue(), {in.getValue(), truth.getValue()},
+                        apps::HasExtension(".rawlog"));
 
   std::optional<sim::GroundTruthReader> ground_truth;
   if (truth.isSet()) ground_truth.emplace(truth.getValue());

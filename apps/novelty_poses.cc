@@ -34,6 +34,7 @@
 #include <sstream>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
 #include "apps/shell/progress.h"
 #include "core/range_check.h"
@@ -144,6 +145,9 @@ int Run(int argc, char** argv) {
   if (core::SameFile(in.getValue(), out.getValue()))
     throw std::invalid_argument("--out " + out.getValue() + " is the input rawlog " +
                                 in.getValue() + ": it would be overwritten");
+  // Nothing but a rawlog is replaced, and nothing inside an input's folder (the ground truth).
+  apps::CheckOutputFile("--out", out.getValue(), {in.getValue(), truth.getValue()},
+                        apps::HasExtension(".rawlog"));
 
   const bool visual = source.getValue() == "visual";
   int rejected = 0;

@@ -28,6 +28,7 @@
 #include "apps/shell/progress.h"
 #include "core/same_file.h"
 #include "experiments/surprise_experiment.h"
+#include "mrpt_plugins/map_file.h"
 
 namespace {
 
@@ -124,6 +125,13 @@ RunArgs ParseArgs(int argc, char** argv) {
   }
   if (std::filesystem::exists(a.out) && !std::filesystem::is_directory(a.out))
     throw std::runtime_error("--out " + a.out + ": is a file, not a folder");
+  // An existing file there must be an appearance map (an earlier one, or --map-in continued);
+  // the default, inside OUT, is OutputFolder's to check.
+  if (map_out.isSet())
+    apps::CheckOutputFile("--map-out", a.map_out, {a.rawlog, a.truth, a.config, a.objects_in},
+                          [](const std::string& p) {
+                            return mrpt_plugins::IsMapFileOf(p, "CAppearanceMap");
+                          });
   return a;
 }
 

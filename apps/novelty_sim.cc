@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/scenario_runner.h"
@@ -24,16 +25,21 @@ int Run(int argc, char** argv) {
                                   "S", cmd);
   TCLAP::SwitchArg quiet("q", "quiet", "No progress on stderr", cmd);
   cmd.Parse(argc, argv);
-  options.out_dir = out.getValue();
+  // Written into OUT.partial and renamed: a failed or repeated run never mixes frames of two.
+  novelty::apps::OutputFolder folder("novelty-sim", out.getValue(), {scenario.getValue()});
+  options.out_dir = folder.path();
   if (frames.isSet()) options.frames = frames.getValue();
   if (seed.isSet()) options.seed = static_cast<std::uint64_t>(seed.getValue());
   options.progress = !quiet.getValue();
 
   const novelty::sim::Scenario loaded = novelty::sim::LoadScenario(scenario.getValue());
   const novelty::sim::RunSummary s = novelty::sim::RunScenario(loaded, options);
-  std::printf("%s: %d frames, %d observations in %.1f s\n  rawlog: %s\n  contact sheet: %s\n",
-              loaded.name.c_str(), s.frames, s.observations, s.seconds, s.rawlog.c_str(),
-              s.contact_sheet.c_str());
+  folder.Commit();
+  const std::string at = folder.final_path() + "/" + loaded.name;
+  std::printf(
+      "%s: %d frames, %d observations in %.1f s\n  rawlog: %s.rawlog\n  contact sheet: "
+      "%s_contact_sheet.png\n",
+      loaded.name.c_str(), s.frames, s.observations, s.seconds, at.c_str(), at.c_str());
   return novelty::apps::kExitOk;
 }
 

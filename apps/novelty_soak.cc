@@ -57,7 +57,11 @@ int Run(int argc, char** argv) {
     std::printf("  %s: %s%s\n", f.what.c_str(), f.value.c_str(),
                 f.holds ? (*f.holds ? " ✓" : " ✗") : "");
   std::printf("  %s/soak.csv, findings.csv, soak.html\n", folder.final_path().c_str());
-  return r.flat() ? apps::kExitOk : apps::kExitFailed;
+  if (r.flat()) return apps::kExitOk;
+  std::fprintf(stderr, "novelty-soak: %s\n",
+               r.plateau.reached ? "resident memory grew over the plateau by more than the bound"
+                                 : "the map was still growing at the end: no plateau to judge");
+  return apps::kExitFailed;
 }
 
 }  // namespace

@@ -27,6 +27,7 @@
 #include <sstream>
 
 #include "apps/command_line.h"
+#include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
 #include "apps/shell/progress.h"
 #include "core/frame_stem.h"
@@ -219,8 +220,13 @@ int Run(int argc, char** argv) {
   views::DepthMeshWarper warper(wo, views::WarpOutputsFor(bo));
   if (rawlog.isSet()) {
     if (!truth.isSet()) throw std::invalid_argument("--rawlog needs --groundtruth DIR");
-    return RawlogMode(rawlog.getValue(), truth.getValue(), every.getValue(), out.getValue(), warper,
-                      options);
+    apps::OutputFolder folder("novelty-synth", out.getValue(),
+                              {rawlog.getValue(), truth.getValue()});
+    const int code = RawlogMode(rawlog.getValue(), truth.getValue(), every.getValue(),
+                                folder.path(), warper, options);
+    folder.Commit();
+    std::printf("  → %s/\n", folder.final_path().c_str());
+    return code;
   }
   if (!frames.isSet() || !fx.isSet() || !fy.isSet() || !cx.isSet() || !cy.isSet() ||
       !target.isSet() || !sources.isSet()) {
@@ -233,6 +239,7 @@ int Run(int argc, char** argv) {
   cam.fy = fy.getValue();
   cam.cx = cx.getValue();
   cam.cy = cy.getValue();
+  apps::CheckOutputFile("--out", out.getValue(), {frames.getValue()}, apps::HasExtension(".png"));
   return FolderMode(frames.getValue(), cam, scale.getValue(), target.getValue(), sources.getValue(),
                     out.getValue(), warper, options);
 }

@@ -92,6 +92,14 @@ void SaveAtomically(const mrpt::serialization::CSerializable& object, const std:
   }
 }
 
+bool IsMapFileOf(const std::string& path, const std::string& kind) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(64, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  return head.find(kind) != std::string::npos;
+}
+
 MapChecksum CheckMapChecksum(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot read the map file");

@@ -21,6 +21,10 @@ void SaveAtomically(const mrpt::serialization::CSerializable& object, const std:
 void LoadInto(mrpt::serialization::CSerializable& object, const std::string& path,
               const std::string& kind);
 
+/// Whether `path` is a plain map file of class `kind` ("CAppearanceMap"): MRPT's archive names
+/// the class in its first bytes. False for anything else, a gzip'd file among them.
+bool IsMapFileOf(const std::string& path, const std::string& kind);
+
 /// What a file's trailer says of it.
 enum class MapChecksum {
   kMatches,   ///< the trailer is there and matches the bytes before it

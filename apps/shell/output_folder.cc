@@ -1,5 +1,7 @@
 #include "apps/shell/output_folder.h"
 
+#include "apps/shell/program.h"
+
 #include <stdlib.h>
 
 #include <algorithm>
@@ -12,12 +14,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The program named in `dir`'s marker, "" if there is none.
-std::string WrittenBy(const fs::path& dir) {
-  std::ifstream in(dir / OutputFolder::kMarker);
+// The program named in `dir`'s marker ("" if there is none) and the entries it wrote there.
+struct Marker {
   std::string program;
-  std::getline(in, program);
-  return program;
+  std::vector<std::string> entries;
+};
+
+Marker ReadMarker(const fs::path& dir) {
+  std::ifstream in(dir / OutputFolder::kMarker);
+  Marker m;
+  std::getline(in, m.program);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) m.entries.push_back(line);
+  return m;
 }
 
 bool Empty(const fs::path& dir) {
@@ -42,18 +51,31 @@ bool Within(const fs::path& inner, const fs::path& outer) {
 }
 
 // May `dir` be replaced by `program`'s results?
-void CheckReplaceable(const fs::path& dir, const std::string& program, const std::string& out) {
+// `whole`: the folder must hold only what the marker lists (an OUT.partial a killed run left
+// holds more, and is removed).
+void CheckReplaceable(const fs::path& dir, const std::string& program, const std::string& out,
+                      bool whole) {
   if (!fs::exists(fs::symlink_status(dir))) return;
   if (!fs::is_directory(fs::symlink_status(dir)))
     throw std::runtime_error(dir.string() + ": exists and is not a folder; choose another --out");
   if (Empty(dir)) return;
-  const std::string by = WrittenBy(dir);
-  if (by == program) return;
-  throw std::runtime_error(out + ": " +
-                           (by.empty() ? "holds files that are not " + program + "'s results"
-                                       : "holds " + by + "'s results") +
-                           (dir.string() == out ? "" : " (in " + dir.string() + ")") +
-                           "; choose another --out");
+  const Marker by = ReadMarker(dir);
+  const std::string in = dir.string() == out ? "" : " (in " + dir.string() + ")";
+  if (by.program != program)
+    throw std::runtime_error(out + ": " +
+                             (by.program.empty() ? "holds files that are not " + program +
+                                                       "'s results"
+                                                 : "holds " + by.program + "'s results") +
+                             in + "; choose another --out");
+  // Its own earlier results, but nothing the user (or another program) put there since.
+  if (!whole) return;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name == OutputFolder::kMarker) continue;
+    if (std::find(by.entries.begin(), by.entries.end(), name) == by.entries.end())
+      throw std::runtime_error(out + ": holds '" + name + "', which " + program +
+                               " did not write" + in + "; move it or choose another --out");
+  }
 }
 
 }  // namespace
@@ -61,7 +83,7 @@ void CheckReplaceable(const fs::path& dir, const std::string& program, const std
 OutputFolder::OutputFolder(const std::string& program, const std::string& out,
                            const std::vector<std::string>& inputs)
     : program_(program), out_(out) {
-  if (out.empty()) throw std::runtime_error(program + ": the output folder is empty (--out)");
+  if (out.empty()) throw UsageError("no output folder given (an empty --out)");
   while (out_.size() > 1 && out_.back() == '/') out_.pop_back();
   partial_ = out_ + ".partial";
   for (const std::string& input : inputs) {
@@ -70,8 +92,8 @@ OutputFolder::OutputFolder(const std::string& program, const std::string& out,
       throw std::runtime_error(out_ + ": holds an input of the run (" + input +
                                "); choose another --out");
   }
-  CheckReplaceable(out_, program_, out_);
-  CheckReplaceable(partial_, program_, out_);
+  CheckReplaceable(out_, program_, out_, true);
+  CheckReplaceable(partial_, program_, out_, false);
   fs::remove_all(partial_);
   std::error_code ec;
   fs::create_directories(partial_, ec);
@@ -93,6 +115,13 @@ std::string OutputFolder::File(const std::string& name) const {
 
 void OutputFolder::Commit() {
   if (committed_) return;
+  {  // The marker lists what was written, so that a later run replaces only that.
+    std::ofstream marker(fs::path(partial_) / kMarker);
+    marker << program_ << "\n";
+    for (const auto& entry : fs::directory_iterator(partial_))
+      if (entry.path().filename() != kMarker) marker << entry.path().filename().string() << "\n";
+    if (!marker) throw std::runtime_error(partial_ + ": cannot write " + kMarker);
+  }
   std::error_code ec;
   std::string old;  // the earlier output moves to a new, unique name, then goes
   if (fs::exists(fs::symlink_status(out_))) {
@@ -114,6 +143,32 @@ void OutputFolder::Commit() {
   }
   committed_ = true;
   if (!old.empty()) fs::remove_all(old, ec);
+}
+
+void CheckOutputFile(const std::string& flag, const std::string& path,
+                     const std::vector<std::string>& inputs,
+                     const std::function<bool(const std::string&)>& replaceable) {
+  if (path.empty()) throw UsageError("no output file given (an empty " + flag + ")");
+  for (const std::string& input : inputs) {
+    if (input.empty()) continue;
+    if (Within(path, input))
+      throw std::runtime_error(
+          flag + " " + path +
+          (Components(path) == Components(input) ? " is the input " : " lies inside the input ") +
+          input + ": it would be overwritten");
+  }
+  const fs::file_status status = fs::symlink_status(path);
+  if (!fs::exists(status)) return;
+  if (fs::is_directory(status)) throw std::runtime_error(flag + " " + path + ": is a folder");
+  if (!replaceable(path))
+    throw std::runtime_error(flag + " " + path +
+                             ": exists and is not what this program writes; not replacing it");
+}
+
+std::function<bool(const std::string&)> HasExtension(const std::string& extension) {
+  return [extension](const std::string& path) {
+    return fs::path(path).extension().string() == extension;
+  };
 }
 
 }  // namespace novelty::apps

@@ -3,9 +3,11 @@
 // that fails or is stopped leaves the earlier OUT whole and never a half-written one. OUT is
 // refused if it holds one of the run's inputs (the rawlog, the ground truth, a learnt folder),
 // or files that are not this program's earlier output (another program's results, a user's
-// folder): a marker file `.novelty-output` names the program that wrote a folder.
+// folder, a file put into an earlier output since): a marker file `.novelty-output` names the
+// program that wrote a folder and what it wrote there.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,7 +17,7 @@ class OutputFolder {
  public:
   /// Checks OUT against `inputs` (files or folders; empty strings are ignored) and creates
   /// OUT.partial, removing one an earlier run of `program` left. Throws std::runtime_error
-  /// naming OUT and the reason.
+  /// naming OUT and the reason (UsageError for an empty OUT).
   OutputFolder(const std::string& program, const std::string& out,
                const std::vector<std::string>& inputs);
   /// Removes OUT.partial unless Commit() has published it.
@@ -40,5 +42,16 @@ class OutputFolder {
   std::string program_, out_, partial_;
   bool committed_ = false;
 };
+
+/// The same policy for a program's one output file (a rawlog, a map): refused when it is one of
+/// `inputs` or lies inside an input's folder (the ground truth), or when it exists and
+/// `replaceable` says it is not what the program writes (a user's file, another program's). The
+/// file itself is written through core::TemporaryFile. Throws std::runtime_error naming `flag`.
+void CheckOutputFile(const std::string& flag, const std::string& path,
+                     const std::vector<std::string>& inputs,
+                     const std::function<bool(const std::string&)>& replaceable);
+
+/// For CheckOutputFile: a file whose name ends in `extension` (".rawlog").
+std::function<bool(const std::string&)> HasExtension(const std::string& extension);
 
 }  // namespace novelty::apps

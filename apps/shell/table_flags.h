@@ -12,6 +12,7 @@
 
 #include <tclap/CmdLine.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -62,7 +63,15 @@ class TableFlags {
   /// UsageError naming the flag and why.
   Config Values() const {
     Config c;
+    std::vector<std::string> given;  // keys set so far: a key given twice is a contradiction
+    const auto once = [&given](const std::string& key, const std::string& where) {
+      if (std::find(given.begin(), given.end(), key) != given.end())
+        throw UsageError(where + ": option " + key + " is given twice (a flag and --set?)");
+      given.push_back(key);
+    };
     for (std::size_t i = 0; i < flags_.size(); ++i) {
+      if ((switches_[i] && switches_[i]->isSet()) || (values_[i] && values_[i]->isSet()))
+        once(flags_[i].key, "--" + flags_[i].flag);
       if (switches_[i] && switches_[i]->isSet())
         Set(c, flags_[i].key, "true", "--" + flags_[i].flag);
       if (values_[i] && values_[i]->isSet())
@@ -75,6 +84,7 @@ class TableFlags {
       const std::string key = kv.substr(0, eq);
       if (!Find(key))
         throw UsageError("--set " + kv + ": " + Config::kClass + " has no option '" + key + "'");
+      once(key, "--set " + key);
       Set(c, key, kv.substr(eq + 1), "--set " + key);
     }
     try {

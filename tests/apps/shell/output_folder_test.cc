@@ -1,5 +1,7 @@
 #include "apps/shell/output_folder.h"
 
+#include "apps/shell/program.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -76,6 +78,33 @@ TEST_F(OutputFolderTest, AFailedRunLeavesTheEarlierOutputWhole) {
   EXPECT_EQ(entries, 1);  // no .old or .partial folder left
 }
 
+// The probe's case: a file put into an earlier output was deleted with it by the next run.
+TEST_F(OutputFolderTest, RefusesAnEarlierOutputThatNowHoldsAFileItDidNotWrite) {
+  {
+    OutputFolder o("novelty-run", P("out"), {});
+    std::ofstream(o.File("report.html")) << "r";
+    o.Commit();
+  }
+  std::ofstream(P("out/notes.txt")) << "mine";
+  EXPECT_NE(Refusal(P("out"), {}).find("holds 'notes.txt', which novelty-run did not write"),
+            std::string::npos);
+  EXPECT_TRUE(fs::exists(P("out/notes.txt")));
+  fs::remove(P("out/notes.txt"));
+  EXPECT_EQ(Refusal(P("out"), {}), "");
+}
+
+TEST_F(OutputFolderTest, APartialFolderAKilledRunLeftIsRemoved) {
+  {
+    OutputFolder o("novelty-run", P("out"), {});
+    std::ofstream(o.File("half.csv")) << "x";
+    // killed: the destructor does not run
+    fs::copy(P("out.partial"), P("kept.partial"), fs::copy_options::recursive);
+  }
+  fs::rename(P("kept.partial"), P("out.partial"));
+  OutputFolder o("novelty-run", P("out"), {});
+  EXPECT_FALSE(fs::exists(P("out.partial/half.csv")));
+}
+
 TEST_F(OutputFolderTest, RefusesAFolderThatHoldsAnInput) {
   EXPECT_NE(Refusal(P("gt"), {P("in.rawlog"), P("gt")}).find("holds an input"), std::string::npos);
   EXPECT_NE(Refusal(dir_.string(), {P("in.rawlog")}).find("holds an input"), std::string::npos);
@@ -105,7 +134,7 @@ TEST_F(OutputFolderTest, RefusesAnotherProgramsResultsAndAUsersFolder) {
   EXPECT_NE(Refusal(P("in.rawlog"), {}).find("is not a folder"), std::string::npos);
   fs::create_directories(P("empty"));
   EXPECT_EQ(Refusal(P("empty"), {}), "");
-  EXPECT_NE(Refusal("", {}), "");
+  EXPECT_THROW(OutputFolder("p", "", {}), UsageError);
 }
 
 }  // namespace

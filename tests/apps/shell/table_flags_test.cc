@@ -68,6 +68,11 @@ TEST(TableFlags, BadValuesAreUsageErrorsNamingTheFlag) {
   EXPECT_NE(UsageMessage({"--set", "kappa"}).find("expected KEY=VALUE"), std::string::npos);
   EXPECT_NE(UsageMessage({"--set", "texture_block=8"}).find("texture_block: 8 is even"),
             std::string::npos);
+  // The probe's case: both took effect in silence, the --set one winning whatever the order.
+  EXPECT_NE(UsageMessage({"--kappa", "0.3", "--set", "kappa=0.9"}).find("given twice"),
+            std::string::npos);
+  EXPECT_NE(UsageMessage({"--set", "kappa=0.9", "--set", "kappa=0.3"}).find("given twice"),
+            std::string::npos);
 }
 
 }  // namespace
