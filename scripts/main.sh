@@ -6,6 +6,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 out="${NOVELTY_OUT:-out}"
+# Outputs of a version before the programs marked their folders (.novelty-output) are refused as
+# someone else's: moved aside, never deleted.
+for d in "$out/glass_and_cup" "$out/glass_and_cup_run"; do
+  if [ -d "$d" ] && [ ! -e "$d/.novelty-output" ]; then
+    mv "$d" "$d.before-$(date +%Y%m%d%H%M%S)"
+    echo "main: an earlier version's $d moved aside" >&2
+  fi
+done
 build/bin/novelty-sim share/scenarios/glass_and_cup.scn --out "$out/glass_and_cup"
 build/bin/novelty-run --rawlog "$out/glass_and_cup/glass_and_cup.rawlog" \
   --groundtruth "$out/glass_and_cup/groundtruth" --config share/novelty_run.ini \
