@@ -33,8 +33,7 @@ bool Empty(const fs::path& dir) {
   return fs::is_empty(dir);
 }
 
-// True if `inner` is `outer` or lies inside it (both made absolute and normal; symbolic links
-// resolved where the paths exist).
+// The path's parts, made absolute and normal (symbolic links resolved where it exists).
 std::vector<std::string> Components(const fs::path& p) {
   std::error_code ec;
   fs::path full = fs::weakly_canonical(fs::absolute(p), ec);
@@ -45,6 +44,7 @@ std::vector<std::string> Components(const fs::path& p) {
   return parts;
 }
 
+// True if `inner` is `outer` or lies inside it.
 bool Within(const fs::path& inner, const fs::path& outer) {
   const std::vector<std::string> a = Components(inner), b = Components(outer);
   return a.size() >= b.size() && std::equal(b.begin(), b.end(), a.begin());
