@@ -7,7 +7,8 @@
 //       [--reference-frame F] [--poses groundtruth|rawlog]
 //       [--kappa K] [--colour per-channel|luminance-chromaticity] [--max-order N] [--grid N]
 //       [--shape-scale frame|empty] [--viewpoint-distance M] [--missing-texture]
-//       [--set KEY=VALUE ...]   (the CIlluminationInvariantMap options, with its defaults)
+//       [--options FILE] [--set KEY=VALUE ...]   (the CIlluminationInvariantMap options, with
+//       its defaults; --options share/thesis/illumination_invariant.ini: the thesis's Δ)
 //
 // OUT: panels/, roc.csv, findings.csv, report.html.
 #include <tclap/CmdLine.h>

@@ -18,9 +18,6 @@
 // Poses go to the observations of the rig frames (same timestamps). Run it before
 // novelty-depth, which copies the pose observations through to its RGB-D scans.
 // With --groundtruth the pose error against novelty-sim's poses.csv is printed.
-#include <mrpt/obs/CObservation3DRangeScan.h>
-#include <mrpt/obs/CObservationImage.h>
-#include <mrpt/obs/CObservationStereoImages.h>
 #include <tclap/CmdLine.h>
 
 #include <algorithm>
@@ -39,13 +36,10 @@
 #include "apps/shell/progress.h"
 #include "core/range_check.h"
 #include "core/same_file.h"
+#include "eval/pose_error.h"
 #include "sensors/localization/direct_odometry.h"
 #include "sensors/localization/visual_odometry.h"
-#include "sensors/rawlog/camera_pose_observation.h"
-#include "sensors/rawlog/rawlog_frame_reader.h"
-#include "sensors/rawlog/rawlog_input.h"
-#include "sensors/rawlog/rawlog_output.h"
-#include "sensors/rawlog/rgbd_observation.h"
+#include "sensors/rawlog/camera_pose_annotator.h"
 #include "sensors/rawlog/rig_frame_reader.h"
 #include "sensors/rawlog/tracker_trajectory.h"
 #include "sensors/tracker/pose_trajectory.h"
@@ -54,17 +48,6 @@
 namespace {
 
 using namespace novelty;
-
-// T_robot_cam of a camera observation, or nullopt for anything else.
-std::optional<Eigen::Isometry3d> CameraMount(const mrpt::serialization::CSerializable& obj) {
-  if (auto* scan = dynamic_cast<const mrpt::obs::CObservation3DRangeScan*>(&obj))
-    return sensors::CameraOnRobot(*scan);
-  if (auto* image = dynamic_cast<const mrpt::obs::CObservationImage*>(&obj))
-    return sensors::ToEigen(image->cameraPose);
-  if (auto* stereo = dynamic_cast<const mrpt::obs::CObservationStereoImages*>(&obj))
-    return sensors::ToEigen(mrpt::poses::CPose3D(stereo->cameraPose));
-  return std::nullopt;
-}
 
 // The tracker's trajectory, with the plate's calibration on stderr.
 sensors::PoseTrajectory TrackerPoses(const std::string& rawlog, int* rejected) {
@@ -121,6 +104,23 @@ std::map<double, Eigen::Isometry3d> VisualPoses(const std::string& rawlog,
   return poses;
 }
 
+// The pose error against novelty-sim's ground truth (its frames are the camera times in order).
+void ReportPoseError(const sensors::CameraPoseAnnotation& a, const std::string& truth) {
+  std::map<int, Eigen::Isometry3d> estimated;
+  int frame = 0;
+  for (const auto& [t, pose] : a.poses) {
+    ++frame;
+    if (pose) estimated.emplace(frame, *pose);
+  }
+  const auto e = eval::ComparePoses(estimated, sim::GroundTruthReader(truth).CameraPoses());
+  if (!e) return;
+  std::printf("last frame %d: %.3f°, %.1f mm off\n", e->last_frame, e->last_deg, e->last_mm);
+  std::printf(
+      "error against ground truth over %d frames: rotation median %.3f° (95 %%: %.3f°), "
+      "translation median %.2f mm (95 %%: %.2f mm)\n",
+      e->frames, e->median_deg, e->p95_deg, e->median_mm, e->p95_mm);
+}
+
 int Run(int argc, char** argv) {
   novelty::apps::CommandLine cmd("Adds camera poses (LED tracker or vision) to a rawlog.", "0.1");
   TCLAP::UnlabeledValueArg<std::string> in("input", "Input rawlog", true, "", "IN.rawlog", cmd);
@@ -174,66 +174,14 @@ int Run(int argc, char** argv) {
   };
   const std::string label = visual ? "POSE_VISUAL" : "POSE_TRACKER";
 
-  sensors::RawlogInput input(in.getValue());
-  sensors::RawlogOutput output(out.getValue());
-  output.ShareImagesOf(in.getValue());
-  int cameras = 0, posed = 0;
-  std::vector<std::string> reasons;
-  // Every camera time (a rig's images share one) with its pose, if it got one: in time order
-  // they are the frames 1, 2, … of novelty-sim's ground truth.
-  std::map<double, std::optional<Eigen::Isometry3d>> frame_poses;
-  while (const auto obj = input.Next()) {
-    if (const auto mount = CameraMount(*obj)) {
-      ++cameras;
-      const auto& o = dynamic_cast<const mrpt::obs::CObservation&>(*obj);
-      std::string why;
-      const double t = mrpt::Clock::toDouble(o.timestamp);
-      const auto pose = pose_at(t, &why);
-      if (pose) {
-        output.Write(sensors::MakeCameraPoseObservation(t, *pose, *mount, label, 0.001, 0.003));
-        ++posed;
-      } else {
-        reasons.push_back(why);
-      }
-      frame_poses.emplace(t, pose);
-    }
-    output.Write(*obj);
-  }
-  output.Close();
-  std::printf("%d of %d camera observations got a pose (%d %s rejected) → %s\n", posed, cameras,
-              rejected, visual ? "frames" : "tracker samples", output.path().c_str());
-  for (size_t i = 0; i < std::min<size_t>(reasons.size(), 5); ++i)
-    std::printf("  no pose: %s\n", reasons[i].c_str());
-  if (reasons.size() > 5) std::printf("  … and %zu more\n", reasons.size() - 5);
-
-  if (truth.isSet()) {  // pose error per frame against novelty-sim's ground truth
-    const auto gt = sim::GroundTruthReader(truth.getValue()).CameraPoses();
-    std::vector<std::pair<int, Eigen::Isometry3d>> estimated;  // frame index, pose
-    int frame = 0;
-    for (const auto& [t, pose] : frame_poses) {
-      ++frame;
-      if (pose) estimated.emplace_back(frame, *pose);
-    }
-    std::vector<double> angle, shift;
-    for (const auto& [index, pose] : estimated) {
-      const auto g = gt.find(index);
-      if (g == gt.end()) continue;
-      angle.push_back(Eigen::AngleAxisd(pose.linear().transpose() * g->second.linear()).angle() *
-                      180 / M_PI);
-      shift.push_back((pose.translation() - g->second.translation()).norm() * 1000);
-    }
-    if (!angle.empty()) {
-      std::printf("last frame %d: %.3f°, %.1f mm off\n", estimated.back().first, angle.back(),
-                  shift.back());
-      std::sort(angle.begin(), angle.end());
-      std::sort(shift.begin(), shift.end());
-      std::printf(
-          "error against ground truth over %zu frames: rotation median %.3f° "
-          "(95 %%: %.3f°), translation median %.2f mm (95 %%: %.2f mm)\n",
-          angle.size(), angle[angle.size() / 2], angle[angle.size() * 95 / 100],
-          shift[shift.size() / 2], shift[shift.size() * 95 / 100]);
-    }
-  }
+  const sensors::CameraPoseAnnotation a =
+      sensors::AnnotateCameraPoses(in.getValue(), out.getValue(), pose_at, label);
+  std::printf("%d of %d camera observations got a pose (%d %s rejected) → %s\n", a.posed, a.cameras,
+              rejected, visual ? "frames" : "tracker samples", out.getValue().c_str());
+  for (size_t i = 0; i < std::min<size_t>(a.reasons.size(), 5); ++i)
+    std::printf("  no pose: %s\n", a.reasons[i].c_str());
+  if (a.reasons.size() > 5) std::printf("  … and %zu more\n", a.reasons.size() - 5);
+  if (truth.isSet()) ReportPoseError(a, truth.getValue());
   return 0;
 }
 

@@ -17,32 +17,26 @@
 // it was measured over.
 #include <tclap/CmdLine.h>
 
-#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <sstream>
 
 #include "apps/command_line.h"
 #include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
 #include "apps/shell/progress.h"
-#include "core/frame_stem.h"
 #include "core/range_check.h"
 #include "core/write_rgb_image.h"
 #include "eval/psnr.h"
-#include "eval/skipped_frames.h"
+#include "experiments/view_synthesis_run.h"
 #include "maps/views/depth_mesh_warper.h"
-#include "maps/views/reference_view_store.h"
 #include "maps/views/view_blender.h"
-#include "maps/views/view_selection.h"
 #include "maps/views/view_synthesis.h"
 #include "sensors/dataset/rgbd_folder_reader.h"
-#include "sensors/rawlog/rawlog_frame_reader.h"
-#include "sim/output/ground_truth_reader.h"
 
 namespace {
 
@@ -84,84 +78,6 @@ int FolderMode(const std::string& dir, const core::PinholeCamera& intrinsics, do
       views::SynthesiseView(warper, ptrs, {}, {}, cam, *truth.T_world_cam, options);
   core::WriteRgbImage(out, r.rgb);
   std::printf("PSNR=%.2f coverage=%.4f\n", eval::Psnr(r.rgb, truth.rgb, r.valid), r.coverage);
-  return 0;
-}
-
-int RawlogMode(const std::string& rawlog, const std::string& truth_dir, int every,
-               const std::string& out_dir, views::DepthMeshWarper& warper,
-               const views::SynthesisOptions& options) {
-  const auto poses = sim::GroundTruthReader(truth_dir).CameraPoses();
-  sensors::RawlogFrameReader reader(rawlog);
-  views::ReferenceViewStore store;
-  std::vector<core::Frame> path;
-  for (core::Frame f; reader.Next(f);) {
-    const auto pose = poses.find(f.index);
-    if (pose == poses.end()) {
-      std::fprintf(stderr, "novelty-synth: %s: frame %d has no ground-truth pose, skipped\n",
-                   rawlog.c_str(), f.index);
-      continue;
-    }
-    if (f.index % every == 1) {
-      views::ReferenceView v;
-      v.camera = f.camera;
-      v.T_world_cam = pose->second;
-      v.depth = f.depth.clone();
-      v.planes["rgb"] = f.rgb.clone();
-      store.Add(std::move(v));
-    } else {
-      path.push_back(f);
-      path.back().rgb = f.rgb.clone();
-    }
-  }
-  if (reader.skipped())
-    std::fprintf(stderr, "novelty-synth: %s\n",
-                 eval::SkippedFramesSummary(reader.skipped() + store.size() + int(path.size()),
-                                            reader.skip_reasons())
-                     .c_str());
-  if (store.size() == 0) throw std::runtime_error(rawlog + ": no RGB-D frame to use as reference");
-  std::filesystem::create_directories(out_dir);
-  std::ofstream csv(out_dir + "/frames.csv");
-  csv << "frame,time_s,synthesis_ms,views,psnr_db,coverage\n";
-  const double t_start = path.empty() ? 0.0 : path.front().time;
-  const std::vector<Eigen::Isometry3d> ref_poses = store.Poses();
-  // Each reference view's mesh plan once, not at every virtual view that warps it.
-  std::vector<views::MeshPlan> plans;
-  for (int j = 0; j < store.size(); ++j)
-    plans.push_back(views::MeshPlanFor(store.view(j).depth, warper.options()));
-  const views::ViewSelectionOptions selection;
-  double psnr_sum = 0.0, coverage_sum = 0.0;
-  int n = 0;
-  apps::Progress progress("[novelty-synth] virtual views", int(path.size()));
-  for (const core::Frame& f : path) {
-    const Eigen::Isometry3d& pose = poses.at(f.index);
-    const auto t0 = std::chrono::steady_clock::now();
-    std::vector<const views::ReferenceView*> refs;
-    std::vector<const views::MeshPlan*> ref_plans;
-    const views::ViewSelection selected =
-        views::SelectViewsForRays(ref_poses, f.camera, pose, selection);
-    for (int j : selected.views) {
-      refs.push_back(&store.view(j));
-      ref_plans.push_back(&plans[std::size_t(j)]);
-    }
-    if (refs.empty()) continue;
-    const views::SynthesisResult r = views::SynthesiseView(
-        warper, refs, ref_plans, selected.Weights(selection), f.camera, pose, options);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    const double psnr = eval::Psnr(r.rgb, f.rgb, r.valid);
-    core::WriteRgbImage(out_dir + "/" + core::FrameStem(f.index) + ".png", r.rgb);
-    csv << f.index << "," << f.time - t_start << "," << ms << "," << refs.size() << "," << psnr
-        << "," << r.coverage << "\n";
-    psnr_sum += psnr;
-    coverage_sum += r.coverage;
-    progress.Update(++n);
-  }
-  progress.Finish();
-  std::printf(
-      "%d virtual views from %d reference views, mean PSNR=%.2f dB over covered pixels, "
-      "mean coverage=%.4f, %d frames skipped\n  frames: %s/frames.csv\n",
-      n, store.size(), n ? psnr_sum / n : 0.0, n ? coverage_sum / n : 0.0, reader.skipped(),
-      out_dir.c_str());
   return 0;
 }
 
@@ -217,16 +133,31 @@ int Run(int argc, char** argv) {
   bo.depth_tolerance = tolerance.getValue();
   bo.resolution_power = power.getValue();
   bo.angle_power = angle.getValue();
-  views::DepthMeshWarper warper(wo, views::WarpOutputsFor(bo));
   if (rawlog.isSet()) {
     if (!truth.isSet()) throw std::invalid_argument("--rawlog needs --groundtruth DIR");
-    apps::OutputFolder folder("novelty-synth", out.getValue(),
-                              {rawlog.getValue(), truth.getValue()});
-    const int code = RawlogMode(rawlog.getValue(), truth.getValue(), every.getValue(),
-                                folder.path(), warper, options);
+    experiments::ViewSynthesisRunOptions o;
+    o.rawlog = rawlog.getValue();
+    o.groundtruth = truth.getValue();
+    o.every = every.getValue();
+    o.synthesis = options;
+    o.status = [](const std::string& line) {
+      std::fprintf(stderr, "novelty-synth: %s\n", line.c_str());
+    };
+    std::optional<apps::Progress> progress;
+    o.progress = [&](int done, int total) {
+      if (!progress) progress.emplace("[novelty-synth] virtual views", total);
+      progress->Update(done);
+    };
+    apps::OutputFolder folder("novelty-synth", out.getValue(), {o.rawlog, o.groundtruth});
+    const experiments::ViewSynthesisRunResult r = experiments::RunViewSynthesis(o, folder.path());
+    if (progress) progress->Finish();
     folder.Commit();
-    std::printf("  → %s/\n", folder.final_path().c_str());
-    return code;
+    std::printf(
+        "%d virtual views from %d reference views, mean PSNR=%.2f dB over covered pixels, mean "
+        "coverage=%.4f, %d frames skipped\n  frames: %s/frames.csv\n",
+        r.virtual_views, r.reference_views, r.mean_psnr_db, r.mean_coverage, r.skipped,
+        folder.final_path().c_str());
+    return apps::kExitOk;
   }
   if (!frames.isSet() || !fx.isSet() || !fy.isSet() || !cx.isSet() || !cy.isSet() ||
       !target.isSet() || !sources.isSet()) {
@@ -240,6 +171,7 @@ int Run(int argc, char** argv) {
   cam.cx = cx.getValue();
   cam.cy = cy.getValue();
   apps::CheckOutputFile("--out", out.getValue(), {frames.getValue()}, apps::HasExtension(".png"));
+  views::DepthMeshWarper warper(wo, views::WarpOutputsFor(bo));
   return FolderMode(frames.getValue(), cam, scale.getValue(), target.getValue(), sources.getValue(),
                     out.getValue(), warper, options);
 }

@@ -1,6 +1,5 @@
 #include "experiments/soak_experiment.h"
 
-#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 
 #include <fstream>
@@ -10,6 +9,7 @@
 #include "core/range_check.h"
 #include "core/resident_memory.h"
 #include "eval/html_report.h"
+#include "experiments/maps_config.h"
 #include "mrpt_plugins/c_appearance_map.h"
 #include "mrpt_plugins/multi_map_config.h"
 #include "mrpt_plugins/rawlog_map_player.h"
@@ -17,14 +17,6 @@
 
 namespace novelty::experiments {
 namespace {
-
-mrpt::maps::TSetOfMetricMapInitializers Maps(const std::string& config) {
-  if (!config.empty()) return mrpt_plugins::LoadMultiMapConfig(config);
-  return mrpt_plugins::LoadMultiMapConfig(
-      mrpt::config::CConfigFileMemory("[map]\nCAppearanceMap_count = 1\n"
-                                      "CDifferencingMap_count = 1\n"),
-      "map", "default maps");
-}
 
 void AddFindings(SoakResult& r) {
   const eval::MemoryPlateau& p = r.plateau;
@@ -46,11 +38,10 @@ SoakResult RunSoak(const SoakOptions& o) {
   core::CheckInRange(o.frames, 1, 10000000, "frames");
   core::CheckInRange(o.sample_every, 1, 10000000, "sample_every");
   mrpt::maps::CMultiMetricMap maps;
-  maps.setListOfMaps(Maps(o.config));
+  const MapsConfig config = OpenMapsConfig(o.config);
+  maps.setListOfMaps(mrpt_plugins::LoadMultiMapConfig(*config.ini, "map", config.source));
   const auto appearance = maps.mapByClass<mrpt_plugins::CAppearanceMap>();
-  if (!appearance)
-    throw std::runtime_error((o.config.empty() ? "the maps" : o.config) +
-                             ": holds no CAppearanceMap");
+  if (!appearance) throw std::runtime_error(config.source + ": holds no CAppearanceMap");
   const sim::GroundTruthReader ground_truth(o.groundtruth);
   SoakResult r;
   while (r.played < o.frames) {

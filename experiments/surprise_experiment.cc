@@ -1,7 +1,6 @@
 #include "experiments/surprise_experiment.h"
 
 #include <mrpt/config/CConfigFile.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 
 #include <chrono>
@@ -27,6 +26,7 @@
 #include "eval/selectivity_csv.h"
 #include "eval/selectivity_findings.h"
 #include "eval/skipped_frames.h"
+#include "experiments/maps_config.h"
 #include "maps/appearance/appearance_map.h"
 #include "maps/appearance/differencing_map.h"
 #include "mrpt_plugins/c_appearance_map.h"
@@ -63,14 +63,6 @@ std::vector<double> ParseViewFactors(const std::string& list) {
 }
 
 namespace {
-
-// The maps declared when no .ini is given: one of each, every option at its default
-// (share/novelty_run.ini is the same, with the keys documented).
-constexpr const char* kDefaultMaps = R"(
-[map]
-CAppearanceMap_count = 1
-CDifferencingMap_count = 1
-)";
 
 // The maps the run feeds: the first CAppearanceMap and CDifferencingMap of the .ini, then, per
 // compare_views factor, copies of their definitions with reference views that many times
@@ -213,12 +205,6 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
   report.Save(out + "/report.html");
 }
 
-// The maps' .ini: `path` (checked to be a text file), else kDefaultMaps.
-std::unique_ptr<mrpt::config::CConfigFileBase> OpenMapsConfig(const std::string& path) {
-  if (path.empty()) return std::make_unique<mrpt::config::CConfigFileMemory>(kDefaultMaps);
-  return mrpt_plugins::OpenConfigFile(path);
-}
-
 // What a run gathered for the report.
 struct Played {
   std::vector<eval::SelectivityRow> rows;
@@ -310,9 +296,8 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
   if (a.panels_every < 1) throw std::invalid_argument("panels_every must be >= 1");
   if (a.objects_from < 1) throw std::invalid_argument("objects_from must be >= 1");
   if (a.max_frames && *a.max_frames < 1) throw std::invalid_argument("max_frames must be >= 1");
-  const std::unique_ptr<mrpt::config::CConfigFileBase> ini = OpenMapsConfig(a.config);
-  RunMaps maps(*ini, a.config.empty() ? "default maps" : a.config, a.view_reduction,
-               a.compare_views);
+  const MapsConfig config = OpenMapsConfig(a.config);
+  RunMaps maps(*config.ini, config.source, a.view_reduction, a.compare_views);
   mrpt_plugins::CAppearanceMap& map = maps.appearance();
   if (!a.map_in.empty()) {
     map.LoadFromFile(a.map_in);

@@ -4,6 +4,7 @@
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
@@ -36,6 +37,19 @@ double MeanUncertainty(const views::ReferenceView& v) {
 
 CAppearanceMap::CAppearanceMap(const AppearanceMapConfig& config)
     : ViewMapAdapter(config, "CAppearanceMap", ".appearance_map") {}
+
+void CAppearanceMap::addFrameConsumer(AppearanceFrameConsumer* consumer) {
+  if (std::find(consumers_.begin(), consumers_.end(), consumer) == consumers_.end())
+    consumers_.push_back(consumer);
+}
+
+void CAppearanceMap::removeFrameConsumer(AppearanceFrameConsumer* consumer) {
+  consumers_.erase(std::remove(consumers_.begin(), consumers_.end(), consumer), consumers_.end());
+}
+
+void CAppearanceMap::FrameInserted() {
+  for (AppearanceFrameConsumer* c : consumers_) c->ConsumeAppearanceFrame(*this);
+}
 
 std::string CAppearanceMap::asString() const {
   std::ostringstream s;

@@ -24,6 +24,18 @@
 
 namespace novelty::mrpt_plugins {
 
+class CAppearanceMap;
+
+/// A map that takes each frame's products from a CAppearanceMap as it inserts the frame
+/// (CObjectDatabaseMap): handed explicitly, so that neither the order of the maps in a
+/// CMultiMetricMap nor frame counters decide what it reads.
+class AppearanceFrameConsumer {
+ public:
+  virtual ~AppearanceFrameConsumer() = default;
+  /// Called at the end of `appearance`'s insertion of a frame (lastFrame(), lastProducts()).
+  virtual void ConsumeAppearanceFrame(const CAppearanceMap& appearance) = 0;
+};
+
 class CAppearanceMap : public ViewMapAdapter<appearance::AppearanceMap, AppearanceMapConfig,
                                              appearance::AppearanceProducts> {
   DEFINE_SERIALIZABLE(CAppearanceMap, novelty::mrpt_plugins)
@@ -39,6 +51,10 @@ class CAppearanceMap : public ViewMapAdapter<appearance::AppearanceMap, Appearan
     predict_depth_ = on;
     map_->set_predict_depth(on);
   }
+  /// Hands every frame inserted from now on to `consumer` (once, however often added) until
+  /// removeFrameConsumer; the consumer must remove itself before it is destroyed.
+  void addFrameConsumer(AppearanceFrameConsumer* consumer);
+  void removeFrameConsumer(AppearanceFrameConsumer* consumer);
   /// The last frame's surprise and uncertainty Σβ in false colour on the fixed scales of
   /// maps/appearance/product_images.h (empty before the first frame): for mrpt::gui windows, or
   /// written into a rawlog with ProductObservation (cimage_products.h) for RawLogViewer.
@@ -55,7 +71,9 @@ class CAppearanceMap : public ViewMapAdapter<appearance::AppearanceMap, Appearan
 
  private:
   void MapReplaced() override { map_->set_predict_depth(predict_depth_); }
+  void FrameInserted() override;
   bool predict_depth_ = false;
+  std::vector<AppearanceFrameConsumer*> consumers_;  // not owned
 };
 
 }  // namespace novelty::mrpt_plugins

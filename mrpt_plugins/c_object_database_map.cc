@@ -59,28 +59,36 @@ CObjectDatabaseMap::CObjectDatabaseMap(const ObjectDatabaseMapConfig& config)
       config_(config),
       acquisition_(std::make_unique<objects::ObjectAcquisition>(config.map)) {}
 
+CObjectDatabaseMap::~CObjectDatabaseMap() {
+  if (const auto appearance = appearance_.lock()) appearance->removeFrameConsumer(this);
+}
+
 void CObjectDatabaseMap::linkAppearanceMap(const std::shared_ptr<CAppearanceMap>& appearance) {
   if (!appearance) throw std::invalid_argument("CObjectDatabaseMap: no CAppearanceMap to link");
+  const auto linked = appearance_.lock();
+  if (appearance == linked) return;
+  if (linked) linked->removeFrameConsumer(this);
+  room_.reset();  // taken from the new map at its next frame
   appearance->setPredictDepth(true);
-  if (appearance != appearance_.lock()) room_.reset();  // taken from this map at its next frame
+  appearance->addFrameConsumer(this);
   appearance_ = appearance;
-  appearance_frames_ = appearance->framesInserted();
 }
 
 bool CObjectDatabaseMap::internal_insertObservation(
     const mrpt::obs::CObservation&, const std::optional<const mrpt::poses::CPose3D>&) {
-  const std::shared_ptr<CAppearanceMap> appearance = appearance_.lock();
-  if (!appearance)
+  if (appearance_.expired())
     throw std::logic_error(
         "CObjectDatabaseMap: not linked to a CAppearanceMap (call LinkObjectDatabaseMaps(multimap) "
         "after its maps are made)");
-  const bool taken = appearance->framesInserted() != appearance_frames_;
-  appearance_frames_ = appearance->framesInserted();
-  if (!taken || paused_) return false;
-  const core::Frame& f = appearance->lastFrame();
-  const appearance::AppearanceProducts& p = appearance->lastProducts();
+  return false;  // the frame came, or comes, with the appearance map's insertion
+}
+
+void CObjectDatabaseMap::ConsumeAppearanceFrame(const CAppearanceMap& appearance) {
+  if (paused_) return;
+  const core::Frame& f = appearance.lastFrame();
+  const appearance::AppearanceProducts& p = appearance.lastProducts();
   const cv::Mat expected_depth =
-      config_.depth_of_room_at_start ? ExpectedDepthWithRoom(*appearance) : p.expected_depth_span;
+      config_.depth_of_room_at_start ? ExpectedDepthWithRoom(appearance) : p.expected_depth_span;
   last_ =
       acquisition_->Process(f.rgb, f.depth, p.surprise, expected_depth, f.camera, *f.T_world_cam);
   if (last_.learner.recognised == objects::LearnerStep::Recognised::kNewObject) {
@@ -90,7 +98,6 @@ bool CObjectDatabaseMap::internal_insertObservation(
     learnt_at_.push_back(f.T_world_cam->translation());
   }
   ++frames_used_;
-  return true;
 }
 
 // The room's farthest surface tells an object added since this map's first frame, which the
@@ -290,12 +297,17 @@ mrpt::maps::CMetricMap* CObjectDatabaseMap::internal_CreateFromMapDefinition(
 void LinkObjectDatabaseMaps(mrpt::maps::CMultiMetricMap& maps) {
   std::shared_ptr<CAppearanceMap> appearance;
   for (const auto& m : maps.maps) {
-    if (auto a = std::dynamic_pointer_cast<CAppearanceMap>(m); a && !appearance) appearance = a;
+    if (auto a = std::dynamic_pointer_cast<CAppearanceMap>(m)) {
+      appearance = a;
+      break;
+    }
+  }
+  for (const auto& m : maps.maps) {
     if (auto o = std::dynamic_pointer_cast<CObjectDatabaseMap>(m)) {
       if (!appearance)
         throw std::invalid_argument(
-            "CObjectDatabaseMap needs a CAppearanceMap before it in the multimap (it reads the "
-            "appearance map's surprise of the same frame)");
+            "CObjectDatabaseMap needs a CAppearanceMap in the multimap (it takes the appearance "
+            "map's surprise of each frame)");
       o->linkAppearanceMap(appearance);
     }
   }

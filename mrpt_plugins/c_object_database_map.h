@@ -4,13 +4,14 @@
 //
 // - Declared in a CMultiMetricMap .ini beside a CAppearanceMap ("CObjectDatabaseMap_count = 1",
 //   options in "<prefix>_options" with the keys of share/object_database.ini; unknown keys are
-//   errors). It reads the appearance map's frame and products (surprise, expected depth) of the
-//   same observation, so it must be linked to it: LinkObjectDatabaseMaps(multimap) after the
-//   multimap's maps are made (and again whenever they are remade); the appearance map must come
-//   first in the multimap (MRPT orders the maps of an .ini by class name, so it does).
-// - insertObservation(obs, robotPose) uses the observation when the linked appearance map took it
-//   (it counts its frames), else returns false; lastStep() holds the frame's focus of attention,
-//   added/removed decision, features and recognition.
+//   errors). The appearance map hands it each frame it inserts, with that frame's products
+//   (surprise, expected depth): link them with LinkObjectDatabaseMaps(multimap) after the
+//   multimap's maps are made (and again whenever they are remade), or linkAppearanceMap. The
+//   order of the maps in the multimap does not matter.
+// - The frame is used as the appearance map inserts it; insertObservation itself takes nothing
+//   (it returns false, and throws std::logic_error while the map is not linked). lastStep()
+//   holds the last used frame's focus of attention, added/removed decision, features and
+//   recognition; framesUsed() counts them.
 // - With depth_of_room_at_start, added/removed and the nearer tests (learn_only_nearer_features,
 //   nearer_is_surprising, grow_focus_over_nearer) compare with the depth the appearance map's
 //   views hold now together with what they held at the first frame this map used — the first
@@ -46,14 +47,22 @@
 
 namespace novelty::mrpt_plugins {
 
-class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::COutputLogger {
+class CObjectDatabaseMap : public mrpt::maps::CMetricMap,
+                           public mrpt::system::COutputLogger,
+                           public AppearanceFrameConsumer {
   DEFINE_SERIALIZABLE(CObjectDatabaseMap, novelty::mrpt_plugins)
 
  public:
   explicit CObjectDatabaseMap(const ObjectDatabaseMapConfig& config = {});
+  ~CObjectDatabaseMap() override;
+  CObjectDatabaseMap(const CObjectDatabaseMap&) = delete;
+  CObjectDatabaseMap& operator=(const CObjectDatabaseMap&) = delete;
 
-  /// Reads frames and products from `appearance` from now on, and asks it for its expected depth.
+  /// Takes the frames and products `appearance` inserts from now on (instead of those of the map
+  /// it was linked to), and asks it for its expected depth.
   void linkAppearanceMap(const std::shared_ptr<CAppearanceMap>& appearance);
+  /// Uses the frame `appearance` just inserted unless paused (AppearanceFrameConsumer).
+  void ConsumeAppearanceFrame(const CAppearanceMap& appearance) override;
 
   bool isEmpty() const override { return database().features() == 0; }
   std::string asString() const override;
@@ -69,7 +78,7 @@ class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::C
   const ObjectDatabaseMapConfig& config() const { return config_; }
   /// Per object, the camera position (world) of the frame that gave it its class; NaN unknown.
   std::vector<Eigen::Vector3d> learntAt() const;
-  /// Frames used (the appearance map took them).
+  /// Frames used (handed by the appearance map while not paused).
   int framesUsed() const { return frames_used_; }
   /// With depth_of_room_at_start: the views of the room's depth as taken; -1 while none is.
   int roomViews() const { return room_ ? room_->views() : -1; }
@@ -114,14 +123,13 @@ class CObjectDatabaseMap : public mrpt::maps::CMetricMap, public mrpt::system::C
   // loaded or cleared (its mapsReplaced() then); not saved.
   std::unique_ptr<appearance::RoomDepth> room_;
   long room_maps_replaced_ = 0;
-  long appearance_frames_ = 0;  // the appearance map's frame count when this map last read it
   int frames_used_ = 0;
   bool paused_ = false;
 };
 
-/// Links every CObjectDatabaseMap in `maps` to the first CAppearanceMap there. Throws
-/// std::invalid_argument if there is an object database but no appearance map, or the appearance
-/// map comes after it (it would read the previous frame's products).
+/// Links every CObjectDatabaseMap in `maps` to the first CAppearanceMap there, wherever each
+/// stands in the list. Throws std::invalid_argument if there is an object database but no
+/// appearance map.
 void LinkObjectDatabaseMaps(mrpt::maps::CMultiMetricMap& maps);
 
 }  // namespace novelty::mrpt_plugins

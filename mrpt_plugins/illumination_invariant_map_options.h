@@ -1,5 +1,5 @@
 // The options of CIlluminationInvariantMap: the illumination-invariant map's (maps/illumination/
-// illumination_map.h) in one table (option_table.h), with the thesis's values as defaults —
+// illumination_map.h) in one table (option_table.h), with the best measured setting as defaults —
 // share/illumination_invariant.ini is the dump of them (tested).
 #pragma once
 
@@ -9,6 +9,16 @@
 namespace novelty::mrpt_plugins {
 
 struct IlluminationInvariantMapConfig : public TabledOptions<IlluminationInvariantMapConfig> {
+  /// The best measured setting (docs/illumination.md): colour = luminance-chromaticity and
+  /// missing_texture = true meet both targets of 6.4 on all four scenes, where the thesis's
+  /// per-channel Δ misses the AUC on the plate and the specular scene; every other option
+  /// illumination::IlluminationMapOptions' default (the thesis's values). The thesis's settings:
+  /// share/thesis/illumination_invariant.ini.
+  IlluminationInvariantMapConfig() {
+    map.invariant.colour = illumination::InvariantImageOptions::Colour::kLuminanceChromaticity;
+    map.model.missing_texture = true;
+  }
+
   illumination::IlluminationMapOptions map;
 
   static const OptionTable<IlluminationInvariantMapConfig>& Table();

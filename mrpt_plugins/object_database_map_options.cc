@@ -5,6 +5,16 @@
 
 namespace novelty::mrpt_plugins {
 
+ObjectDatabaseMapConfig::ObjectDatabaseMapConfig() {
+  map.extractor = objects::FeatureExtractor::kSift;
+  map.focus.morphology_size = 12;
+  map.learn_unchanged_change = true;
+  map.learn_only_nearer_features = true;
+  map.nearer_is_surprising = true;
+  map.learner.static_features_recognise = true;
+  map.learner.verify_pose = true;
+}
+
 const OptionTable<ObjectDatabaseMapConfig>& ObjectDatabaseMapConfig::Table() {
   using C = ObjectDatabaseMapConfig;
   static const OptionTable<C> table = [] {

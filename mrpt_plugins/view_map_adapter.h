@@ -22,9 +22,9 @@
 #include "mrpt_plugins/depth_source.h"
 #include "mrpt_plugins/map_file.h"
 #include "mrpt_plugins/observation_frame.h"
-#include "mrpt_plugins/view_archive.h"
 #include "mrpt_plugins/pose_check.h"
 #include "mrpt_plugins/register_maps.h"
+#include "mrpt_plugins/view_archive.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 namespace novelty::mrpt_plugins {
@@ -60,8 +60,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   const Map& map() const { return *map_; }
   /// The image the map expected for the last frame (the prior's mean), as an MRPT image.
   mrpt::img::CImage expectedImage() const { return ToCImage(last_.expected_rgb); }
-  /// Frames inserted since construction (never reset: a map that reads this one's products, as
-  /// CObjectDatabaseMap does, tells by it whether this map took an observation).
+  /// Frames inserted since construction (never reset).
   long framesInserted() const { return frames_inserted_; }
   /// Times a load or clear put a new map in place: a map that keeps something taken from this
   /// one (CObjectDatabaseMap's room depth) tells by it that what it took is gone.
@@ -165,6 +164,8 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   /// After a load or clear put a new map in place: what the derived class set on the old one
   /// that is not an option (not saved) is set again here.
   virtual void MapReplaced() {}
+  /// After each inserted frame, its products in lastProducts(): for maps that hand them on.
+  virtual void FrameInserted() {}
 
   std::unique_ptr<Map> map_;
   Products last_;
@@ -188,6 +189,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     frame_.depth = depth;
     frame_.camera = camera;
     frame_.T_world_cam = T_world_cam;
+    FrameInserted();
     return last_;
   }
   // The first three implausible poses, then every hundredth: a wrong convention shows in every

@@ -1,8 +1,9 @@
 // A map's options on a command line, from its option table (mrpt_plugins/option_table.h), so that
 // each option is written once: the flag's help is the table's documentation with the default the
 // table's struct gives, a value is parsed, scaled and checked as the `.ini` does it, and any other
-// key of the table is reachable with --set KEY=VALUE. No program declares a map option's default
-// or range itself.
+// key of the table is reachable with --set KEY=VALUE; --options FILE reads the options from an
+// .ini first (share/thesis/*.ini: the thesis's settings). No program declares a map option's
+// default or range itself.
 //
 //   apps::TableFlags<IlluminationInvariantMapConfig> flags(
 //       cmd, {{"kappa", "kappa"}, {"zernike_grid", "grid"}});
@@ -38,9 +39,10 @@ class TableFlags {
       const Row& r = RowOf(f.key);
       const std::string help =
           r.entry.doc + " [" + Config::kClass + " option " + f.key +
-          (r.entry.kind == mrpt_plugins::OptionKind::kFlag
-               ? "]"
-               : ", default " + mrpt_plugins::OptionText(r.entry, r.get(defaults)) + "]");
+          (r.entry.kind != mrpt_plugins::OptionKind::kFlag
+               ? ", default " + mrpt_plugins::OptionText(r.entry, r.get(defaults)) + "]"
+           : r.get(defaults) != 0.0 ? ", on by default; --set " + f.key + "=false turns it off]"
+                                    : "]");
       if (r.entry.kind == mrpt_plugins::OptionKind::kFlag) {
         switches_.push_back(std::make_unique<TCLAP::SwitchArg>("", f.flag, help, cmd));
         values_.push_back(nullptr);
@@ -52,6 +54,12 @@ class TableFlags {
         switches_.push_back(nullptr);
       }
     }
+    options_ = std::make_unique<TCLAP::ValueArg<std::string>>(
+        "", "options",
+        std::string("A CMultiMetricMap .ini whose [") + Config::kSection + "] sets options on " +
+            "top of the defaults, before the flags and --set (e.g. share/thesis/*.ini for the " +
+            "thesis's settings)",
+        false, "", "FILE", cmd);
     set_ = std::make_unique<TCLAP::MultiArg<std::string>>(
         "", "set",
         std::string("Any option of ") + Config::kClass +
@@ -62,7 +70,7 @@ class TableFlags {
   /// The defaults with the flags and --set given on top, checked as the `.ini` is. Throws
   /// UsageError naming the flag and why.
   Config Values() const {
-    Config c;
+    Config c = options_->isSet() ? Config::FromFile(options_->getValue()) : Config();
     std::vector<std::string> given;  // keys set so far: a key given twice is a contradiction
     const auto once = [&given](const std::string& key, const std::string& where) {
       if (std::find(given.begin(), given.end(), key) != given.end())
@@ -131,6 +139,7 @@ class TableFlags {
 
   std::vector<Flag> flags_;
   std::vector<std::unique_ptr<TCLAP::SwitchArg>> switches_;
+  std::unique_ptr<TCLAP::ValueArg<std::string>> options_;
   std::vector<std::unique_ptr<TCLAP::ValueArg<std::string>>> values_;
   std::unique_ptr<TCLAP::MultiArg<std::string>> set_;
 };

@@ -42,6 +42,8 @@ namespace novelty::illumination {
 /// Most lightings a map holds (a map file's shapes plane has a channel per lighting).
 inline constexpr int kMaxLightings = 64;
 
+/// Defaults: the thesis's values. CIlluminationInvariantMap's options, which users set, default to
+/// the best measured setting instead (mrpt_plugins/illumination_invariant_map_options.h).
 struct IlluminationMapOptions {
   /// A frame of the first lighting becomes a viewpoint when its camera is at least this far (m)
   /// from the last viewpoint's ...

@@ -25,6 +25,9 @@
 
 namespace novelty::objects {
 
+/// Defaults: the thesis's algorithm (M-SURF, surprise alone). CObjectDatabaseMap's options, which
+/// users set, default to the best measured setting instead (mrpt_plugins/
+/// object_database_map_options.h).
 struct ObjectAcquisitionOptions {
   /// M-SURF (the thesis's SURF), SIFT or AKAZE (feature_extractor.h).
   FeatureExtractor extractor = FeatureExtractor::kMSurf;

@@ -42,7 +42,21 @@ TEST(TableFlags, NothingGivenIsTheTablesDefaults) {
   EXPECT_EQ(c.map.model.kappa, defaults.map.model.kappa);
   EXPECT_EQ(c.map.model.kappa, 0.5);  // eq. 6.18's Lambertian value, the map's default
   EXPECT_EQ(c.map.zernike.grid, defaults.map.zernike.grid);
+  EXPECT_TRUE(c.map.model.missing_texture) << "the best measured setting";
+}
+
+// --options reads a file first (the thesis's settings), then flags and --set go on top; a
+// default-on flag is turned off with --set.
+TEST(TableFlags, AnOptionsFileComesFirstAndFlagsGoOnTop) {
+  const std::string thesis =
+      std::string(NOVELTY_SOURCE_DIR) + "/share/thesis/illumination_invariant.ini";
+  const Config c = Parse({"--options", thesis, "--kappa", "0.2"});
+  EXPECT_EQ(c.map.invariant.colour, illumination::InvariantImageOptions::Colour::kPerChannel);
   EXPECT_FALSE(c.map.model.missing_texture);
+  EXPECT_EQ(c.map.model.kappa, 0.2);
+  EXPECT_FALSE(Parse({"--set", "missing_texture=false"}).map.model.missing_texture);
+  EXPECT_TRUE(Parse({"--options", thesis, "--missing-texture"}).map.model.missing_texture);
+  EXPECT_THROW(Parse({"--options", "/nonexistent.ini"}), std::runtime_error);
 }
 
 TEST(TableFlags, FlagsAndSetReachTheFieldsAsTheIniDoes) {
