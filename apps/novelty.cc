@@ -16,6 +16,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kCommands[][2] = {
+    {"import", "a recorded RGB-D sequence (TUM RGB-D, ICL-NUIM, 7-Scenes) into an MRPT rawlog"},
     {"sim", "simulate a scenario into an MRPT rawlog with ground truth"},
     {"run", "play a rawlog through the maps: surprise, panels, metrics, report"},
     {"depth", "depth maps from a stereo or trinocular rawlog"},

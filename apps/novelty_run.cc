@@ -1,7 +1,7 @@
 // novelty-run: the surprise pipeline (thesis ch. 4) over an RGB-D rawlog, the experiment of
 // thesis 4.3 (experiments/surprise_experiment.h says what it runs and writes).
 //
-//   novelty-run --rawlog DIR/<name>.rawlog --groundtruth DIR/groundtruth --out OUT
+//   novelty-run --rawlog DIR/<name>.rawlog [--groundtruth DIR/groundtruth] --out OUT
 //               [--config share/novelty_run.ini] [--frames N] [--panels-every K]
 //               [--poses groundtruth|rawlog|odometry] [--compare-views 2,4]
 //               [--map-in M] [--map-out M] [--objects-in D] [--objects-from N]
@@ -51,8 +51,10 @@ RunArgs ParseArgs(int argc, char** argv) {
       "rawlog, against image differencing, through MRPT's CMultiMetricMap.",
       "0.1");
   TCLAP::ValueArg<std::string> rawlog("", "rawlog", "RGB-D rawlog", true, "", "R.rawlog", cmd);
-  TCLAP::ValueArg<std::string> truth("", "groundtruth", "Ground-truth folder (poses, masks)", true,
-                                     "", "DIR", cmd);
+  TCLAP::ValueArg<std::string> truth("", "groundtruth",
+                                     "Ground-truth folder (poses, masks): scores the run; without "
+                                     "it, take --poses rawlog or odometry",
+                                     false, "", "DIR", cmd);
   TCLAP::ValueArg<std::string> out("", "out", "Output folder", true, "", "OUT", cmd);
   TCLAP::ValueArg<std::string> config(
       "", "config",
@@ -83,9 +85,9 @@ RunArgs ParseArgs(int argc, char** argv) {
   TCLAP::ValuesConstraint<std::string> allowed_poses(pose_sources);
   TCLAP::ValueArg<std::string> pose_source(
       "", "poses",
-      "Robot poses from the ground truth (default), from the rawlog's pose observations "
-      "(novelty-poses) or from its wheel odometry; the ground truth still gives the evaluation "
-      "masks",
+      "Robot poses from the ground truth (the default with --groundtruth), from the rawlog's pose "
+      "observations (the default without; novelty-import, novelty-poses) or from its wheel "
+      "odometry; the ground truth still gives the evaluation masks",
       false, "groundtruth", &allowed_poses, cmd);
   TCLAP::ValueArg<double> reduction("", "view-reduction",
                                     "Space reference views N times wider than configured: the "
@@ -110,7 +112,8 @@ RunArgs ParseArgs(int argc, char** argv) {
   a.compare_views = compare_views.getValue();
   if (max_frames.isSet()) a.max_frames = max_frames.getValue();
   a.panels_every = panels_every.getValue();
-  a.pose_source = pose_source.getValue();
+  // Without ground truth the rawlog's own poses (novelty-import, novelty-poses) are the default.
+  a.pose_source = pose_source.isSet() || truth.isSet() ? pose_source.getValue() : "rawlog";
   a.reduction = reduction.getValue();
   if (!(a.reduction >= 1.0)) throw std::invalid_argument("--view-reduction must be >= 1");
   if (a.panels_every < 1) throw std::invalid_argument("--panels-every must be >= 1");
@@ -128,10 +131,9 @@ RunArgs ParseArgs(int argc, char** argv) {
   // An existing file there must be an appearance map (an earlier one, or --map-in continued);
   // the default, inside OUT, is OutputFolder's to check.
   if (map_out.isSet())
-    apps::CheckOutputFile("--map-out", a.map_out, {a.rawlog, a.truth, a.config, a.objects_in},
-                          [](const std::string& p) {
-                            return mrpt_plugins::IsMapFileOf(p, "CAppearanceMap");
-                          });
+    apps::CheckOutputFile(
+        "--map-out", a.map_out, {a.rawlog, a.truth, a.config, a.objects_in},
+        [](const std::string& p) { return mrpt_plugins::IsMapFileOf(p, "CAppearanceMap"); });
   return a;
 }
 

@@ -155,7 +155,7 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
   report.Paragraph(summary);
   for (const std::string& note : notes) report.Paragraph(note);
   std::ofstream csv(out + "/findings.csv");
-  if (console)
+  if (console && !findings.empty())
     *console << "Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n";
   eval::FindingsReport findings_report(csv, console);
   findings_report.AddFindings(rows, findings, report);
@@ -219,7 +219,7 @@ struct Played {
 // Plays the rawlog into the maps; per frame the selectivity of every changed region (metrics.csv,
 // and the sparser maps' rows), every K-th panel, progress through the options' callback.
 Played Play(const SurpriseExperimentOptions& a, const std::string& out, RunMaps& maps,
-            const sim::GroundTruthReader& ground_truth, mrpt_plugins::RawlogMapPlayer& player) {
+            const sim::GroundTruthReader* ground_truth, mrpt_plugins::RawlogMapPlayer& player) {
   mrpt_plugins::CAppearanceMap& map = maps.appearance();
   eval::SelectivityCsv csv(out + "/metrics.csv");
   std::optional<eval::ObjectStepsCsv> object_steps;
@@ -229,8 +229,9 @@ Played Play(const SurpriseExperimentOptions& a, const std::string& out, RunMaps&
   Played run;
   int index = 0;
   const auto start = std::chrono::steady_clock::now();
-  const int poses = int(ground_truth.CameraPoses().size());
-  const int total = a.max_frames ? std::min(*a.max_frames, poses) : poses;
+  // Without ground truth the rawlog's length is not known before it is read (0: unknown).
+  const int poses = ground_truth ? int(ground_truth->CameraPoses().size()) : 0;
+  const int total = a.max_frames ? (poses ? std::min(*a.max_frames, poses) : *a.max_frames) : poses;
   while ((!a.max_frames || run.frames < *a.max_frames) && player.Next(maps.multi, index)) {
     // The next frame is index + 1: the object database takes it from --objects-from on.
     if (maps.objects()) maps.objects()->setPaused(index + 1 < a.objects_from);
@@ -241,10 +242,12 @@ Played Play(const SurpriseExperimentOptions& a, const std::string& out, RunMaps&
       objects_used = maps.objects()->framesUsed();
       object_steps->Add(index, maps.objects()->lastStep(), maps.objects()->database().features());
     }
-    for (const auto& [object, region] : ground_truth.ChangedRegions(index, 30)) {
+    const auto regions =
+        ground_truth ? ground_truth->ChangedRegions(index, 30) : std::map<std::string, cv::Mat>{};
+    for (const auto& [object, region] : regions) {
       run.rows.push_back({index, object, eval::AttentionalSelectivity(p.surprise, region),
                           eval::AttentionalSelectivity(d.difference, region)});
-      csv.Add(run.rows.back(), ground_truth.PhaseOf(index));
+      csv.Add(run.rows.back(), ground_truth->PhaseOf(index));
       for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k) {
         maps.sparser_rows[k].push_back(
             {index, object,
@@ -318,25 +321,43 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
                ", with the options saved in it (the .ini's CObjectDatabaseMap options do not "
                "apply)");
   }
-  const sim::GroundTruthReader ground_truth(a.groundtruth);
+  // Scored only where there is ground truth; the run itself needs none.
+  std::optional<sim::GroundTruthReader> ground_truth;
+  if (!a.groundtruth.empty()) ground_truth.emplace(a.groundtruth);
+  const mrpt_plugins::PoseSource pose_source = mrpt_plugins::ParsePoseSource(a.pose_source);
+  if (pose_source == mrpt_plugins::PoseSource::kGroundTruth && !ground_truth)
+    throw std::invalid_argument(
+        "poses from the ground truth need its folder; without one take the rawlog's poses "
+        "(--poses rawlog: novelty-import and novelty-poses write them) or its odometry");
   std::filesystem::create_directories(out + "/panels");
   if (const auto parent = std::filesystem::path(a.map_out).parent_path(); !parent.empty())
     std::filesystem::create_directories(parent);
-  mrpt_plugins::RawlogMapPlayer player(a.rawlog, mrpt_plugins::ParsePoseSource(a.pose_source),
-                                       ground_truth.CameraPoses());
-  const Played run = Play(a, out, maps, ground_truth, player);
+  mrpt_plugins::RawlogMapPlayer player(
+      a.rawlog, pose_source,
+      ground_truth ? ground_truth->CameraPoses() : std::map<int, Eigen::Isometry3d>{});
+  const Played run = Play(a, out, maps, ground_truth ? &*ground_truth : nullptr, player);
   if (run.frames == 0) {  // nothing to report, and a saved map must not be replaced by an empty one
     const auto& reasons = player.skip_reasons();
+    const std::string hint =
+        pose_source == mrpt_plugins::PoseSource::kRawlog && !reasons.empty()
+            ? "; --poses rawlog needs pose observations: novelty-import and novelty-poses write "
+              "them; a simulator's rawlog: --groundtruth DIR"
+            : "";
     throw std::runtime_error(a.rawlog + ": no frame was inserted into the maps (" +
                              (reasons.empty() ? std::string("no camera observation")
                                               : eval::SkippedFramesSummary(0, reasons)) +
-                             ")");
+                             hint + ")");
   }
   SurpriseExperimentResult r;
   r.notes = SkipNotes(a, player, run.frames);
-  WriteReport(out, run.rows, ground_truth.Phases(),
-              ThesisFindings(ground_truth.Phases(), ground_truth.CameraPoses()), maps,
-              run.panel_frames, run.frames, run.seconds, map.map().store().size(), r.notes,
+  if (!ground_truth)
+    r.notes.push_back("No ground truth given: products, panels and the map; nothing is scored.");
+  const std::vector<sim::GroundTruthReader::Phase> phases =
+      ground_truth ? ground_truth->Phases() : std::vector<sim::GroundTruthReader::Phase>{};
+  WriteReport(out, run.rows, phases,
+              ground_truth ? ThesisFindings(phases, ground_truth->CameraPoses())
+                           : std::vector<eval::Finding>{},
+              maps, run.panel_frames, run.frames, run.seconds, map.map().store().size(), r.notes,
               a.console);
   if (!a.map_out.empty()) map.SaveToFile(a.map_out);
   map.SaveSceneFile(out + "/map.3Dscene");  // for SceneViewer3D

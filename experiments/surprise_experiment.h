@@ -30,8 +30,10 @@
 namespace novelty::experiments {
 
 struct SurpriseExperimentOptions {
-  std::string rawlog;       ///< an RGB-D rawlog
-  std::string groundtruth;  ///< novelty-sim's folder: poses, novelty masks, phases
+  std::string rawlog;  ///< an RGB-D rawlog
+  /// novelty-sim's folder: poses, novelty masks, phases; empty: nothing is scored (the products,
+  /// panels, report and map all the same), and the poses come from the rawlog or odometry.
+  std::string groundtruth;
   /// The maps as a CMultiMetricMap .ini; empty: one CAppearanceMap and one CDifferencingMap with
   /// their defaults.
   std::string config;

@@ -4,11 +4,14 @@
 // usually show: the camera ends up steeply tilted or rolled (looking into the floor), below the
 // floor, or it jumps between frames farther than a robot moves; or the robot pose itself sits at
 // the sensor's height with the sensor's tilt (it is robot ⊕ sensorPose, a ground robot's pose is
-// at the floor and level). Each is reported, never refused: a handheld or ceiling camera may be
-// fine (a limit or tolerance of 0 turns its check off; min_height: a large negative height).
+// at the floor and level). Each is reported, never refused. What is implausible depends on what
+// carries the camera (`platform`): a ground robot gets every check, a hand-held camera only the
+// speed and turn checks (a hand tilts and lowers it anywhere), a fixed camera a warning whenever
+// it moves; a limit or tolerance of 0 turns its check off.
 #pragma once
 
 #include <Eigen/Geometry>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -17,7 +20,12 @@
 
 namespace novelty::mrpt_plugins {
 
+enum class CameraPlatform { kGroundRobot, kHandHeld, kFixed };
+
 struct PoseCheckOptions {
+  /// What carries the camera: which checks apply (ground-robot: all; hand-held: max_speed and
+  /// max_turn_rate; fixed: a move of more than 1 cm or 1 degree from the first pose).
+  CameraPlatform platform = CameraPlatform::kGroundRobot;
   /// m/s; consecutive frames farther apart than this allows (over their time difference, at
   /// least 0.1 s) are a jump. A Pioneer 3-DX drives at most 1.2 m/s.
   double max_speed = 2.0;
@@ -34,7 +42,7 @@ struct PoseCheckOptions {
   double sensor_pose_tolerance = 0.02;
 };
 
-/// max_speed, max_turn_rate_deg, max_tilt_deg, min_height, sensor_pose_tolerance.
+/// platform, max_speed, max_turn_rate_deg, max_tilt_deg, min_height, sensor_pose_tolerance.
 const OptionTable<PoseCheckOptions>& PoseCheckOptionTable();
 
 class PoseCheck {
@@ -54,7 +62,7 @@ class PoseCheck {
   std::string Check(const Eigen::Isometry3d& T_world_cam, double time,
                     const std::optional<Mount>& mount = std::nullopt);
   /// Forget the last pose (a new run, a cleared map).
-  void Reset() { last_.reset(); }
+  void Reset() { last_.reset(), first_.reset(); }
 
   int warnings() const { return warnings_; }
   const PoseCheckOptions& options() const { return options_; }
@@ -64,8 +72,13 @@ class PoseCheck {
     Eigen::Isometry3d T_world_cam;
     double time;
   };
+  void AddGroundRobotProblems(const Eigen::Isometry3d& T_world_cam,
+                              const std::optional<Mount>& mount,
+                              const std::function<void(const std::string&)>& add) const;
+
   PoseCheckOptions options_;
   std::optional<Last> last_;
+  std::optional<Eigen::Isometry3d> first_;  // a fixed camera's pose
   int warnings_ = 0;
 };
 

@@ -201,8 +201,8 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     if (problem.empty() || (n > 3 && n % 100 != 0)) return;
     MRPT_LOG_WARN_FMT(
         "implausible camera pose (%d so far): %s. insertObservation takes the robot's pose; the "
-        "camera is at robot_pose + sensorPose (limits: the map's max_speed, max_tilt_deg, ... "
-        "options)",
+        "camera is at robot_pose + sensorPose (limits: the map's platform, max_speed, "
+        "max_tilt_deg, ... options; a hand-held camera: platform = hand-held)",
         n, problem.c_str());
   }
   bool internal_insertObservation(

@@ -5,6 +5,9 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
+
+#include "sensors/dataset/pose_line.h"
 
 namespace novelty::sensors {
 
@@ -14,26 +17,7 @@ RgbdFolderReader::RgbdFolderReader(const std::string& folder, const core::Pinhol
   camera_.Check();
   if (!(depth_scale > 0)) throw std::invalid_argument("RgbdFolderReader: depth scale must be > 0");
   const std::string path = folder + "/pose.txt";
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open");
-  std::string line;
-  for (int n = 1; std::getline(in, line); ++n) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    std::istringstream s(line);
-    double tx, ty, tz, qx, qy, qz, qw;
-    if (!(s >> tx >> ty >> tz >> qx >> qy >> qz >> qw)) {
-      throw std::runtime_error(path + ":" + std::to_string(n) +
-                               ": expected 'tx ty tz qx qy qz qw'");
-    }
-    const Eigen::Quaterniond q(qw, qx, qy, qz);
-    if (std::abs(q.norm() - 1.0) > 1e-3) {
-      throw std::runtime_error(path + ":" + std::to_string(n) + ": quaternion is not unit length");
-    }
-    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.linear() = q.normalized().toRotationMatrix();
-    T.translation() = Eigen::Vector3d(tx, ty, tz);
-    poses_.push_back(T);
-  }
+  poses_ = ReadPoseLines(path);
   if (poses_.empty()) throw std::runtime_error(path + ": no poses");
 }
 

@@ -97,6 +97,37 @@ TEST(PoseCheck, TheSensorPosePassedAsTheRobotPoseIsReported) {
 }
 
 // Each limit is range-checked when read from an .ini; negative limits are refused.
+// A hand-held camera looking down at a table 0.3 m below the floor's level of the world it was
+// recorded in (TUM's motion capture puts z = 0 anywhere): the tilt and height checks are a ground
+// robot's, the speed check stays; a fixed camera is told only that it moved.
+TEST(PoseCheck, ThePlatformChoosesTheChecks) {
+  Eigen::Isometry3d down = Robot(0, 0, 0) * RobotFromCamera(80.0 * M_PI / 180.0);
+  down.translation().z() = -0.3;
+  Eigen::Isometry3d far = down;
+  far.translation().x() += 5.0;  // 5 m in 0.1 s
+  PoseCheck robot;
+  EXPECT_NE(robot.Check(down, 0.0).find("tilted 80 deg"), std::string::npos);
+  PoseCheckOptions hand;
+  hand.platform = CameraPlatform::kHandHeld;
+  PoseCheck hand_held(hand);
+  EXPECT_EQ(hand_held.Check(down, 0.0), "");
+  EXPECT_NE(hand_held.Check(far, 0.1).find("camera moved 5.00 m"), std::string::npos);
+  PoseCheckOptions fixed;
+  fixed.platform = CameraPlatform::kFixed;
+  PoseCheck fixed_camera(fixed);
+  EXPECT_EQ(fixed_camera.Check(down, 0.0), "");
+  Eigen::Isometry3d nudged = down;
+  nudged.translation().y() += 0.005;  // 5 mm: within 1 cm
+  EXPECT_EQ(fixed_camera.Check(nudged, 10.0), "");
+  EXPECT_NE(fixed_camera.Check(far, 20.0).find("a fixed camera moved 5.000 m"), std::string::npos);
+  EXPECT_EQ(fixed_camera.warnings(), 1);
+  // From an .ini, by name.
+  PoseCheckOptions read;
+  PoseCheckOptionTable().Load(mrpt::config::CConfigFileMemory("[s]\nplatform = hand-held\n"), "s",
+                              "test.ini", read);
+  EXPECT_EQ(read.platform, CameraPlatform::kHandHeld);
+}
+
 TEST(PoseCheck, NegativeLimitsAreRefused) {
   for (const char* key :
        {"max_speed", "max_turn_rate_deg", "max_tilt_deg", "sensor_pose_tolerance"}) {

@@ -1,0 +1,47 @@
+// Writes a recorded RGB-D sequence (rgbd_sequence.h) as an MRPT rawlog the maps read: per frame
+// a CObservation3DRangeScan (colour and depth stored externally in NAME_Images/, depth in metres)
+// and, where the dataset gives the camera's pose, a CObservationRobotPose "POSE_DATASET" just
+// before it (camera_pose_observation.h), so that `novelty-run --poses rawlog` and the other
+// programs take it and rawlog-edit and RawLogViewer open it. The camera is mounted on the "robot"
+// looking along its x axis (MRPT's optical frame: +Z forward, +X right, +Y down), so a hand-held
+// camera's pose is the robot's.
+//
+// Every image's size is read from its header and checked against the camera (and the pixel
+// limit) before it is decoded; colour must be 8-bit, depth 16-bit one channel. A frame whose
+// files are missing, unreadable or of another size is an error naming the file, and nothing is
+// published (the rawlog is written to a temporary and renamed at the end).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <functional>
+#include <string>
+
+#include "core/eigen_abi.h"
+#include "sensors/dataset/image_header.h"
+#include "sensors/dataset/rgbd_sequence.h"
+
+namespace novelty::sensors {
+
+struct RgbdImportOptions {
+  int first = 1, last = 0;  ///< frames to write, 1-based inclusive; last 0: to the end
+  int every = 1;            ///< every k-th of them
+  long long max_pixels = kDefaultMaxImagePixels;
+  /// Told frames written of the total.
+  std::function<void(int done, int total)> progress;
+};
+
+struct RgbdImportResult {
+  int frames = 0;               ///< RGB-D observations written
+  int posed = 0;                ///< of them with a pose observation
+  double depth_coverage = 0.0;  ///< share of depth pixels known (> 0), over all frames
+};
+
+/// The camera's mounting written with every frame: optical axis along the robot's x.
+Eigen::Isometry3d HandHeldMount();
+
+/// Writes `sequence` to `rawlog` (…/NAME.rawlog). Throws std::runtime_error naming the file or
+/// frame; std::invalid_argument for a bad option.
+RgbdImportResult ImportRgbdSequence(const RgbdSequence& sequence, const std::string& rawlog,
+                                    const RgbdImportOptions& options = {});
+
+}  // namespace novelty::sensors
