@@ -179,6 +179,12 @@ int Run(int argc, char** argv) {
       "  map:     %s (%s)\n  report:  %s/report.html\n",
       r.frames, r.skipped, r.seconds, out.c_str(), a.map_out.c_str(), r.map_summary.c_str(),
       out.c_str());
+  if (r.prediction.frames > 0)
+    std::printf(
+        "  predicted: median coverage %.1f %%, PSNR of the expected image %.1f dB, surprise "
+        "%.2f nats (95th percentile %.2f) — %s/frames.csv\n",
+        100 * r.prediction.median_coverage, r.prediction.median_psnr_db,
+        r.prediction.median_mean_surprise, r.prediction.median_p95_surprise, out.c_str());
   if (r.mean_warp_sigma_px > 0.0)
     std::printf("  warp-error floor: s = %.2f px on average over the frames\n",
                 r.mean_warp_sigma_px);

@@ -23,6 +23,7 @@
 #include "eval/html_report.h"
 #include "eval/novelty_panel.h"
 #include "eval/object_steps_csv.h"
+#include "eval/prediction_quality.h"
 #include "eval/selectivity_csv.h"
 #include "eval/selectivity_findings.h"
 #include "eval/skipped_frames.h"
@@ -142,18 +143,59 @@ std::vector<eval::Finding> ThesisFindings(const std::vector<sim::GroundTruthRead
   return findings;
 }
 
-void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>& rows,
+// What a run gathered for the report.
+struct Played {
+  std::vector<eval::SelectivityRow> rows;
+  std::vector<int> panel_frames;
+  int frames = 0;
+  double seconds = 0.0;
+  double warp_sigma_sum = 0.0;   // the appearance map's floor s (px), summed over frames
+  double aligned_deg_sum = 0.0;  // align_to_prior: the rotations applied (deg), summed
+  int aligned_frames = 0;
+  std::vector<int> judged;  // frame numbers, with how well each was predicted
+  std::vector<eval::PredictionQuality> prediction;
+};
+
+// The prediction's quality per frame in the report: a sentence of medians and two plots.
+void ReportPrediction(const Played& run, eval::HtmlReport& report) {
+  const eval::PredictionSummary m = eval::SummarisePrediction(run.prediction);
+  if (m.frames == 0) return;
+  report.Heading("Prediction (frames.csv)");
+  report.Paragraph(cv::format(
+      "Over the %d frames the map predicted: median coverage %.1f %% of the pixels, PSNR of the "
+      "expected image %.1f dB over them, surprise %.2f nats mean and %.2f nats at the 95th "
+      "percentile (on an unchanged scene: the false-surprise level).",
+      m.frames, 100 * m.median_coverage, m.median_psnr_db, m.median_mean_surprise,
+      m.median_p95_surprise));
+  eval::PlotSeries psnr{"PSNR of the expected image", "#0072b2", {}, 1.0},
+      coverage{"coverage (%)", "#009e73", {}, 1.0}, mean{"mean surprise", "#c0392b", {}, 1.0},
+      p95{"95th percentile", "#cc79a7", {}, 1.0};
+  for (std::size_t k = 0; k < run.prediction.size(); ++k) {
+    const double f = run.judged[k];
+    const eval::PredictionQuality& q = run.prediction[k];
+    psnr.points.push_back({f, q.psnr_db});
+    coverage.points.push_back({f, 100 * q.coverage});
+    mean.points.push_back({f, q.mean_surprise});
+    p95.points.push_back({f, q.p95_surprise});
+  }
+  report.Raw(
+      eval::SvgLinePlot("Expected image against the frame", "frame", "dB, %", {psnr, coverage}));
+  report.Raw(eval::SvgLinePlot("Surprise over the predicted pixels", "frame", "nats", {mean, p95}));
+}
+
+void WriteReport(const std::string& out, const Played& run,
                  const std::vector<sim::GroundTruthReader::Phase>& phases,
-                 const std::vector<eval::Finding>& findings, const RunMaps& maps,
-                 const std::vector<int>& panel_frames, int frames, double seconds, int views,
+                 const std::vector<eval::Finding>& findings, const RunMaps& maps, int views,
                  const std::vector<std::string>& notes, std::ostream* console) {
+  const std::vector<eval::SelectivityRow>& rows = run.rows;
   eval::HtmlReport report("NoveltyMaps — Bayesian surprise vs image differencing");
   char summary[256];
   std::snprintf(summary, sizeof summary,
                 "%d frames in %.1f s (%.1f frames/s); %d reference views in the map at the end.",
-                frames, seconds, frames / seconds, views);
+                run.frames, run.seconds, run.frames / run.seconds, views);
   report.Paragraph(summary);
   for (const std::string& note : notes) report.Paragraph(note);
+  ReportPrediction(run, report);
   std::ofstream csv(out + "/findings.csv");
   if (console && !findings.empty())
     *console << "Findings of thesis 4.3 (surprise vs differencing, first run after each change):\n";
@@ -200,21 +242,10 @@ void WriteReport(const std::string& out, const std::vector<eval::SelectivityRow>
                  table);
   }
   report.Heading("Panels: camera | expected (τ) | surprise | uncertainty Σβ | differencing");
-  for (int f : panel_frames)
+  for (int f : run.panel_frames)
     report.Image("panels/" + core::FrameStem(f) + ".png", "frame " + std::to_string(f));
   report.Save(out + "/report.html");
 }
-
-// What a run gathered for the report.
-struct Played {
-  std::vector<eval::SelectivityRow> rows;
-  std::vector<int> panel_frames;
-  int frames = 0;
-  double seconds = 0.0;
-  double warp_sigma_sum = 0.0;   // the appearance map's floor s (px), summed over frames
-  double aligned_deg_sum = 0.0;  // align_to_prior: the rotations applied (deg), summed
-  int aligned_frames = 0;
-};
 
 // Plays the rawlog into the maps; per frame the selectivity of every changed region (metrics.csv,
 // and the sparser maps' rows), every K-th panel, progress through the options' callback.
@@ -238,6 +269,9 @@ Played Play(const SurpriseExperimentOptions& a, const std::string& out, RunMaps&
     const appearance::AppearanceProducts& p = map.lastProducts();
     const appearance::DifferencingProducts& d = maps.differencing().lastProducts();
     ++run.frames;
+    run.judged.push_back(index);
+    run.prediction.push_back(
+        eval::MeasurePrediction(map.lastFrame().rgb, p.expected_rgb, p.valid, p.surprise));
     if (object_steps && maps.objects()->framesUsed() != objects_used) {
       objects_used = maps.objects()->framesUsed();
       object_steps->Add(index, maps.objects()->lastStep(), maps.objects()->database().features());
@@ -354,11 +388,12 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
     r.notes.push_back("No ground truth given: products, panels and the map; nothing is scored.");
   const std::vector<sim::GroundTruthReader::Phase> phases =
       ground_truth ? ground_truth->Phases() : std::vector<sim::GroundTruthReader::Phase>{};
-  WriteReport(out, run.rows, phases,
+  WriteReport(out, run, phases,
               ground_truth ? ThesisFindings(phases, ground_truth->CameraPoses())
                            : std::vector<eval::Finding>{},
-              maps, run.panel_frames, run.frames, run.seconds, map.map().store().size(), r.notes,
-              a.console);
+              maps, map.map().store().size(), r.notes, a.console);
+  eval::WritePredictionCsv(out + "/frames.csv", run.judged, run.prediction);
+  r.prediction = eval::SummarisePrediction(run.prediction);
   if (!a.map_out.empty()) map.SaveToFile(a.map_out);
   map.SaveSceneFile(out + "/map.3Dscene");  // for SceneViewer3D
   if (const mrpt_plugins::CObjectDatabaseMap* objects = maps.objects()) {

@@ -12,6 +12,9 @@
 //                      objects and the arm by id, "removed" where objects were taken)
 //   findings.csv       the findings of thesis 4.3, each over the first run after its change, with
 //                      its numbers and whether it holds (fig. 4.13 too with compare_views)
+//   frames.csv         frame,coverage,psnr_db,mean_surprise,p95_surprise: how well the map
+//                      predicted each frame (eval/prediction_quality.h), with or without ground
+//                      truth (metrics.csv and findings.csv need it)
 //   report.html        the findings, plots of AS/PAS over frames, a table per object and phase,
 //                      panels
 //   map.3Dscene        the reference-view frusta, for SceneViewer3D
@@ -25,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/prediction_quality.h"
 #include "eval/selectivity_findings.h"
 
 namespace novelty::experiments {
@@ -70,6 +74,9 @@ struct SurpriseExperimentResult {
   double mean_warp_sigma_px = 0.0;         ///< the learnt warp-error floor s (0: off)
   int aligned_frames = 0;                  ///< align_to_prior: frames it turned
   double mean_aligned_deg = 0.0;
+  /// How well the map predicted the frames (frames.csv per frame): medians of coverage, PSNR of
+  /// the expected image and the surprise level, ground truth or not.
+  eval::PredictionSummary prediction;
 };
 
 /// "2,4" -> {2, 4}; throws std::invalid_argument unless each is a finite factor >= 1 (at most 8).

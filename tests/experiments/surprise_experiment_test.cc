@@ -79,6 +79,30 @@ TEST_F(SurpriseRun, TheBlackCupIsDetectedByBothAndTheRunWritesItsFiles) {
   loaded.LoadFromFile(o.map_out);
   EXPECT_EQ(loaded.map().store().size(), r.views);
   EXPECT_FALSE(fs::is_empty(fs::path(out) / "panels"));
+  // frames.csv: how well each frame was predicted; the simulator's exact poses and depth cover
+  // what the main job's findings are read over (0.926, README) less the clip's first frames.
+  EXPECT_EQ(Lines(fs::path(out) / "frames.csv").size(), 103u);
+  EXPECT_EQ(r.prediction.frames, 101) << "every frame but the first";
+  EXPECT_GT(r.prediction.median_coverage, 0.9);
+}
+
+// Without ground truth: the same run from the rawlog's wheel odometry, nothing scored (a
+// findings.csv of its header, no metrics rows), the prediction measured all the same.
+TEST_F(SurpriseRun, RunsWithoutGroundTruth) {
+  SurpriseExperimentOptions o = Options();
+  o.groundtruth.clear();
+  EXPECT_THROW(RunSurpriseExperiment(o, Out("refused")), std::invalid_argument)
+      << "poses from a ground truth that is not there";
+  o.pose_source = "odometry";
+  const std::string out = Out("no_truth");
+  const SurpriseExperimentResult r = RunSurpriseExperiment(o, out);
+  EXPECT_EQ(r.frames, 102);
+  EXPECT_TRUE(r.rows.empty());
+  EXPECT_EQ(Lines(fs::path(out) / "findings.csv").size(), 1u);
+  EXPECT_EQ(Lines(fs::path(out) / "frames.csv").size(), 103u);
+  EXPECT_GT(r.prediction.frames, 90);
+  ASSERT_FALSE(r.notes.empty());
+  EXPECT_NE(r.notes.back().find("No ground truth"), std::string::npos);
 }
 
 // fig. 4.13: maps with sparser reference views run side by side and hold fewer views.
