@@ -2,7 +2,8 @@
 // (sensors/dataset/rgbd_sequence.h, rgbd_importer.h).
 //
 //   novelty-import DIR --out OUT.rawlog [--layout auto|tum|icl-nuim|7scenes]
-//       [--camera fr1|fr2|fr3|icl-nuim|7scenes | --fx FX --fy FY --cx CX --cy CY]
+//       [--camera fr1|fr2|fr3|icl-nuim|7scenes | --camera-file FILE | --fx FX --fy FY --cx CX
+//        --cy CY]
 //       [--depth-scale S] [--max-time-difference 0.02] [--first N] [--last N] [--every K]
 //       [--max-pixels N]
 //
@@ -22,6 +23,7 @@
 #include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
 #include "apps/shell/progress.h"
+#include "sensors/dataset/camera_file.h"
 #include "sensors/dataset/rgbd_importer.h"
 
 using namespace novelty;
@@ -43,6 +45,11 @@ int Run(int argc, char** argv) {
       "Intrinsics by name: fr1, fr2, fr3 (TUM), icl-nuim, 7scenes (default: the layout's, or "
       "TUM's from the folder name)",
       false, "", "NAME", cmd);
+  TCLAP::ValueArg<std::string> camera_file(
+      "", "camera-file",
+      "Intrinsics from a ROS camera_info YAML (.yaml) or an MRPT camera .ini ([CAMERA_PARAMS]); "
+      "no distortion",
+      false, "", "FILE", cmd);
   TCLAP::ValueArg<double> fx("", "fx", "Focal length x (px); with --fy --cx --cy", false, 0, "FX",
                              cmd);
   TCLAP::ValueArg<double> fy("", "fy", "Focal length y (px, negative if y points up)", false, 0,
@@ -73,14 +80,26 @@ int Run(int argc, char** argv) {
   const int intrinsics = fx.isSet() + fy.isSet() + cx.isSet() + cy.isSet();
   if (intrinsics != 0 && intrinsics != 4)
     throw apps::UsageError("give all of --fx --fy --cx --cy, or none");
+  if (intrinsics + camera.isSet() + camera_file.isSet() > (intrinsics ? 4 : 1))
+    throw apps::UsageError(
+        "give the intrinsics once: --camera, --camera-file or --fx --fy --cx --cy");
   if (intrinsics == 4) {
     core::PinholeCamera c;
     c.fx = fx.getValue(), c.fy = fy.getValue(), c.cx = cx.getValue(), c.cy = cy.getValue();
+    c.width = c.height = 1;  // the images' size is taken
+    c.Check();
     o.camera = c;
-    if (o.camera_name.empty()) o.camera_name = "fr1";  // any: the intrinsics given replace it
   }
+  if (camera_file.isSet()) o.camera = sensors::ReadCameraFile(camera_file.getValue());
+  if (o.camera && o.camera_name.empty()) o.camera_name = "fr1";  // replaced by the given ones
   apps::CheckOutputFile("--out", out.getValue(), {in.getValue()}, apps::HasExtension(".rawlog"));
   const sensors::RgbdSequence s = sensors::ReadRgbdSequence(in.getValue(), o);
+  if (camera_file.isSet() &&
+      (s.camera.width != o.camera->width || s.camera.height != o.camera->height))
+    throw std::runtime_error(
+        camera_file.getValue() + ": calibrated at " + std::to_string(o.camera->width) + "x" +
+        std::to_string(o.camera->height) + ", the images are " + std::to_string(s.camera.width) +
+        "x" + std::to_string(s.camera.height));
   std::fprintf(stderr,
                "[novelty-import] %s: %zu frames (%s layout, %dx%d, fx %.1f), %d colour images "
                "without depth, %d frames without a pose\n",
