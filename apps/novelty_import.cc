@@ -15,9 +15,12 @@
 // Nothing is written when the import fails.
 #include <tclap/CmdLine.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "apps/command_line.h"
 #include "apps/shell/output_folder.h"
@@ -25,10 +28,69 @@
 #include "apps/shell/progress.h"
 #include "sensors/dataset/camera_file.h"
 #include "sensors/dataset/rgbd_importer.h"
+#include "sensors/rawlog/rawlog_input.h"
+#include "sensors/rawlog/rgbd_observation.h"
 
 using namespace novelty;
 
 namespace {
+
+void CheckFlag(bool ok, const std::string& message) {
+  if (!ok) throw apps::UsageError(message);
+}
+
+// The intrinsics from one of --camera, --camera-file or --fx --fy --cx --cy (or the layout's).
+void SetCamera(const TCLAP::ValueArg<std::string>& name, const TCLAP::ValueArg<std::string>& file,
+               const std::vector<const TCLAP::ValueArg<double>*>& k,
+               sensors::RgbdSequenceOptions& o) {
+  int given = 0;
+  for (const auto* a : k) given += a->isSet();
+  CheckFlag(given == 0 || given == 4, "give all of --fx --fy --cx --cy, or none");
+  CheckFlag(given / 4 + name.isSet() + file.isSet() <= 1,
+            "give the intrinsics once: --camera, --camera-file or --fx --fy --cx --cy");
+  o.camera_name = name.getValue();
+  if (name.isSet()) {
+    try {
+      sensors::NamedCamera(name.getValue());
+    } catch (const std::invalid_argument& e) {
+      throw apps::UsageError(std::string("--camera ") + e.what());
+    }
+  }
+  if (given == 4) {
+    core::PinholeCamera c;
+    c.fx = k[0]->getValue(), c.fy = k[1]->getValue(), c.cx = k[2]->getValue();
+    c.cy = k[3]->getValue();
+    o.camera = c;
+    o.camera_source = "--fx --fy --cx --cy";
+  }
+  if (file.isSet()) {
+    o.camera = sensors::ReadCameraFile(file.getValue());
+    o.camera_source = file.getValue();
+  }
+  if (o.camera && o.camera_name.empty()) o.camera_name = "fr1";  // replaced by the given ones
+}
+
+// OUT may replace an earlier rawlog only; its images folder must not be, hold or lie in the
+// input (a sequence folder named like OUT_Images would be written into).
+void CheckOutput(const std::string& out, const std::string& in) {
+  apps::CheckOutputFile("--out", out, {in}, [](const std::string& p) {
+    try {
+      return sensors::RawlogInput(p).Next() != nullptr;
+    } catch (const std::exception&) {
+      return false;
+    }
+  });
+  namespace fs = std::filesystem;
+  const fs::path images = fs::weakly_canonical(sensors::ImagesDirOf(out));
+  const fs::path input = fs::weakly_canonical(in);
+  const auto within = [](const fs::path& inner, const fs::path& outer) {
+    const auto [end, _] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
+    return end == outer.end();
+  };
+  if (within(images, input) || within(input, images))
+    throw std::runtime_error("--out " + out + ": its images folder " + images.string() +
+                             " would be written into the input " + in);
+}
 
 int Run(int argc, char** argv) {
   apps::CommandLine cmd(
@@ -71,28 +133,26 @@ int Run(int argc, char** argv) {
                                         "Largest image accepted (pixels, read from the header)",
                                         false, import_defaults.max_pixels, "N", cmd);
   cmd.Parse(argc, argv);
-
+  // Every flag is checked before anything is read: a bad value is a usage error naming it.
+  CheckFlag(every.getValue() >= 1, "--every must be >= 1");
+  CheckFlag(first.getValue() >= 1, "--first must be >= 1");
+  CheckFlag(last.getValue() == 0 || last.getValue() >= first.getValue(),
+            "--last must be 0 (to the end) or >= --first");
+  CheckFlag(max_pixels.getValue() >= 1, "--max-pixels must be >= 1");
+  CheckFlag(max_dt.getValue() >= 0 && max_dt.getValue() <= 1,
+            "--max-time-difference must be in [0, 1] s");
+  CheckFlag(!scale.isSet() || (scale.getValue() >= 1 && scale.getValue() <= 1e6),
+            "--depth-scale must be in [1, 1e6] units per metre");
+  CheckFlag(layout.getValue() == "auto" || layout.getValue() == "tum" ||
+                layout.getValue() == "icl-nuim" || layout.getValue() == "7scenes",
+            "--layout must be auto, tum, icl-nuim or 7scenes");
   sensors::RgbdSequenceOptions o;
   o.layout = layout.getValue();
-  o.camera_name = camera.getValue();
   o.max_time_difference = max_dt.getValue();
   o.depth_scale = scale.getValue();
-  const int intrinsics = fx.isSet() + fy.isSet() + cx.isSet() + cy.isSet();
-  if (intrinsics != 0 && intrinsics != 4)
-    throw apps::UsageError("give all of --fx --fy --cx --cy, or none");
-  if (intrinsics + camera.isSet() + camera_file.isSet() > (intrinsics ? 4 : 1))
-    throw apps::UsageError(
-        "give the intrinsics once: --camera, --camera-file or --fx --fy --cx --cy");
-  if (intrinsics == 4) {
-    core::PinholeCamera c;
-    c.fx = fx.getValue(), c.fy = fy.getValue(), c.cx = cx.getValue(), c.cy = cy.getValue();
-    c.width = c.height = 1;  // the images' size is taken
-    c.Check();
-    o.camera = c;
-  }
-  if (camera_file.isSet()) o.camera = sensors::ReadCameraFile(camera_file.getValue());
-  if (o.camera && o.camera_name.empty()) o.camera_name = "fr1";  // replaced by the given ones
-  apps::CheckOutputFile("--out", out.getValue(), {in.getValue()}, apps::HasExtension(".rawlog"));
+  SetCamera(camera, camera_file, {&fx, &fy, &cx, &cy}, o);
+  CheckOutput(out.getValue(), in.getValue());
+
   const sensors::RgbdSequence s = sensors::ReadRgbdSequence(in.getValue(), o);
   if (camera_file.isSet() &&
       (s.camera.width != o.camera->width || s.camera.height != o.camera->height))
@@ -100,11 +160,6 @@ int Run(int argc, char** argv) {
         camera_file.getValue() + ": calibrated at " + std::to_string(o.camera->width) + "x" +
         std::to_string(o.camera->height) + ", the images are " + std::to_string(s.camera.width) +
         "x" + std::to_string(s.camera.height));
-  std::fprintf(stderr,
-               "[novelty-import] %s: %zu frames (%s layout, %dx%d, fx %.1f), %d colour images "
-               "without depth, %d frames without a pose\n",
-               in.getValue().c_str(), s.frames.size(), s.layout.c_str(), s.camera.width,
-               s.camera.height, s.camera.fx, s.unmatched_rgb, s.unposed);
   sensors::RgbdImportOptions io;
   io.first = first.getValue(), io.last = last.getValue(), io.every = every.getValue();
   io.max_pixels = max_pixels.getValue();
@@ -115,8 +170,14 @@ int Run(int argc, char** argv) {
   };
   const sensors::RgbdImportResult r = sensors::ImportRgbdSequence(s, out.getValue(), io);
   if (progress) progress->Finish();
-  std::printf("%d RGB-D frames, %d with a pose, depth known at %.1f %% of the pixels → %s\n",
-              r.frames, r.posed, 100 * r.depth_coverage, out.getValue().c_str());
+  std::printf(
+      "%s: %zu frames (%s layout, %dx%d, fx %.1f from %s), %d colour images without depth, %d "
+      "frames without a pose\n%d RGB-D frames, %d with a pose, depth known at %.1f %% of the "
+      "pixels (%lld beyond the rawlog's %.1f m, stored as unknown) → %s\n",
+      in.getValue().c_str(), s.frames.size(), s.layout.c_str(), s.camera.width, s.camera.height,
+      s.camera.fx, s.camera_source.c_str(), s.unmatched_rgb, s.unposed, r.frames, r.posed,
+      100 * r.depth_coverage, r.beyond_range, double(sensors::kRgbdMaxDepth),
+      out.getValue().c_str());
   return apps::kExitOk;
 }
 

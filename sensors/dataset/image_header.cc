@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/regular_file.h"
+
 namespace novelty::sensors {
 namespace {
 
@@ -76,9 +78,44 @@ ImageHeader Bmp(const std::string& path, const std::vector<unsigned char>& h) {
   return r;
 }
 
+// The file's last `n` bytes (fewer if it is shorter).
+std::vector<unsigned char> Tail(std::ifstream& in, std::size_t n) {
+  in.clear();
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const std::streamoff from = size > std::streamoff(n) ? size - std::streamoff(n) : 0;
+  std::vector<unsigned char> t(std::size_t(size - from));
+  in.seekg(from);
+  in.read(reinterpret_cast<char*>(t.data()), std::streamsize(t.size()));
+  return t;
+}
+
+// A file cut short decodes without an error in OpenCV (the rest grey, a libjpeg warning): its
+// end is checked — PNG's IEND chunk, JPEG's EOI marker (trailing zero padding allowed), BMP's
+// size as its header states it.
+void CheckComplete(const std::string& path, std::ifstream& in, const std::vector<unsigned char>& h,
+                   char format) {
+  if (format == 'P') {
+    const std::vector<unsigned char> t = Tail(in, 12);
+    if (t.size() < 12 || std::string(t.begin() + 4, t.begin() + 8) != "IEND")
+      Fail(path, "PNG cut short (no IEND chunk at its end)");
+  } else if (format == 'J') {
+    std::vector<unsigned char> t = Tail(in, 4096);
+    while (!t.empty() && t.back() == 0) t.pop_back();
+    if (t.size() < 2 || t[t.size() - 2] != 0xFF || t.back() != 0xD9)
+      Fail(path, "JPEG cut short (no end-of-image marker)");
+  } else if (format == 'B') {
+    in.clear();
+    in.seekg(0, std::ios::end);
+    if (std::uint64_t(in.tellg()) < LittleEndian(&h[2], 4))
+      Fail(path, "BMP cut short (smaller than its header says)");
+  }
+}
+
 }  // namespace
 
 ImageHeader ReadImageHeader(const std::string& path) {
+  core::CheckRegularFile(path, std::uintmax_t(1) << 31);
   std::ifstream in(path, std::ios::binary);
   if (!in) Fail(path, "cannot open");
   std::vector<unsigned char> h(32, 0);
@@ -86,15 +123,17 @@ ImageHeader ReadImageHeader(const std::string& path) {
   h.resize(std::size_t(in.gcount()));
   in.clear();
   ImageHeader r;
+  char format = 0;
   static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   if (h.size() >= 8 && std::equal(kPng, kPng + 8, h.begin()))
-    r = Png(path, h);
+    r = Png(path, h), format = 'P';
   else if (h.size() >= 3 && h[0] == 0xFF && h[1] == 0xD8 && h[2] == 0xFF)
-    r = Jpeg(path, in);
+    r = Jpeg(path, in), format = 'J';
   else if (h.size() >= 2 && h[0] == 'B' && h[1] == 'M')
-    r = Bmp(path, h);
+    r = Bmp(path, h), format = 'B';
   else
     Fail(path, h.empty() ? "empty file" : "not a PNG, JPEG or BMP image");
+  CheckComplete(path, in, h, format);
   if (r.size.width <= 0 || r.size.height <= 0)
     Fail(path,
          "image of size " + std::to_string(r.size.width) + "x" + std::to_string(r.size.height));

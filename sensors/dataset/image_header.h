@@ -1,7 +1,8 @@
 // An image file's size and channel layout read from its header, before anything is decoded, so
 // that an importer refuses a 20 000 × 20 000 PNG or a frame of another size without allocating
 // gigabytes. PNG (IHDR), JPEG (the first SOF marker) and BMP (BITMAPINFOHEADER) are read; other
-// formats are refused by name.
+// formats are refused by name. The file's end is checked too: OpenCV decodes a file cut short
+// without an error.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -15,8 +16,8 @@ struct ImageHeader {
   int bit_depth = 0;  ///< bits per channel: 8 or 16
 };
 
-/// Throws std::runtime_error naming `path` when it cannot be opened, is not one of the formats
-/// above, or its header is cut short or implausible (zero size).
+/// Throws std::runtime_error naming `path` when it is no regular file, cannot be opened, is not
+/// one of the formats above, its header is implausible (zero size) or the file is cut short.
 ImageHeader ReadImageHeader(const std::string& path);
 
 /// ReadImageHeader, then: at most `max_pixels` pixels, or std::runtime_error naming the file and

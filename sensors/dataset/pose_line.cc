@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/regular_file.h"
+
 namespace novelty::sensors {
 
 Eigen::Isometry3d ParsePoseLine(const std::vector<std::string>& fields, const std::string& where) {
@@ -30,6 +32,7 @@ Eigen::Isometry3d ParsePoseLine(const std::vector<std::string>& fields, const st
 }
 
 std::vector<Eigen::Isometry3d> ReadPoseLines(const std::string& path) {
+  core::CheckRegularFile(path, std::uintmax_t(1) << 28);
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open");
   std::vector<Eigen::Isometry3d> poses;

@@ -8,6 +8,7 @@
 #include "core/range_check.h"
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/rawlog_output.h"
+#include "sensors/rawlog/rgbd_observation.h"
 
 namespace novelty::sensors {
 namespace {
@@ -44,6 +45,14 @@ void ReadFrame(const RgbdSequence& s, const RgbdSequenceFrame& f, long long max_
   if (s.invalid_depth > 0) depth.setTo(0.0f, raw == s.invalid_depth);
 }
 
+// Depth beyond what a range image holds becomes unknown (else stored as 13.1 m); counted.
+int DropDepthBeyondRange(cv::Mat& depth) {
+  const cv::Mat beyond = depth > kRgbdMaxDepth;
+  const int n = cv::countNonZero(beyond);
+  depth.setTo(0.0f, beyond);
+  return n;
+}
+
 }  // namespace
 
 Eigen::Isometry3d HandHeldMount() {
@@ -58,6 +67,8 @@ RgbdImportResult ImportRgbdSequence(const RgbdSequence& s, const std::string& pa
   core::CheckInRange(o.first, 1, n, "first frame");
   core::CheckInRange(o.last, 0, n, "last frame");
   core::CheckInRange(o.every, 1, 1000000, "every");
+  core::CheckInRange(o.max_pixels, 1, 1LL << 40, "max_pixels");
+  core::CheckInRange(s.depth_scale, 1.0, 1e6, "depth_scale");
   if (o.last && o.last < o.first) throw std::invalid_argument("last frame is before the first");
   const int last = o.last ? o.last : n;
   const int total = (last - o.first) / o.every + 1;
@@ -69,6 +80,7 @@ RgbdImportResult ImportRgbdSequence(const RgbdSequence& s, const std::string& pa
     const RgbdSequenceFrame& f = s.frames[std::size_t(k - 1)];
     cv::Mat rgb, depth;
     ReadFrame(s, f, o.max_pixels, rgb, depth);
+    r.beyond_range += DropDepthBeyondRange(depth);
     if (f.T_world_cam) {
       out.Write(
           MakeCameraPoseObservation(f.time, *f.T_world_cam, mount, "POSE_DATASET", 0.001, 0.002));

@@ -34,6 +34,8 @@ struct RgbdImportResult {
   int frames = 0;               ///< RGB-D observations written
   int posed = 0;                ///< of them with a pose observation
   double depth_coverage = 0.0;  ///< share of depth pixels known (> 0), over all frames
+  /// Depth pixels beyond a range image's 13.1 m (rgbd_observation.h), stored as unknown.
+  long long beyond_range = 0;
 };
 
 /// The camera's mounting written with every frame: optical axis along the robot's x.

@@ -1,12 +1,14 @@
 #include "sensors/dataset/rgbd_sequence.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/regular_file.h"
 #include "sensors/dataset/image_header.h"
 #include "sensors/dataset/pose_line.h"
 #include "sensors/dataset/timestamp_association.h"
@@ -80,7 +82,8 @@ void ReadTum(const fs::path& dir, const RgbdSequenceOptions& o, RgbdSequence& s)
     if (!truth.empty() && !f.T_world_cam) ++s.unposed;
     s.frames.push_back(std::move(f));
   }
-  s.camera = NamedCamera(o.camera_name.empty() ? TumCameraFromName(dir) : o.camera_name);
+  s.camera_source = o.camera_name.empty() ? TumCameraFromName(dir) : o.camera_name;
+  s.camera = NamedCamera(s.camera_source);
 }
 
 void ReadIclNuim(const fs::path& dir, const RgbdSequenceOptions& o, RgbdSequence& s) {
@@ -93,11 +96,13 @@ void ReadIclNuim(const fs::path& dir, const RgbdSequenceOptions& o, RgbdSequence
     f.T_world_cam = pose;
     s.frames.push_back(std::move(f));
   }
-  s.camera = NamedCamera(o.camera_name.empty() ? "icl-nuim" : o.camera_name);
+  s.camera_source = o.camera_name.empty() ? "icl-nuim" : o.camera_name;
+  s.camera = NamedCamera(s.camera_source);
 }
 
 // A 4 × 4 (pose) or 3 × 3 (K) matrix of numbers, row by row.
 Eigen::MatrixXd ReadMatrix(const fs::path& path, int n) {
+  core::CheckRegularFile(path.string(), 1 << 16);
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");
   Eigen::MatrixXd m(n, n);
@@ -123,8 +128,10 @@ void ReadSevenScenes(const fs::path& dir, const RgbdSequenceOptions& o, RgbdSequ
       const Eigen::MatrixXd m = ReadMatrix(pose, 4);
       Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
       T.matrix() = m;
-      if ((T.linear().transpose() * T.linear() - Eigen::Matrix3d::Identity()).norm() > 1e-3)
-        throw std::runtime_error(pose.string() + ": the rotation is not orthonormal");
+      if ((T.linear().transpose() * T.linear() - Eigen::Matrix3d::Identity()).norm() > 1e-3 ||
+          T.linear().determinant() < 0 || (m.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).norm() > 1e-6)
+        throw std::runtime_error(pose.string() +
+                                 ": not a rigid pose (a rotation, a translation, 0 0 0 1)");
       f.T_world_cam = T;
     } else {
       ++s.unposed;
@@ -136,10 +143,30 @@ void ReadSevenScenes(const fs::path& dir, const RgbdSequenceOptions& o, RgbdSequ
   const fs::path intrinsics = dir / "camera-intrinsics.txt";
   if (o.camera_name.empty() && fs::exists(intrinsics)) {
     const Eigen::MatrixXd K = ReadMatrix(intrinsics, 3);
+    if (K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 || K(2, 2) != 1)
+      throw std::runtime_error(intrinsics.string() +
+                               ": not a camera matrix (fx 0 cx / 0 fy cy / 0 0 1)");
     s.camera = Camera(K(0, 0), K(1, 1), K(0, 2), K(1, 2));
+    s.camera_source = intrinsics.string();
   } else {
-    s.camera = NamedCamera(o.camera_name.empty() ? "7scenes" : o.camera_name);
+    s.camera_source = o.camera_name.empty() ? "7scenes" : o.camera_name;
+    s.camera = NamedCamera(s.camera_source);
   }
+}
+
+// Focal lengths from a twentieth to a hundred image widths (fields of view of about 170 to 0.6
+// degrees), the principal point at most an image size outside the image: anything else is a
+// typo, a transposed matrix or another unit.
+void CheckIntrinsics(const core::PinholeCamera& c, const std::string& source) {
+  const double w = c.width, h = c.height;
+  const auto focal = [&](double f) { return std::abs(f) >= w / 20 && std::abs(f) <= 100 * w; };
+  if (!focal(c.fx) || !focal(c.fy) || !(c.cx >= -w && c.cx <= 2 * w) ||
+      !(c.cy >= -h && c.cy <= 2 * h))
+    throw std::runtime_error(
+        source + ": implausible intrinsics for " + std::to_string(c.width) + "x" +
+        std::to_string(c.height) + " images (fx " + std::to_string(c.fx) + ", fy " +
+        std::to_string(c.fy) + ", cx " + std::to_string(c.cx) + ", cy " + std::to_string(c.cy) +
+        "; |f| from width/20 to 100 widths, the principal point within an image size of it)");
 }
 
 }  // namespace
@@ -180,8 +207,9 @@ RgbdSequence ReadRgbdSequence(const std::string& folder, const RgbdSequenceOptio
                              " intrinsics are for 640x480: give the intrinsics of these images");
   }
   if (o.depth_scale > 0) s.depth_scale = o.depth_scale;
+  if (o.camera) s.camera_source = o.camera_source;
   s.camera.width = first.size.width, s.camera.height = first.size.height;
-  s.camera.Check();
+  CheckIntrinsics(s.camera, s.camera_source);
   return s;
 }
 

@@ -36,6 +36,7 @@ struct RgbdSequenceFrame {
 struct RgbdSequence {
   std::string layout;           ///< "tum", "icl-nuim" or "7scenes"
   core::PinholeCamera camera;   ///< width and height from the first colour image's header
+  std::string camera_source;    ///< where the intrinsics came from: a name, a file, the flags
   double depth_scale = 5000.0;  ///< depth image units per metre
   int invalid_depth = 0;        ///< depth value that means unknown besides 0 (7-Scenes: 65535)
   std::vector<RgbdSequenceFrame> frames;
@@ -52,6 +53,7 @@ struct RgbdSequenceOptions {
   std::string camera_name;
   /// Intrinsics given (fx, fy, cx, cy; width and height are the images'): used over any name.
   std::optional<core::PinholeCamera> camera;
+  std::string camera_source = "the intrinsics given";  ///< where `camera` came from, for errors
   /// Depth units per metre; 0: the layout's.
   double depth_scale = 0.0;
 };
@@ -61,7 +63,9 @@ struct RgbdSequenceOptions {
 core::PinholeCamera NamedCamera(const std::string& name);
 
 /// Reads the sequence in `folder`. Throws std::runtime_error naming the file: a missing list or
-/// image, a malformed line, no frame left after association, a layout not told by its files.
+/// image, a malformed line, a pose that is not rigid, no frame left after association, a layout
+/// not told by its files, implausible intrinsics (focal lengths outside a twentieth to a hundred
+/// image widths, the principal point more than an image size outside the image).
 RgbdSequence ReadRgbdSequence(const std::string& folder, const RgbdSequenceOptions& options = {});
 
 }  // namespace novelty::sensors

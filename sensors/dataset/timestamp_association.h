@@ -1,6 +1,7 @@
 // Timestamped lists as the TUM RGB-D benchmark writes them ("timestamp field…" per line, '#'
 // comments), and their association by nearest time, as the benchmark's associate.py does it: of
-// all pairs within `max_difference` seconds, the closest first, each entry used once.
+// the pairs within `max_difference` seconds, the closest first, each entry used once (the
+// candidates of an entry are its three nearest on either side).
 #pragma once
 
 #include <string>
@@ -17,7 +18,8 @@ struct TimedLine {
 
 /// The lines of `path` with at least `fields` fields after the timestamp, in file order. Throws
 /// std::runtime_error naming the file and line for a line that has fewer, a timestamp that is no
-/// finite number, or a file that cannot be opened or holds no line.
+/// plain decimal number of seconds up to 1e10, or a file that is no regular file of at most
+/// 256 MB, cannot be opened or holds no line.
 std::vector<TimedLine> ReadTimedLines(const std::string& path, int fields);
 
 /// Pairs (i, j) of a[i] and b[j] with |a[i] − b[j]| ≤ max_difference, the closest pairs first and

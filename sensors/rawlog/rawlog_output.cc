@@ -4,6 +4,8 @@
 #include <mrpt/obs/CObservation3DRangeScan.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <stdlib.h>
+
 #include <exception>
 #include <filesystem>
 #include <stdexcept>
@@ -23,16 +25,34 @@ class RawlogOutput::Impl {
   mrpt::io::CFileOutputStream file;
 };
 
+namespace {
+
+// A new folder beside `final_dir`, named after it: the images are written there and it replaces
+// `final_dir` when the rawlog is published, so that a failed run leaves an earlier rawlog's
+// images as they were.
+std::string MakeStagingDir(const std::string& final_dir) {
+  std::string name = final_dir + ".partial.XXXXXX";
+  if (!mkdtemp(name.data()))
+    throw std::runtime_error(final_dir + ": cannot create a folder beside it for the images");
+  return name;
+}
+
+}  // namespace
+
 RawlogOutput::RawlogOutput(const std::string& path)
     : final_path_(path), temp_(std::make_unique<core::TemporaryFile>(path)) {
-  images_dir_ = ImagesDirOf(path);
-  std::filesystem::create_directories(images_dir_);
+  final_images_dir_ = ImagesDirOf(path);
+  images_dir_ = MakeStagingDir(final_images_dir_);
   impl_ = std::make_unique<Impl>(temp_->path());
 }
 
 RawlogOutput::~RawlogOutput() {
-  // Left by an exception, the rawlog is not published: the temporary goes (the images stay).
-  if (std::uncaught_exceptions() > uncaught_at_start_) return;
+  // Left by an exception, the rawlog is not published: the temporary and the images go.
+  if (std::uncaught_exceptions() > uncaught_at_start_) {
+    std::error_code ec;
+    if (impl_) std::filesystem::remove_all(images_dir_, ec);
+    return;
+  }
   try {
     Close();
   } catch (...) {  // a destructor must not throw; Close() reports errors when called directly
@@ -81,9 +101,22 @@ void RawlogOutput::ShareImagesOf(const std::string& input_rawlog) const {
 
 void RawlogOutput::Close() {
   if (!impl_) return;
+  namespace fs = std::filesystem;
   impl_->file.close();
   impl_.reset();
+  // The images first, then the rawlog that refers to them: an earlier folder is moved aside
+  // and removed only once the new one is in place.
+  std::string old;
+  if (fs::exists(final_images_dir_)) {
+    old = MakeStagingDir(final_images_dir_);
+    fs::remove(old);
+    fs::rename(final_images_dir_, old);
+  }
+  fs::rename(images_dir_, final_images_dir_);
+  images_dir_ = final_images_dir_;
   temp_->Commit();
+  std::error_code ec;
+  if (!old.empty()) fs::remove_all(old, ec);
 }
 
 }  // namespace novelty::sensors

@@ -1,9 +1,10 @@
 // Writes an MRPT rawlog in the "observations" format (a plain sequence of serialized
 // observations) with images stored externally in MRPT's `<name>_Images/` folder beside it, so
 // `rawlog-edit`, `RawLogViewer` and MRPT's CRawlog read it. Written to a new temporary beside it
-// (core::TemporaryFile) and renamed on Close(): a reader never sees half a rawlog, and a program
-// that fails while writing publishes none. Used by the simulator and by the converters
-// (novelty-depth, novelty-poses).
+// (core::TemporaryFile), the images to a new folder beside `<name>_Images/`, both renamed into
+// place on Close(): a reader never sees half a rawlog, and a program that fails while writing
+// publishes none and leaves an earlier rawlog and its images as they were. Used by the simulator
+// and by the converters (novelty-depth, novelty-poses).
 #pragma once
 
 #include <mrpt/img/CImage.h>
@@ -23,7 +24,8 @@ namespace novelty::sensors {
 
 class RawlogOutput {
  public:
-  /// Opens `path` (…/NAME.rawlog) via a temporary and creates …/NAME_Images/. Throws
+  /// Opens `path` (…/NAME.rawlog) via a temporary and a new images folder beside …/NAME_Images/
+  /// (images_dir() until Close(), NAME_Images after). Throws
   /// std::runtime_error naming the file when it cannot be created.
   explicit RawlogOutput(const std::string& path);
   ~RawlogOutput();
@@ -53,7 +55,7 @@ class RawlogOutput {
  private:
   class Impl;
   std::unique_ptr<Impl> impl_;
-  std::string final_path_, images_dir_;
+  std::string final_path_, images_dir_, final_images_dir_;
   std::unique_ptr<core::TemporaryFile> temp_;
   int uncaught_at_start_ = std::uncaught_exceptions();
   int count_ = 0;

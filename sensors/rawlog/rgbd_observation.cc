@@ -8,7 +8,7 @@ namespace novelty::sensors {
 
 namespace {
 
-constexpr float kRangeUnits = 0.0002f;  // 0.2 mm steps, up to 13 m
+constexpr float kRangeUnits = kRgbdRangeUnits;
 
 // Columns: the 3D-scan axes (+X forward, +Y left, +Z up) in camera coordinates.
 Eigen::Isometry3d CameraFromSensor() {

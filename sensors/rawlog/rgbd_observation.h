@@ -15,6 +15,10 @@
 
 namespace novelty::sensors {
 
+/// The depth a range image holds: 0.2 mm steps in 16 bits (depth beyond is stored as this).
+inline constexpr float kRgbdRangeUnits = 0.0002f;
+inline constexpr float kRgbdMaxDepth = 65535 * kRgbdRangeUnits;  // 13.107 m
+
 /// An observation holding the images in memory. `time` is seconds since the Unix epoch.
 mrpt::obs::CObservation3DRangeScan MakeRgbdObservation(double time, const cv::Mat& rgb,
                                                        const cv::Mat& depth,

@@ -17,7 +17,9 @@ fail() { echo "FAIL: $1" >&2; status=1; }
 "$BIN/novelty-import" "$DATA" --out "$W/cabinet.rawlog" --last 12 2> "$W/import.err" \
   | tee "$W/import.out"
 grep -q "^12 RGB-D frames, 12 with a pose" "$W/import.out" || fail "not 12 frames with poses"
-grep -q "58 frames (tum layout, 640x480, fx 535.4)" "$W/import.err" || fail "the sequence: $(cat "$W/import.err")"
+grep -q "58 frames (tum layout, 640x480, fx 535.4 from fr3)" "$W/import.out" \
+  || fail "the sequence: $(cat "$W/import.out")"
+test ! -s "$W/import.err" || fail "stderr of a good import: $(cat "$W/import.err")"
 ls "$W/cabinet_Images" | grep -q '000001.png' || fail "no external images"
 rawlog-edit --info -i "$W/cabinet.rawlog" > "$W/info.txt" 2>&1 || fail "rawlog-edit cannot read it"
 grep -q "Overall number of objects *: 24" "$W/info.txt" || fail "rawlog-edit: not 24 objects"
@@ -48,7 +50,7 @@ expect_error() {  # expected message, arguments...
   shift
   if "$BIN/novelty-import" "$@" > /dev/null 2> "$W/err"; then
     fail "accepted: $*"
-  elif ! grep -qF "$message" "$W/err"; then
+  elif ! grep -qF -- "$message" "$W/err"; then
     fail "for $*: expected '$message', got '$(cat "$W/err")'"
   fi
   test "$(wc -l < "$W/err")" -eq 1 || fail "for $*: not one line: $(cat "$W/err")"
@@ -56,7 +58,17 @@ expect_error() {  # expected message, arguments...
 mkdir "$W/empty"
 expect_error "no RGB-D layout recognised" "$W/empty" --out "$W/x.rawlog"
 expect_error "give all of --fx --fy --cx --cy" "$DATA" --out "$W/x.rawlog" --fx 500
-expect_error "camera 'kinect'" "$DATA" --out "$W/x.rawlog" --camera kinect
+expect_error "--camera camera 'kinect'" "$DATA" --out "$W/x.rawlog" --camera kinect
+expect_error "--every must be >= 1" "$DATA" --out "$W/x.rawlog" --every 0
+expect_error "implausible intrinsics" "$DATA" --out "$W/x.rawlog" --fx 1e-300 --fy 1 --cx 1 --cy 1
+# A file at --out that is no rawlog is never replaced, whatever its name.
+echo "my notes" > "$W/notes.rawlog"
+expect_error "not replacing it" "$DATA" --out "$W/notes.rawlog"
+grep -q "my notes" "$W/notes.rawlog" || fail "notes.rawlog was replaced"
+# A sequence folder named like the output's images folder is never written into.
+cp -r "$SRC/../shared/data/icl-nuim-5" "$W/seq_Images"
+expect_error "would be written into the input" "$W/seq_Images" --out "$W/seq.rawlog"
+test "$(find "$W/seq_Images" -type f | wc -l)" -eq 11 || fail "the input folder was written into"
 expect_error "lies inside the input" "$DATA" --out "$DATA/rgb.txt"
 test ! -e "$W/x.rawlog" || fail "a rawlog was written after an error"
 exit $status

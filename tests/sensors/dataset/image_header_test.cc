@@ -81,6 +81,20 @@ TEST_F(ImageHeaderTest, WhatIsNoImageIsNamed) {
   const std::string jpeg = Write("cut.jpg", cv::Mat(16, 16, CV_8UC3, cv::Scalar::all(50)));
   fs::resize_file(jpeg, 20);
   EXPECT_THROW(ReadImageHeader(jpeg), std::runtime_error);
+  // Cut later, each format decodes without an error in OpenCV: the end is checked.
+  cv::Mat noise(64, 64, CV_8UC3);
+  cv::randu(noise, 0, 256);
+  for (const char* name : {"late.jpg", "late.png", "late.bmp"}) {
+    const std::string path = Write(name, noise);
+    EXPECT_NO_THROW(ReadImageHeader(path)) << name;
+    fs::resize_file(path, fs::file_size(path) * 2 / 3);
+    try {
+      ReadImageHeader(path);
+      ADD_FAILURE() << name;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("cut short"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
