@@ -4,11 +4,10 @@
 //   novelty-run --rawlog DIR/<name>.rawlog [--groundtruth DIR/groundtruth] --out OUT
 //               [--config share/novelty_run.ini] [--frames N] [--panels-every K]
 //               [--poses groundtruth|rawlog|odometry] [--compare-views 2,4]
-//               [--map-in M] [--map-out M] [--objects-in D] [--objects-from N]
-//               [--view-reduction N]
+//               [--map-in M] [--map-out M] [--objects-in D] [--objects-from N] [--view-reduction N]
 //
-// OUT: panels/, metrics.csv, findings.csv, report.html, map.3Dscene, the appearance map
-// (OUT/map.appearance_map unless --map-out), and with a CObjectDatabaseMap in the .ini
+// OUT: panels/, frames.csv, metrics.csv, findings.csv, report.html, map.3Dscene, the appearance
+// map (OUT/map.appearance_map unless --map-out), and with a CObjectDatabaseMap in the .ini
 // objects.csv and map.object_database.
 //
 // Exit status: 0 done; 1 an error (one line on stderr; nothing overwritten, no map saved when no
