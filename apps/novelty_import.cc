@@ -81,8 +81,11 @@ void CheckOutput(const std::string& out, const std::string& in) {
     }
   });
   namespace fs = std::filesystem;
-  const fs::path images = fs::weakly_canonical(sensors::ImagesDirOf(out));
-  const fs::path input = fs::weakly_canonical(in);
+  const auto canonical = [](const std::string& p) {  // "DIR/" as "DIR": no empty last part
+    const fs::path c = fs::weakly_canonical(p);
+    return c.filename().empty() ? c.parent_path() : c;
+  };
+  const fs::path images = canonical(sensors::ImagesDirOf(out)), input = canonical(in);
   const auto within = [](const fs::path& inner, const fs::path& outer) {
     const auto [end, _] = std::mismatch(outer.begin(), outer.end(), inner.begin(), inner.end());
     return end == outer.end();

@@ -68,6 +68,7 @@ grep -q "my notes" "$W/notes.rawlog" || fail "notes.rawlog was replaced"
 # A sequence folder named like the output's images folder is never written into.
 cp -r "$SRC/../shared/data/icl-nuim-5" "$W/seq_Images"
 expect_error "would be written into the input" "$W/seq_Images" --out "$W/seq.rawlog"
+expect_error "would be written into the input" "$W/seq_Images/" --out "$W/seq.rawlog"
 test "$(find "$W/seq_Images" -type f | wc -l)" -eq 11 || fail "the input folder was written into"
 expect_error "lies inside the input" "$DATA" --out "$DATA/rgb.txt"
 test ! -e "$W/x.rawlog" || fail "a rawlog was written after an error"
