@@ -17,15 +17,7 @@ namespace fs = std::filesystem;
 
 // glass_and_cup.scn cut to 12 frames at 80×60 without its events, as the bad-input cases use it.
 std::string TinyClip() {
-  std::ifstream in(std::string(NOVELTY_SOURCE_DIR) + "/share/scenarios/glass_and_cup.scn");
-  std::ostringstream out;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("frames ", 0) == 0) line = "frames 12";
-    if (line.rfind("camera ", 0) == 0) line = "camera 80 60 60";
-    if (line.rfind("event", 0) == 0 || line.rfind("phase", 0) == 0) continue;
-    out << line << "\n";
-  }
-  return out.str();
+  return sim::GlassAndCupRoom(12, "camera 80 60 60");
 }
 
 class Soak : public ::testing::Test {

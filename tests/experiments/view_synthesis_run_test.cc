@@ -17,15 +17,7 @@ namespace fs = std::filesystem;
 
 // glass_and_cup.scn's first 24 frames at 160×120 without its events.
 std::string ShortClip() {
-  std::ifstream in(std::string(NOVELTY_SOURCE_DIR) + "/share/scenarios/glass_and_cup.scn");
-  std::ostringstream out;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("frames ", 0) == 0) line = "frames 24";
-    if (line.rfind("camera ", 0) == 0) line = "camera 160 120 60";
-    if (line.rfind("event", 0) == 0 || line.rfind("phase", 0) == 0) continue;
-    out << line << "\n";
-  }
-  return out.str();
+  return sim::GlassAndCupRoom(24, "camera 160 120 60");
 }
 
 // Every 4th frame a reference view, the 18 others synthesised. docs/appearance.md measures

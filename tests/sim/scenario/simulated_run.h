@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 
@@ -23,6 +24,20 @@ inline std::filesystem::path SimulateIntoTempFolder(const std::string& scenario_
   o.progress = false;
   RunScenario(s, o);
   return dir;
+}
+
+/// share/scenarios/glass_and_cup.scn cut to its first `frames` frames, its camera line replaced by
+/// `camera` ("camera 80 60 60"), without its events and phases: the room alone, for short runs.
+inline std::string GlassAndCupRoom(int frames, const std::string& camera) {
+  std::ifstream in(std::string(NOVELTY_SOURCE_DIR) + "/share/scenarios/glass_and_cup.scn");
+  std::ostringstream out;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("frames ", 0) == 0) line = "frames " + std::to_string(frames);
+    if (line.rfind("camera ", 0) == 0) line = camera;
+    if (line.rfind("event", 0) == 0 || line.rfind("phase", 0) == 0) continue;
+    out << line << "\n";
+  }
+  return out.str();
 }
 
 }  // namespace novelty::sim
