@@ -75,27 +75,4 @@ const OptionTable<AppearanceMapConfig>& AppearanceMapConfig::Table() {
   return table;
 }
 
-const std::vector<std::string>& AppearanceMapConfig::Version0Keys() {
-  static const std::vector<std::string> keys = {"forgetting_factor",
-                                                "xi",
-                                                "sigma_min",
-                                                "sigma_max",
-                                                "initial_alpha",
-                                                "initial_beta",
-                                                "initial_tau",
-                                                "initial_sigma",
-                                                "fast_approximations",
-                                                "half_precision",
-                                                "new_view_distance",
-                                                "new_view_angle_deg",
-                                                "max_relative_depth_jump",
-                                                "depth_tolerance"};
-  return keys;
-}
-
-const std::vector<std::string>& AppearanceMapConfig::Version1Keys() {
-  static const std::vector<std::string> keys = {"min_variance", "angle_power", "weight_by_rays"};
-  return keys;
-}
-
 }  // namespace novelty::mrpt_plugins

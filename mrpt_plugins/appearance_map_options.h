@@ -26,9 +26,6 @@ struct AppearanceMapConfig : public TabledOptions<AppearanceMapConfig> {
   /// The options section of the first CAppearanceMap of a CMultiMetricMap .ini whose maps are
   /// declared in [map] (MRPT's naming: <section>_<Class>_<NN>_options), as in share/*.ini.
   static constexpr const char* kSection = "map_CAppearanceMap_00_options";
-  /// The keys a map file of version 0, and those version 1 added, stored one after another.
-  static const std::vector<std::string>& Version0Keys();
-  static const std::vector<std::string>& Version1Keys();
 };
 
 }  // namespace novelty::mrpt_plugins

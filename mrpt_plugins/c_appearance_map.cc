@@ -67,7 +67,7 @@ void CAppearanceMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const 
 }
 
 uint8_t CAppearanceMap::serializeGetVersion() const {
-  return kFileVersion;
+  return FileVersion();
 }
 
 void CAppearanceMap::serializeTo(mrpt::serialization::CArchive& out) const {

@@ -30,7 +30,7 @@ void CDifferencingMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) cons
 }
 
 uint8_t CDifferencingMap::serializeGetVersion() const {
-  return kFileVersion;
+  return FileVersion();
 }
 
 void CDifferencingMap::serializeTo(mrpt::serialization::CArchive& out) const {

@@ -10,6 +10,7 @@
 #include "core/false_color.h"
 #include "mrpt_plugins/cimage_products.h"
 #include "mrpt_plugins/map_file.h"
+#include "mrpt_plugins/map_formats.h"
 #include "mrpt_plugins/observation_frame.h"
 #include "mrpt_plugins/register_maps.h"
 #include "mrpt_plugins/view_archive.h"
@@ -131,14 +132,14 @@ void CIlluminationInvariantMap::saveMetricMapRepresentationToFile(const std::str
   SaveToFile(prefix + ".illumination_invariant");
 }
 
-// Map file, version 0: every option by key (option_table.h); the lightings and viewpoint counts;
-// per viewpoint its view (view_archive.h WriteView: camera, pose, depth, planes "invariant" and
-// "shapes"), its coverage and its model (gamma fits of luminance and saturation, quantisation
-// widths, mean information, T_Y).
-// Version 1 adds per viewpoint the missing texture's tail table (entries, values, ln(N + 1); no
-// entries: not learnt), energy floor and block; its scale is the view's plane "texture".
+// Map file: every option by key (option_table.h); the lightings and viewpoint counts; per
+// viewpoint its view (view_archive.h WriteView: camera, pose, depth, planes "invariant" and
+// "shapes"), its coverage, its model (gamma fits of luminance and saturation, quantisation
+// widths, mean information, T_Y) and the missing texture's tail table (entries, values,
+// ln(N + 1); no entries: not learnt), energy floor and block; the texture's scale is the view's
+// plane "texture". Older versions: map_formats.h.
 uint8_t CIlluminationInvariantMap::serializeGetVersion() const {
-  return 1;
+  return CurrentMapFormat("CIlluminationInvariantMap");
 }
 
 void CIlluminationInvariantMap::serializeTo(mrpt::serialization::CArchive& out) const {
@@ -163,8 +164,7 @@ void CIlluminationInvariantMap::serializeTo(mrpt::serialization::CArchive& out) 
 }
 
 void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-  if (version > 1)
-    Corrupt("format version " + std::to_string(version) + ", newer than this program's (1)");
+  const MapFormat format = MapFormatOf("CIlluminationInvariantMap", version);
   IlluminationInvariantMapConfig config;
   IlluminationInvariantMapConfig::Table().Read(in, config);
   int32_t lightings = 0, viewpoints = 0;
@@ -183,7 +183,7 @@ void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in,
     m.model.saturation = ReadFit(in);
     in >> m.model.luminance_step >> m.model.saturation_step >> m.model.mean_information >>
         m.model.threshold;
-    if (version >= 1) {
+    if (format.texture_tails) {
       int32_t entries = 0, block = 0;
       in >> entries;
       if (entries < 0 || entries > kMaxTailEntries)

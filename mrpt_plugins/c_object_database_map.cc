@@ -12,6 +12,7 @@
 
 #include "maps/objects/feature_extractor.h"
 #include "mrpt_plugins/map_file.h"
+#include "mrpt_plugins/map_formats.h"
 #include "mrpt_plugins/register_maps.h"
 
 using novelty::mrpt_plugins::CObjectDatabaseMap;
@@ -195,12 +196,12 @@ void CObjectDatabaseMap::saveMetricMapRepresentationToFile(const std::string& pr
   SaveToFile(prefix + ".object_database");
 }
 
-// Map file, version 1: every option by key (option_table.h); the object count; the descriptors
-// (rows, width, floats); per feature its counts (object, n) and its 3-D place; per object where it
-// was learnt; per feature its learnt keypoint's orientation and metric size (NaN unknown).
-// Version 0 ends before the keypoints: they read as unknown.
+// Map file: every option by key (option_table.h); the object count; the descriptors (rows, width,
+// floats); per feature its counts (object, n) and its 3-D place; per object where it was learnt;
+// per feature its learnt keypoint's orientation and metric size (NaN unknown). Older versions:
+// map_formats.h.
 uint8_t CObjectDatabaseMap::serializeGetVersion() const {
-  return 1;
+  return CurrentMapFormat("CObjectDatabaseMap");
 }
 
 void CObjectDatabaseMap::serializeTo(mrpt::serialization::CArchive& out) const {
@@ -220,8 +221,7 @@ void CObjectDatabaseMap::serializeTo(mrpt::serialization::CArchive& out) const {
 }
 
 void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
-  if (version > 1)
-    Corrupt("format version " + std::to_string(version) + ", newer than this program's (1)");
+  const MapFormat format = MapFormatOf("CObjectDatabaseMap", version);
   ObjectDatabaseMapConfig config;
   ObjectDatabaseMapConfig::Table().Read(in, config);
   int32_t objects = 0, rows = 0, cols = 0;
@@ -256,7 +256,7 @@ void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
   for (int h = 0; h < rows; ++h) positions.push_back(ReadVector(in));
   for (int k = 0; k < objects; ++k) learnt_at.push_back(ReadVector(in));
   std::vector<objects::LearntKeypoint> keypoints;
-  for (int h = 0; version >= 1 && h < rows; ++h) {
+  for (int h = 0; format.learnt_keypoints && h < rows; ++h) {
     keypoints.emplace_back();
     in >> keypoints.back().angle_deg >> keypoints.back().size_m;
   }

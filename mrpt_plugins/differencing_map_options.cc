@@ -19,15 +19,4 @@ const OptionTable<DifferencingMapConfig>& DifferencingMapConfig::Table() {
   return table;
 }
 
-const std::vector<std::string>& DifferencingMapConfig::Version0Keys() {
-  static const std::vector<std::string> keys = {"new_view_distance", "new_view_angle_deg",
-                                                "max_relative_depth_jump", "depth_tolerance"};
-  return keys;
-}
-
-const std::vector<std::string>& DifferencingMapConfig::Version1Keys() {
-  static const std::vector<std::string> keys = {"angle_power", "weight_by_rays"};
-  return keys;
-}
-
 }  // namespace novelty::mrpt_plugins

@@ -9,13 +9,14 @@
 
 #include "core/depth_check.h"
 #include "maps/views/plane_codec.h"
+#include "mrpt_plugins/map_formats.h"
 #include "mrpt_plugins/option_table.h"
 
 namespace novelty::mrpt_plugins {
 
 namespace {
 
-// Type, size, then the bytes of an encoded plane (file versions ≥ 3).
+// Type, size, then the bytes of an encoded plane.
 void WriteEncoded(mrpt::serialization::CArchive& out, const views::EncodedView::Plane& p,
                   const core::PinholeCamera& camera) {
   out << int32_t(p.type) << int32_t(camera.height) << int32_t(camera.width);
@@ -23,7 +24,7 @@ void WriteEncoded(mrpt::serialization::CArchive& out, const views::EncodedView::
   out.WriteBuffer(p.bytes.data(), p.bytes.size());
 }
 
-// Type, size, then the raw values (file versions 0-2).
+// Type, size, then the raw values (MapFormat::raw_planes).
 void WriteRaw(mrpt::serialization::CArchive& out, const cv::Mat& m) {
   out << int32_t(m.type()) << int32_t(m.rows) << int32_t(m.cols);
   const cv::Mat c = m.isContinuous() ? m : m.clone();
@@ -66,7 +67,7 @@ int ReadImageHeader(mrpt::serialization::CArchive& in, const core::PinholeCamera
   return type;
 }
 
-// An encoded image as WriteEncoded writes it (versions ≥ 3), not yet decoded.
+// An encoded image as WriteEncoded writes it, not yet decoded.
 views::EncodedView::Plane ReadEncoded(mrpt::serialization::CArchive& in,
                                       const core::PinholeCamera& camera, const std::string& what) {
   std::size_t bytes = 0;
@@ -80,7 +81,7 @@ views::EncodedView::Plane ReadEncoded(mrpt::serialization::CArchive& in,
   return p;
 }
 
-// A raw image as WriteRaw writes it (versions 0-2).
+// A raw image as WriteRaw writes it.
 cv::Mat ReadRaw(mrpt::serialization::CArchive& in, const core::PinholeCamera& camera,
                 const std::string& what) {
   std::size_t bytes = 0;
@@ -128,15 +129,18 @@ Eigen::Isometry3d ReadPose(mrpt::serialization::CArchive& in) {
   return p;
 }
 
-// A view's depth and named planes after its camera and pose: encoded (versions ≥ 3; decoded
-// into `v` here) or raw (versions 0-2). `e` keeps the encoding a compact store may hold.
-void ReadPlanes(mrpt::serialization::CArchive& in, const std::string& what, uint8_t version,
+// A view's depth and named planes after its camera and pose, raw or encoded as `format` says
+// (decoded into `v` here). `e` keeps the encoding a compact store may hold.
+void ReadPlanes(mrpt::serialization::CArchive& in, const std::string& what, const MapFormat& format,
                 views::EncodedView& e, views::ReferenceView& v) {
-  e.encoding = version >= 4 ? views::PlaneEncoding::kPredicted : views::PlaneEncoding::kShuffled;
-  if (version >= 3)
-    e.planes[""] = ReadEncoded(in, v.camera, what + " depth");
-  else
-    v.depth = ReadRaw(in, v.camera, what + " depth");
+  e.encoding = format.encoding;
+  const auto read = [&](const std::string& name, const std::string& plane) {
+    if (format.raw_planes)
+      (name.empty() ? v.depth : v.planes[name]) = ReadRaw(in, v.camera, plane);
+    else
+      e.planes[name] = ReadEncoded(in, v.camera, plane);
+  };
+  read("", what + " depth");
   int32_t planes;
   in >> planes;
   if (planes < 0 || planes > 16)
@@ -145,13 +149,9 @@ void ReadPlanes(mrpt::serialization::CArchive& in, const std::string& what, uint
     const std::string name = ReadShortString(in, 64, what + " plane name");
     if (name.empty())
       throw std::runtime_error(std::string(kMapFileError) + what + ": a plane without a name");
-    const std::string plane = what + " plane '" + name + "'";
-    if (version >= 3)
-      e.planes[name] = ReadEncoded(in, v.camera, plane);
-    else
-      v.planes[name] = ReadRaw(in, v.camera, plane);
+    read(name, what + " plane '" + name + "'");
   }
-  if (version >= 3) {
+  if (!format.raw_planes) {
     try {
       views::DecodeInto(e, v);
     } catch (const std::runtime_error& error) {
@@ -161,7 +161,7 @@ void ReadPlanes(mrpt::serialization::CArchive& in, const std::string& what, uint
   CheckDepth(v.depth, what);
 }
 
-// The encoded depth and planes of a view (versions ≥ 3), as ReadPlanes reads them.
+// The encoded depth and planes of a view, as ReadPlanes reads them.
 void WritePlanes(mrpt::serialization::CArchive& out, const views::EncodedView& e,
                  const core::PinholeCamera& c) {
   WriteEncoded(out, e.planes.at(""), c);
@@ -176,22 +176,18 @@ void WritePlanes(mrpt::serialization::CArchive& out, const views::EncodedView& e
 }  // namespace
 
 void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBasedMap& map,
-                  uint8_t version) {
+                  const MapFormat& format) {
   const views::ReferenceViewStore& store = map.store();
-  views::PlaneCodecOptions shuffled;
-  shuffled.encoding = views::PlaneEncoding::kShuffled;
+  const bool as_held = format.encoding == views::PlaneEncoding::kPredicted;
+  views::PlaneCodecOptions codec;
+  codec.encoding = format.encoding;
   out << int32_t(store.size());
   for (int j = 0; j < store.size(); ++j) {
     const core::PinholeCamera& c = store.camera(j);
     out << int32_t(c.width) << int32_t(c.height) << c.fx << c.fy << c.cx << c.cy;
     WritePose(out, store.pose(j));
     WritePose(out, map.anchors()[std::size_t(j)]);
-    if (version >= 3) {
-      // What a compact map holds already (version 4), else encoded now, a view at a time.
-      const views::EncodedView e =
-          version >= 4 ? store.Encoded(j) : views::EncodeView(store.Decoded(j), shuffled);
-      WritePlanes(out, e, c);
-    } else {
+    if (format.raw_planes) {
       const views::ReferenceView v = store.Decoded(j);
       WriteRaw(out, v.depth);
       out << int32_t(v.planes.size());
@@ -199,18 +195,22 @@ void WriteViewMap(mrpt::serialization::CArchive& out, const appearance::ViewBase
         out << name;
         WriteRaw(out, plane);
       }
+    } else {
+      // What a compact map holds already, else encoded now, a view at a time.
+      WritePlanes(out, as_held ? store.Encoded(j) : views::EncodeView(store.Decoded(j), codec), c);
     }
   }
 }
 
 void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& map,
-                 uint8_t version) {
+                 const MapFormat& format) {
   int32_t n;
   in >> n;
   if (n < 0 || n > 1000000)
     throw std::runtime_error(std::string(kMapFileError) + "corrupt view count");
   std::vector<views::ReferenceView> views;
-  std::vector<views::EncodedView> encoded;  // version 4: kept as they are by a compact map
+  std::vector<views::EncodedView> encoded;  // kept as they are by a compact map
+  const bool as_held = !format.raw_planes && format.encoding == views::PlaneEncoding::kPredicted;
   const bool compact = map.store().options().decoded_views > 0;
   std::vector<Eigen::Isometry3d> anchors;
   for (int32_t j = 0; j < n; ++j) {
@@ -220,13 +220,13 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
     v.T_world_cam = ReadPose(in);
     anchors.push_back(ReadPose(in));
     views::EncodedView e;
-    ReadPlanes(in, what, version, e, v);
-    if (version >= 4 && compact) {  // held as it was read: no second copy of 200 views decoded
+    ReadPlanes(in, what, format, e, v);
+    if (as_held && compact) {  // held as it was read: no second copy of 200 views decoded
       v.depth.release();
       v.planes.clear();
     }
     views.push_back(std::move(v));
-    if (version >= 4) encoded.push_back(std::move(e));
+    if (as_held) encoded.push_back(std::move(e));
   }
   map.Restore(std::move(views), std::move(anchors), std::move(encoded));
 }
@@ -243,7 +243,7 @@ views::ReferenceView ReadView(mrpt::serialization::CArchive& in, const std::stri
   v.camera = ReadCamera(in, what);
   v.T_world_cam = ReadPose(in);
   views::EncodedView e;
-  ReadPlanes(in, what, 4, e, v);
+  ReadPlanes(in, what, MapFormat{}, e, v);
   try {
     v.Check(what);
   } catch (const std::invalid_argument& error) {

@@ -102,37 +102,27 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
     c.poses = pose_check_.options();
     return c;
   }
-  /// Map file, version 4: every option by key (option_table.h), then the views with their images
-  /// encoded (views::EncodedView: rounded, predicted, zstd). Version 3 encoded them without the
-  /// prediction, version 2 stored them raw (docs/map_storage.md).
-  static constexpr uint8_t kFileVersion = 4;
+  /// Map file: every option by key (option_table.h), then the views with their images encoded
+  /// (views::EncodedView: rounded, predicted, zstd). Older versions: map_formats.h.
+  uint8_t FileVersion() const { return CurrentMapFormat(name_); }
   void WriteMapFile(mrpt::serialization::CArchive& out) const {
     Config::Table().Write(out, CurrentConfig());
     WriteViewMap(out, map_->view_map());
   }
-  /// Reads any version this class wrote: 0 and 1 stored some options one after another (the
-  /// others get the behaviour they had then: OptionEntry::legacy). The map is replaced only when
-  /// everything was read.
+  /// Reads any version this class wrote (map_formats.h says how each is laid out). The map is
+  /// replaced only when everything was read.
   void ReadMapFile(mrpt::serialization::CArchive& in, uint8_t version) {
-    if (version > kFileVersion) {
-      throw std::runtime_error(std::string(kMapFileError) + "format version " +
-                               std::to_string(version) + ", newer than this program's (" +
-                               std::to_string(kFileVersion) + ")");
-    }
+    const MapFormat format = MapFormatOf(name_, version);
     Config c;
     c.depth = depth_source_;  // files before version 2 did not hold it: the map's stays
     c.poses = pose_check_.options();
-    if (version >= 2) {
+    if (format.options_by_key)
       Config::Table().Read(in, c);
-    } else {
-      std::vector<std::string> keys = Config::Version0Keys();
-      if (version == 1)
-        keys.insert(keys.end(), Config::Version1Keys().begin(), Config::Version1Keys().end());
-      Config::Table().ReadPositional(in, keys, c);
-    }
+    else
+      Config::Table().ReadPositional(in, format.positional_keys, c);
     auto map = std::make_unique<Map>(c.map);
     try {
-      ReadViewMap(in, map->view_map(), version);
+      ReadViewMap(in, map->view_map(), format);
       map->CheckStoredPlanes();
     } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
       throw std::runtime_error(std::string(kMapFileError) + e.what());

@@ -131,7 +131,8 @@ TEST(CAppearanceMap, MapFilesOfEveryVersionLoadWithTheOptionsTheyWereMadeWith) {
     mrpt::io::CMemoryStream buffer;
     auto out = mrpt::serialization::archiveFrom(buffer);
     WriteOldOptions(out, version);
-    WriteViewMap(out, source.map().view_map(), 2);  // raw images, as then
+    WriteViewMap(out, source.map().view_map(),
+                 MapFormatOf("CAppearanceMap", uint8_t(version)));  // raw images, as then
     buffer.Seek(0);
     auto in = mrpt::serialization::archiveFrom(buffer);
     FileReader loaded;
@@ -160,7 +161,7 @@ TEST(CAppearanceMap, MapFilesOfEveryVersionLoadWithTheOptionsTheyWereMadeWith) {
     mrpt::io::CMemoryStream buffer;
     auto out = mrpt::serialization::archiveFrom(buffer);
     AppearanceMapConfig::Table().Write(out, c);
-    WriteViewMap(out, source.map().view_map(), uint8_t(version));
+    WriteViewMap(out, source.map().view_map(), MapFormatOf("CAppearanceMap", uint8_t(version)));
     buffer.Seek(0);
     auto in = mrpt::serialization::archiveFrom(buffer);
     FileReader loaded;

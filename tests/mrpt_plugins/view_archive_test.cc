@@ -54,8 +54,8 @@ const SavedMap& Saved() {
     const std::vector<uint8_t> current = Bytes([&](auto& a) { a << map; });
     const std::size_t encoded =
         Bytes([&](auto& a) { WriteViewMap(a, map.map().view_map()); }).size();
-    const std::vector<uint8_t> raw =
-        Bytes([&](auto& a) { WriteViewMap(a, map.map().view_map(), 2); });
+    const std::vector<uint8_t> raw = Bytes(
+        [&](auto& a) { WriteViewMap(a, map.map().view_map(), MapFormatOf("CAppearanceMap", 2)); });
     s.views_at = current.size() - 1 - encoded;
     s.file.assign(current.begin(), current.begin() + std::ptrdiff_t(s.views_at));
     s.file.insert(s.file.end(), raw.begin(), raw.end());
