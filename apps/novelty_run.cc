@@ -40,14 +40,14 @@ struct RunArgs {
   int panels_every = 10;
   int objects_from = 1;
   std::string pose_source = "groundtruth";
-  double reduction = 1.0;
+  double reduction = 1.0, z = 0.0;
 };
 
 // Parses and checks the command line; throws TCLAP::ArgException or std::invalid_argument.
 RunArgs ParseArgs(int argc, char** argv) {
   novelty::apps::CommandLine cmd(
-      "Bayesian surprise with the probabilistic appearance map over an RGB-D "
-      "rawlog, against image differencing, through MRPT's CMultiMetricMap.",
+      "Bayesian surprise with the probabilistic appearance map over an RGB-D rawlog, against "
+      "image differencing if the maps hold it, through MRPT's CMultiMetricMap.",
       "0.1");
   TCLAP::ValueArg<std::string> rawlog("", "rawlog", "RGB-D rawlog", true, "", "R.rawlog", cmd);
   TCLAP::ValueArg<std::string> truth("", "groundtruth",
@@ -57,8 +57,9 @@ RunArgs ParseArgs(int argc, char** argv) {
   TCLAP::ValueArg<std::string> out("", "out", "Output folder", true, "", "OUT", cmd);
   TCLAP::ValueArg<std::string> config(
       "", "config",
-      "The maps as a CMultiMetricMap .ini (section [map]: CAppearanceMap_count, "
-      "CDifferencingMap_count; options in [map_CAppearanceMap_00_options] ...), e.g. "
+      "The maps as a CMultiMetricMap .ini (section [map]: CAppearanceMap_count = 1, "
+      "CDifferencingMap_count 0 or 1, which --groundtruth scores against; options in "
+      "[map_CAppearanceMap_00_options] ...), e.g. "
       "share/novelty_run.ini; default: both maps with default options",
       false, "", "INI", cmd);
   TCLAP::ValueArg<int> max_frames("", "frames", "Stop after N frames inserted into the maps", false,
@@ -88,15 +89,23 @@ RunArgs ParseArgs(int argc, char** argv) {
       "observations (the default without; novelty-import, novelty-poses) or from its wheel "
       "odometry; the ground truth still gives the evaluation masks",
       false, "groundtruth", &allowed_poses, cmd);
+  const double default_z = eval::NoveltyVerdictOptions().z;
+  char z_text[32];
+  std::snprintf(z_text, sizeof z_text, "%g", default_z);
+  TCLAP::ValueArg<double> z("", "novelty-z",
+                            "For the report's verdict, a frame shows something new when its "
+                            "most surprising 50 pixels stand Z robust deviations above the run's "
+                            "median frame (default " +
+                                std::string(z_text) + ")",
+                            false, default_z, "Z", cmd);
   TCLAP::ValueArg<double> reduction("", "view-reduction",
                                     "Space reference views N times wider than configured: the "
                                     "thesis's R2 and R4 experiments (fig. 4.13) use 2 and 4",
                                     false, 1.0, "N", cmd);
   TCLAP::ValueArg<std::string> compare_views(
       "", "compare-views",
-      "Also run maps with reference views N times sparser, side by side, e.g. 2,4 (fig. 4.13's "
-      "R2 and R4); the report compares each finding's peak selectivity",
-      false, "", "N,M", cmd);
+      "Also run maps with reference views N times sparser, e.g. 2,4 (fig. 4.13's R2 and R4)", false,
+      "", "N,M", cmd);
   cmd.Parse(argc, argv);
   RunArgs a;
   a.rawlog = rawlog.getValue();
@@ -114,6 +123,8 @@ RunArgs ParseArgs(int argc, char** argv) {
   // Without ground truth the rawlog's own poses (novelty-import, novelty-poses) are the default.
   a.pose_source = pose_source.isSet() || truth.isSet() ? pose_source.getValue() : "rawlog";
   a.reduction = reduction.getValue();
+  a.z = z.getValue();
+  if (!(a.z >= 0.0 && a.z < 1e6)) throw std::invalid_argument("--novelty-z must be in [0, 1e6)");
   if (!(a.reduction >= 1.0)) throw std::invalid_argument("--view-reduction must be >= 1");
   if (a.panels_every < 1) throw std::invalid_argument("--panels-every must be >= 1");
   if (a.max_frames && *a.max_frames < 1) throw std::invalid_argument("--frames must be >= 1");
@@ -149,6 +160,7 @@ int Run(int argc, char** argv) {
   o.objects_from = a.objects_from;
   o.pose_source = a.pose_source;
   o.view_reduction = a.reduction;
+  o.verdict.z = a.z;
   o.compare_views = experiments::ParseViewFactors(a.compare_views);
   o.console = &std::cout;
   o.status = [](const std::string& line) {
@@ -169,27 +181,7 @@ int Run(int argc, char** argv) {
       experiments::RunSurpriseExperiment(o, folder.path());
   if (progress) progress->Finish();
   folder.Commit();
-  const std::string& out = folder.final_path();
-  if (!r.objects_summary.empty())
-    std::printf("  objects: %s/objects.csv, %s/map.object_database\n  %s\n", out.c_str(),
-                out.c_str(), r.objects_summary.c_str());
-  std::printf(
-      "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
-      "  map:     %s (%s)\n  report:  %s/report.html\n",
-      r.frames, r.skipped, r.seconds, out.c_str(), a.map_out.c_str(), r.map_summary.c_str(),
-      out.c_str());
-  if (r.prediction.frames > 0)
-    std::printf(
-        "  predicted: median coverage %.1f %%, PSNR of the expected image %.1f dB, surprise "
-        "%.2f nats (95th percentile %.2f) — %s/frames.csv\n",
-        100 * r.prediction.median_coverage, r.prediction.median_psnr_db,
-        r.prediction.median_mean_surprise, r.prediction.median_p95_surprise, out.c_str());
-  if (r.mean_warp_sigma_px > 0.0)
-    std::printf("  warp-error floor: s = %.2f px on average over the frames\n",
-                r.mean_warp_sigma_px);
-  if (r.aligned_frames > 0)
-    std::printf("  aligned to the prior: %d frames, by %.3f deg on average\n", r.aligned_frames,
-                r.mean_aligned_deg);
+  std::fputs(experiments::SurpriseRunSummary(r, folder.final_path(), a.map_out).c_str(), stdout);
   return r.ended_early ? apps::kExitPartial : apps::kExitOk;
 }
 

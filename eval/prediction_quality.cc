@@ -26,9 +26,11 @@ std::string Cell(double v) {
 }  // namespace
 
 PredictionQuality MeasurePrediction(const cv::Mat& rgb, const cv::Mat& expected,
-                                    const cv::Mat& valid, const cv::Mat& surprise) {
+                                    const cv::Mat& valid, const cv::Mat& surprise,
+                                    int tail_pixels) {
+  if (tail_pixels < 1) throw std::invalid_argument("MeasurePrediction: tail_pixels must be >= 1");
   PredictionQuality q;
-  q.psnr_db = q.mean_surprise = q.p95_surprise = kNaN;
+  q.psnr_db = q.mean_surprise = q.p95_surprise = q.tail_surprise = kNaN;
   if (expected.empty() || valid.empty()) return q;
   if (expected.size() != rgb.size() || valid.size() != rgb.size() ||
       (!surprise.empty() && surprise.size() != rgb.size()))
@@ -51,6 +53,11 @@ PredictionQuality MeasurePrediction(const cv::Mat& rgb, const cv::Mat& expected,
   const std::size_t k = std::min(s.size() - 1, s.size() * 95 / 100);
   std::nth_element(s.begin(), s.begin() + long(k), s.end());
   q.p95_surprise = s[k];
+  if (s.size() >= std::size_t(tail_pixels)) {
+    const auto at = s.end() - tail_pixels;
+    std::nth_element(s.begin(), at, s.end());
+    q.tail_surprise = *at;
+  }
   return q;
 }
 
@@ -76,11 +83,12 @@ void WritePredictionCsv(const std::string& path, const std::vector<int>& frame_n
                         const std::vector<PredictionQuality>& frames) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot be written");
-  out << "frame,coverage,psnr_db,mean_surprise,p95_surprise\n";
+  out << "frame,coverage,psnr_db,mean_surprise,p95_surprise,tail_surprise\n";
   for (std::size_t k = 0; k < frames.size() && k < frame_numbers.size(); ++k) {
     const PredictionQuality& q = frames[k];
     out << frame_numbers[k] << ',' << q.coverage << ',' << Cell(q.psnr_db) << ','
-        << Cell(q.mean_surprise) << ',' << Cell(q.p95_surprise) << '\n';
+        << Cell(q.mean_surprise) << ',' << Cell(q.p95_surprise) << ',' << Cell(q.tail_surprise)
+        << '\n';
   }
   if (!out) throw std::runtime_error(path + ": cannot be written");
 }

@@ -65,37 +65,42 @@ std::vector<double> ParseViewFactors(const std::string& list) {
 
 namespace {
 
-// The maps the run feeds: the first CAppearanceMap and CDifferencingMap of the .ini, then, per
-// compare_views factor, copies of their definitions with reference views that many times
-// sparser (fig. 4.13's R2, R4), all in one CMultiMetricMap.
+// The maps the run feeds: the CAppearanceMap of the .ini and its CDifferencingMap if it declares
+// one (the baseline surprise is scored against), then, per compare_views factor, copies of their
+// definitions with reference views that many times sparser (fig. 4.13's R2, R4), all in one
+// CMultiMetricMap.
 struct RunMaps {
   mrpt::maps::CMultiMetricMap multi;
   std::vector<double> sparser_factors;
   std::vector<std::vector<eval::SelectivityRow>> sparser_rows;
+  bool has_differencing = false;
 
   RunMaps(const mrpt::config::CConfigFileBase& ini, const std::string& source, double reduction,
           const std::vector<double>& factors)
       : sparser_factors(factors), sparser_rows(factors.size()) {
-    // The sparser maps are copies of the one appearance and one differencing map.
-    mrpt::maps::TSetOfMetricMapInitializers inits = mrpt_plugins::LoadMultiMapConfig(
-        ini, "map", source, {"CAppearanceMap", "CDifferencingMap"});
-    // CheckMultiMapConfig made these exactly one each.
+    mrpt::maps::TSetOfMetricMapInitializers inits =
+        mrpt_plugins::LoadMultiMapConfig(ini, "map", source, {"CAppearanceMap"});
     std::shared_ptr<mrpt_plugins::CAppearanceMap::TMapDefinition> appearance;
-    std::shared_ptr<mrpt_plugins::CDifferencingMap::TMapDefinition> differencing;
+    std::vector<std::shared_ptr<mrpt_plugins::CDifferencingMap::TMapDefinition>> differencing;
     for (auto& def : inits) {
       if (auto a = std::dynamic_pointer_cast<mrpt_plugins::CAppearanceMap::TMapDefinition>(def))
         appearance = a;
       if (auto d = std::dynamic_pointer_cast<mrpt_plugins::CDifferencingMap::TMapDefinition>(def))
-        differencing = d;
+        differencing.push_back(d);
     }
+    if (differencing.size() > 1)
+      throw std::runtime_error(source + ": [map] declares " + std::to_string(differencing.size()) +
+                               " CDifferencingMap, the run compares with one (0 or 1)");
+    has_differencing = !differencing.empty();
     appearance->config.map.views.new_view_distance *= reduction;
-    differencing->config.map.new_view_distance *= reduction;
+    if (has_differencing) differencing[0]->config.map.new_view_distance *= reduction;
     for (const double f : factors) {
       auto a = *appearance;
       a.config.map.views.new_view_distance *= f;
-      auto d = *differencing;
-      d.config.map.new_view_distance *= f;
       inits.push_back(a);
+      if (!has_differencing) continue;
+      auto d = *differencing[0];
+      d.config.map.new_view_distance *= f;
       inits.push_back(d);
     }
     multi.setListOfMaps(inits);
@@ -105,8 +110,10 @@ struct RunMaps {
   mrpt_plugins::CAppearanceMap& appearance(std::size_t k = 0) const {
     return *multi.mapByClass<mrpt_plugins::CAppearanceMap>(k);
   }
-  mrpt_plugins::CDifferencingMap& differencing(std::size_t k = 0) const {
-    return *multi.mapByClass<mrpt_plugins::CDifferencingMap>(k);
+  /// The differencing map's products, null when the .ini declares none.
+  const appearance::DifferencingProducts* differencing(std::size_t k = 0) const {
+    const auto d = multi.mapByClass<mrpt_plugins::CDifferencingMap>(k);
+    return d ? &d->lastProducts() : nullptr;
   }
   /// The object database, if the .ini declares one.
   mrpt_plugins::CObjectDatabaseMap* objects() const {
@@ -186,14 +193,18 @@ void ReportPrediction(const Played& run, eval::HtmlReport& report) {
 void WriteReport(const std::string& out, const Played& run,
                  const std::vector<sim::GroundTruthReader::Phase>& phases,
                  const std::vector<eval::Finding>& findings, const RunMaps& maps, int views,
-                 const std::vector<std::string>& notes, std::ostream* console) {
+                 const std::vector<std::string>& notes, const std::string& verdict,
+                 std::ostream* console) {
   const std::vector<eval::SelectivityRow>& rows = run.rows;
-  eval::HtmlReport report("NoveltyMaps — Bayesian surprise vs image differencing");
+  eval::HtmlReport report(maps.has_differencing
+                              ? "NoveltyMaps — Bayesian surprise vs image differencing"
+                              : "NoveltyMaps — Bayesian surprise");
   char summary[256];
   std::snprintf(summary, sizeof summary,
                 "%d frames in %.1f s (%.1f frames/s); %d reference views in the map at the end.",
                 run.frames, run.seconds, run.frames / run.seconds, views);
   report.Paragraph(summary);
+  report.Paragraph(verdict);
   for (const std::string& note : notes) report.Paragraph(note);
   ReportPrediction(run, report);
   std::ofstream csv(out + "/findings.csv");
@@ -241,7 +252,8 @@ void WriteReport(const std::string& out, const Played& run,
                   "mean PAS surprise", "mean PAS differencing", "coverage", "higher AS"},
                  table);
   }
-  report.Heading("Panels: camera | expected (τ) | surprise | uncertainty Σβ | differencing");
+  report.Heading(std::string("Panels: camera | expected (τ) | surprise | uncertainty Σβ") +
+                 (maps.has_differencing ? " | differencing" : ""));
   for (int f : run.panel_frames)
     report.Image("panels/" + core::FrameStem(f) + ".png", "frame " + std::to_string(f));
   report.Save(out + "/report.html");
@@ -267,11 +279,11 @@ Played Play(const SurpriseExperimentOptions& a, const std::string& out, RunMaps&
     // The next frame is index + 1: the object database takes it from --objects-from on.
     if (maps.objects()) maps.objects()->setPaused(index + 1 < a.objects_from);
     const appearance::AppearanceProducts& p = map.lastProducts();
-    const appearance::DifferencingProducts& d = maps.differencing().lastProducts();
+    const appearance::DifferencingProducts* d = maps.differencing();
     ++run.frames;
     run.judged.push_back(index);
-    run.prediction.push_back(
-        eval::MeasurePrediction(map.lastFrame().rgb, p.expected_rgb, p.valid, p.surprise));
+    run.prediction.push_back(eval::MeasurePrediction(map.lastFrame().rgb, p.expected_rgb, p.valid,
+                                                     p.surprise, a.verdict.tail_pixels));
     if (object_steps && maps.objects()->framesUsed() != objects_used) {
       objects_used = maps.objects()->framesUsed();
       object_steps->Add(index, maps.objects()->lastStep(), maps.objects()->database().features());
@@ -280,14 +292,13 @@ Played Play(const SurpriseExperimentOptions& a, const std::string& out, RunMaps&
         ground_truth ? ground_truth->ChangedRegions(index, 30) : std::map<std::string, cv::Mat>{};
     for (const auto& [object, region] : regions) {
       run.rows.push_back({index, object, eval::AttentionalSelectivity(p.surprise, region),
-                          eval::AttentionalSelectivity(d.difference, region)});
+                          eval::AttentionalSelectivity(d->difference, region)});
       csv.Add(run.rows.back(), ground_truth->PhaseOf(index));
       for (std::size_t k = 0; k < maps.sparser_factors.size(); ++k) {
         maps.sparser_rows[k].push_back(
             {index, object,
              eval::AttentionalSelectivity(maps.appearance(k + 1).lastProducts().surprise, region),
-             eval::AttentionalSelectivity(maps.differencing(k + 1).lastProducts().difference,
-                                          region)});
+             eval::AttentionalSelectivity(maps.differencing(k + 1)->difference, region)});
       }
     }
     if (index % a.panels_every == 0) {
@@ -333,6 +344,7 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
   if (a.panels_every < 1) throw std::invalid_argument("panels_every must be >= 1");
   if (a.objects_from < 1) throw std::invalid_argument("objects_from must be >= 1");
   if (a.max_frames && *a.max_frames < 1) throw std::invalid_argument("max_frames must be >= 1");
+  a.verdict.Check();
   const MapsConfig config = OpenMapsConfig(a.config);
   RunMaps maps(*config.ini, config.source, a.view_reduction, a.compare_views);
   mrpt_plugins::CAppearanceMap& map = maps.appearance();
@@ -358,6 +370,11 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
   // Scored only where there is ground truth; the run itself needs none.
   std::optional<sim::GroundTruthReader> ground_truth;
   if (!a.groundtruth.empty()) ground_truth.emplace(a.groundtruth);
+  if (ground_truth && !maps.has_differencing)
+    throw std::invalid_argument(
+        "--groundtruth scores surprise against image differencing (thesis 4.3), but " +
+        (a.config.empty() ? std::string("the default maps declare") : a.config + " declares") +
+        " no CDifferencingMap");
   const mrpt_plugins::PoseSource pose_source = mrpt_plugins::ParsePoseSource(a.pose_source);
   if (pose_source == mrpt_plugins::PoseSource::kGroundTruth && !ground_truth)
     throw std::invalid_argument(
@@ -388,10 +405,12 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
     r.notes.push_back("No ground truth given: products, panels and the map; nothing is scored.");
   const std::vector<sim::GroundTruthReader::Phase> phases =
       ground_truth ? ground_truth->Phases() : std::vector<sim::GroundTruthReader::Phase>{};
+  r.verdict = eval::JudgeNovelty(run.judged, run.prediction, a.verdict);
+  r.verdict_sentence = r.verdict.Sentence();
   WriteReport(out, run, phases,
               ground_truth ? ThesisFindings(phases, ground_truth->CameraPoses())
                            : std::vector<eval::Finding>{},
-              maps, map.map().store().size(), r.notes, a.console);
+              maps, map.map().store().size(), r.notes, r.verdict_sentence, a.console);
   eval::WritePredictionCsv(out + "/frames.csv", run.judged, run.prediction);
   r.prediction = eval::SummarisePrediction(run.prediction);
   if (!a.map_out.empty()) map.SaveToFile(a.map_out);
@@ -411,6 +430,32 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
   r.aligned_frames = run.aligned_frames;
   if (run.aligned_frames > 0) r.mean_aligned_deg = run.aligned_deg_sum / run.aligned_frames;
   return r;
+}
+
+std::string SurpriseRunSummary(const SurpriseExperimentResult& r, const std::string& out,
+                               const std::string& map_out) {
+  std::string s;
+  if (!r.objects_summary.empty())
+    s += cv::format("  objects: %s/objects.csv, %s/map.object_database\n  %s\n", out.c_str(),
+                    out.c_str(), r.objects_summary.c_str());
+  s += cv::format(
+      "%d frames (%d skipped) in %.1f s\n  metrics: %s/metrics.csv\n"
+      "  map:     %s (%s)\n  report:  %s/report.html\n",
+      r.frames, r.skipped, r.seconds, out.c_str(), map_out.c_str(), r.map_summary.c_str(),
+      out.c_str());
+  if (r.prediction.frames > 0)
+    s += cv::format(
+        "  predicted: median coverage %.1f %%, PSNR of the expected image %.1f dB, surprise "
+        "%.2f nats (95th percentile %.2f) — %s/frames.csv\n",
+        100 * r.prediction.median_coverage, r.prediction.median_psnr_db,
+        r.prediction.median_mean_surprise, r.prediction.median_p95_surprise, out.c_str());
+  if (r.mean_warp_sigma_px > 0.0)
+    s += cv::format("  warp-error floor: s = %.2f px on average over the frames\n",
+                    r.mean_warp_sigma_px);
+  if (r.aligned_frames > 0)
+    s += cv::format("  aligned to the prior: %d frames, by %.3f deg on average\n", r.aligned_frames,
+                    r.mean_aligned_deg);
+  return s + "  " + r.verdict_sentence + "\n";
 }
 
 }  // namespace novelty::experiments

@@ -1,20 +1,21 @@
 // The experiment of thesis 4.3 and the project's main job: an RGB-D rawlog played, as an MRPT
-// program would, into a CMultiMetricMap built from an .ini (a CAppearanceMap and a
-// CDifferencingMap; per compare_views factor copies of both with reference views that many times
-// sparser, fig. 4.13's R2 and R4; a CObjectDatabaseMap if the .ini declares one), every camera
+// program would, into a CMultiMetricMap built from an .ini (a CAppearanceMap, and the
+// CDifferencingMap that ground truth scores it against if the .ini declares one; per compare_views
+// factor copies of both with reference views that many times sparser, fig. 4.13's R2 and R4; a
+// CObjectDatabaseMap if the .ini declares one), every camera
 // observation passed to insertObservation with the robot pose — from the ground truth, from the
 // CObservationRobotPose novelty-poses put into the rawlog, or from wheel odometry — and the
 // products read back from the maps. The output folder gets
-//   panels/NNNNNN.png  camera | expected | surprise | uncertainty | differencing
+//   panels/NNNNNN.png  camera | expected | surprise | uncertainty [| differencing]
 //   metrics.csv        frame,phase,object,AS_surprise,PAS_surprise,AS_diff,PAS_diff,coverage
 //                      (the share of pixels with a prediction, which AS is measured over) for every
 //                      changed object in view (regions from the ground-truth novelty masks: added
 //                      objects and the arm by id, "removed" where objects were taken)
 //   findings.csv       the findings of thesis 4.3, each over the first run after its change, with
 //                      its numbers and whether it holds (fig. 4.13 too with compare_views)
-//   frames.csv         frame,coverage,psnr_db,mean_surprise,p95_surprise: how well the map
-//                      predicted each frame (eval/prediction_quality.h), with or without ground
-//                      truth (metrics.csv and findings.csv need it)
+//   frames.csv         frame,coverage,psnr_db,mean_surprise,p95_surprise,tail_surprise: how well
+//                      the map predicted each frame (eval/prediction_quality.h), with or without
+//                      ground truth (metrics.csv and findings.csv need it)
 //   report.html        the findings, plots of AS/PAS over frames, a table per object and phase,
 //                      panels
 //   map.3Dscene        the reference-view frusta, for SceneViewer3D
@@ -28,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/novelty_verdict.h"
 #include "eval/prediction_quality.h"
 #include "eval/selectivity_findings.h"
 
@@ -54,6 +56,9 @@ struct SurpriseExperimentOptions {
   double view_reduction = 1.0;
   /// Also maps with reference views this many times sparser, side by side (ParseViewFactors).
   std::vector<double> compare_views;
+  /// When a frame counts as showing something new, for the report's verdict (no ground truth
+  /// needed).
+  eval::NoveltyVerdictOptions verdict;
   /// Told a line of what happens (a map continued, frames skipped, an early end).
   std::function<void(const std::string& line)> status;
   /// Told the frame inserted last and the frames to expect.
@@ -77,6 +82,10 @@ struct SurpriseExperimentResult {
   /// How well the map predicted the frames (frames.csv per frame): medians of coverage, PSNR of
   /// the expected image and the surprise level, ground truth or not.
   eval::PredictionSummary prediction;
+  /// Where something new was in view, from the surprise alone (eval/novelty_verdict.h), and the
+  /// report's sentence for it.
+  eval::NoveltyVerdict verdict;
+  std::string verdict_sentence;
 };
 
 /// "2,4" -> {2, 4}; throws std::invalid_argument unless each is a finite factor >= 1 (at most 8).
@@ -87,5 +96,10 @@ std::vector<double> ParseViewFactors(const std::string& list);
 /// inserted (then no map is saved).
 SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& options,
                                                const std::string& out_dir);
+
+/// What a program prints after a run whose results are in `out_dir` and whose appearance map was
+/// saved to `map_out`: counts, where the files are, the prediction's medians and the verdict.
+std::string SurpriseRunSummary(const SurpriseExperimentResult& r, const std::string& out_dir,
+                               const std::string& map_out);
 
 }  // namespace novelty::experiments

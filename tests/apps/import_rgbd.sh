@@ -31,6 +31,9 @@ grep -q "^12 frames (0 skipped)" "$W/run.out" || fail "novelty-run: $(head -3 "$
 test -s "$W/run/map.appearance_map" || fail "no map saved"
 test -s "$W/run/report.html" || fail "no report"
 grep -q "No ground truth given" "$W/run/report.html" || fail "the report does not say it scored nothing"
+# Nothing was added to the cabinet's room: the verdict, from the surprise alone, must say so.
+grep -q "Nothing new in frames 2–12" "$W/run.out" || fail "verdict: $(tail -1 "$W/run.out")"
+grep -q "Nothing new in frames 2–12" "$W/run/report.html" || fail "the report has no verdict"
 test "$(ls "$W/run/panels" | wc -l)" -eq 3 || fail "not a panel every 4 frames"
 # How well the map predicted each frame from the ones before (frames.csv), medians over the 11
 # frames with a prediction. Targets: the coverage issue 51 asks of real RGB-D (>= 80 % of the

@@ -27,6 +27,10 @@ TEST(PredictionQuality, ClosedFormsOnAHalfPredictedFrame) {
   EXPECT_NEAR(q.psnr_db, 10 * std::log10(255.0 * 255.0 / 25.0), 1e-9);
   EXPECT_DOUBLE_EQ(q.mean_surprise, 25.5);
   EXPECT_DOUBLE_EQ(q.p95_surprise, 48.0);  // index 47 of 1…50
+  EXPECT_DOUBLE_EQ(q.tail_surprise, 1.0);  // the 50th most surprising of 50
+  EXPECT_DOUBLE_EQ(MeasurePrediction(rgb, expected, valid, surprise, 3).tail_surprise, 48.0);
+  EXPECT_TRUE(std::isnan(MeasurePrediction(rgb, expected, valid, surprise, 51).tail_surprise));
+  EXPECT_THROW(MeasurePrediction(rgb, expected, valid, surprise, 0), std::invalid_argument);
   const PredictionQuality first = MeasurePrediction(rgb, cv::Mat(), cv::Mat(), cv::Mat());
   EXPECT_EQ(first.coverage, 0.0);
   EXPECT_TRUE(std::isnan(first.psnr_db));
@@ -58,7 +62,7 @@ TEST(PredictionQuality, SummaryIsMediansOverPredictedFrames) {
   std::string header, first;
   std::getline(in, header);
   std::getline(in, first);
-  EXPECT_EQ(header, "frame,coverage,psnr_db,mean_surprise,p95_surprise");
+  EXPECT_EQ(header, "frame,coverage,psnr_db,mean_surprise,p95_surprise,tail_surprise");
   EXPECT_EQ(first.substr(0, 4), "1,0,");
   std::filesystem::remove(path);
 }

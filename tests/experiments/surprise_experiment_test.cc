@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -84,6 +85,37 @@ TEST_F(SurpriseRun, TheBlackCupIsDetectedByBothAndTheRunWritesItsFiles) {
   EXPECT_EQ(Lines(fs::path(out) / "frames.csv").size(), 103u);
   EXPECT_EQ(r.prediction.frames, 101) << "every frame but the first";
   EXPECT_GT(r.prediction.median_coverage, 0.9);
+  // The verdict, from the surprise alone: the cup is put down at frame 64 and nothing changes
+  // before, so every stretch of something new lies in 64-102, and there is one.
+  ASSERT_FALSE(r.verdict.stretches.empty()) << r.verdict_sentence;
+  for (const eval::NovelStretch& s : r.verdict.stretches) {
+    EXPECT_GE(s.first, 64) << r.verdict_sentence;
+    EXPECT_LE(s.last, 102);
+  }
+  EXPECT_EQ(r.verdict_sentence.rfind("Something new in frames ", 0), 0u) << r.verdict_sentence;
+}
+
+// Before the cup, the room as learnt: nothing new, said so; and a configuration without a
+// differencing map runs too (panels of four tiles), unless ground truth asks to score against it.
+TEST_F(SurpriseRun, NothingNewBeforeTheCupAndNoDifferencingMapNeeded) {
+  const fs::path ini = dir_ / "appearance_only.ini";
+  std::ofstream(ini) << "[map]\nCAppearanceMap_count = 1\n";
+  SurpriseExperimentOptions o = Options();
+  o.config = ini.string();
+  EXPECT_THROW(RunSurpriseExperiment(o, Out("scored_alone")), std::invalid_argument);
+  o.groundtruth.clear();
+  o.pose_source = "odometry";
+  o.max_frames = 63;
+  o.panels_every = 62;
+  const std::string out = Out("alone");
+  const SurpriseExperimentResult r = RunSurpriseExperiment(o, out);
+  EXPECT_EQ(r.frames, 63);
+  EXPECT_TRUE(r.verdict.stretches.empty()) << r.verdict_sentence;
+  EXPECT_EQ(r.verdict_sentence.rfind("Nothing new in frames ", 0), 0u) << r.verdict_sentence;
+  EXPECT_NE(SurpriseRunSummary(r, out, "m").find(r.verdict_sentence), std::string::npos);
+  const cv::Mat panel = cv::imread(out + "/panels/000062.png");
+  ASSERT_FALSE(panel.empty());
+  EXPECT_EQ(panel.cols, 4 * 160 + 3 * 4) << "camera, expected, surprise, uncertainty";
 }
 
 // Without ground truth: the same run from the rawlog's wheel odometry, nothing scored (a
