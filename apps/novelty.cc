@@ -19,6 +19,7 @@ constexpr const char* kCommands[][2] = {
     {"import", "a recorded RGB-D sequence (TUM RGB-D, ICL-NUIM, 7-Scenes) into an MRPT rawlog"},
     {"sim", "simulate a scenario into an MRPT rawlog with ground truth"},
     {"run", "play a rawlog through the maps: surprise, panels, metrics, report"},
+    {"insert", "a synthetic box drawn into a real RGB-D rawlog, scored against differencing"},
     {"depth", "depth maps from a stereo or trinocular rawlog"},
     {"poses", "camera poses from the LED tracker or visual odometry into a rawlog"},
     {"synth", "view synthesis from a rawlog or an RGB-D folder"},

@@ -5,6 +5,7 @@
 //               [--config share/novelty_run.ini] [--frames N] [--panels-every K]
 //               [--poses groundtruth|rawlog|odometry] [--compare-views 2,4]
 //               [--map-in M] [--map-out M] [--objects-in D] [--objects-from N] [--view-reduction N]
+//               [--learn-until N] [--novelty-z Z]
 //
 // OUT: panels/, frames.csv, metrics.csv, findings.csv, report.html, map.3Dscene, the appearance
 // map (OUT/map.appearance_map unless --map-out), and with a CObjectDatabaseMap in the .ini
@@ -38,7 +39,7 @@ struct RunArgs {
   std::string rawlog, truth, out, config, map_in, map_out, compare_views, objects_in;
   std::optional<int> max_frames;
   int panels_every = 10;
-  int objects_from = 1;
+  int objects_from = 1, learn_until = 0;
   std::string pose_source = "groundtruth";
   double reduction = 1.0, z = 0.0;
 };
@@ -98,6 +99,11 @@ RunArgs ParseArgs(int argc, char** argv) {
                             "median frame (default " +
                                 std::string(z_text) + ")",
                             false, default_z, "Z", cmd);
+  TCLAP::ValueArg<int> learn_until(
+      "", "learn-until",
+      "After frame N the maps judge without learning: built from frames 1-N, they judge the rest "
+      "as they were (default 0: they learn throughout)",
+      false, 0, "N", cmd);
   TCLAP::ValueArg<double> reduction("", "view-reduction",
                                     "Space reference views N times wider than configured: the "
                                     "thesis's R2 and R4 experiments (fig. 4.13) use 2 and 4",
@@ -124,6 +130,8 @@ RunArgs ParseArgs(int argc, char** argv) {
   a.pose_source = pose_source.isSet() || truth.isSet() ? pose_source.getValue() : "rawlog";
   a.reduction = reduction.getValue();
   a.z = z.getValue();
+  a.learn_until = learn_until.getValue();
+  if (a.learn_until < 0) throw std::invalid_argument("--learn-until must be >= 0");
   if (!(a.z >= 0.0 && a.z < 1e6)) throw std::invalid_argument("--novelty-z must be in [0, 1e6)");
   if (!(a.reduction >= 1.0)) throw std::invalid_argument("--view-reduction must be >= 1");
   if (a.panels_every < 1) throw std::invalid_argument("--panels-every must be >= 1");
@@ -161,6 +169,7 @@ int Run(int argc, char** argv) {
   o.pose_source = a.pose_source;
   o.view_reduction = a.reduction;
   o.verdict.z = a.z;
+  o.learn_until = a.learn_until;
   o.compare_views = experiments::ParseViewFactors(a.compare_views);
   o.console = &std::cout;
   o.status = [](const std::string& line) {

@@ -93,7 +93,9 @@ std::string NoveltyVerdict::Sentence() const {
   for (std::size_t k = 0; k < stretches.size(); ++k) {
     const NovelStretch& r = stretches[k];
     if (k > 0) s += k + 1 == stretches.size() ? " and " : ", ";
-    s += cv::format("%d–%d (peak %.1f nats)", r.first, r.last, r.peak_nats);
+    s += (r.first == r.last ? std::to_string(r.first)
+                            : std::to_string(r.first) + "–" + std::to_string(r.last)) +
+         cv::format(" (peak %.1f nats)", r.peak_nats);
   }
   return s +
          cv::format(" of the %d frames judged in %d–%d (", frames_judged, first_frame, last_frame) +

@@ -115,6 +115,13 @@ struct RunMaps {
     const auto d = multi.mapByClass<mrpt_plugins::CDifferencingMap>(k);
     return d ? &d->lastProducts() : nullptr;
   }
+  /// Whether the appearance and differencing maps, sparser ones too, learn from what they judge.
+  void SetLearning(bool on) {
+    for (const auto& m : multi.maps) {
+      if (auto a = std::dynamic_pointer_cast<mrpt_plugins::CAppearanceMap>(m)) a->setLearning(on);
+      if (auto d = std::dynamic_pointer_cast<mrpt_plugins::CDifferencingMap>(m)) d->setLearning(on);
+    }
+  }
   /// The object database, if the .ini declares one.
   mrpt_plugins::CObjectDatabaseMap* objects() const {
     return multi.mapByClass<mrpt_plugins::CObjectDatabaseMap>().get();
@@ -278,6 +285,7 @@ Played Play(const SurpriseExperimentOptions& a, const std::string& out, RunMaps&
   while ((!a.max_frames || run.frames < *a.max_frames) && player.Next(maps.multi, index)) {
     // The next frame is index + 1: the object database takes it from --objects-from on.
     if (maps.objects()) maps.objects()->setPaused(index + 1 < a.objects_from);
+    maps.SetLearning(a.learn_until == 0 || index + 1 <= a.learn_until);
     const appearance::AppearanceProducts& p = map.lastProducts();
     const appearance::DifferencingProducts* d = maps.differencing();
     ++run.frames;
@@ -343,6 +351,7 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
   if (!(a.view_reduction >= 1.0)) throw std::invalid_argument("view_reduction must be >= 1");
   if (a.panels_every < 1) throw std::invalid_argument("panels_every must be >= 1");
   if (a.objects_from < 1) throw std::invalid_argument("objects_from must be >= 1");
+  if (a.learn_until < 0) throw std::invalid_argument("learn_until must be >= 0");
   if (a.max_frames && *a.max_frames < 1) throw std::invalid_argument("max_frames must be >= 1");
   a.verdict.Check();
   const MapsConfig config = OpenMapsConfig(a.config);

@@ -51,6 +51,9 @@ struct SurpriseExperimentOptions {
   /// The CObjectDatabaseMap takes frames from this one on; before, the appearance map learns the
   /// room alone (the thesis's I1: 361 for share/scenarios/object_learning.scn).
   int objects_from = 1;
+  /// After this frame the appearance and differencing maps judge without learning: built from the
+  /// frames up to it, they judge the rest as they were (0: they learn throughout).
+  int learn_until = 0;
   std::string pose_source = "groundtruth";  ///< groundtruth | rawlog | odometry
   /// Reference views this many times wider than configured (fig. 4.13's R2 and R4: 2 and 4).
   double view_reduction = 1.0;

@@ -62,6 +62,13 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   mrpt::img::CImage expectedImage() const { return ToCImage(last_.expected_rgb); }
   /// Frames inserted since construction (never reset).
   long framesInserted() const { return frames_inserted_; }
+  /// Off: frames inserted are judged (products as ever) but change nothing in the map — built
+  /// from one pass, it judges the next as it was. Kept across a load or clear; not saved.
+  void setLearning(bool on) {
+    learning_ = on;
+    map_->view_map().set_learning(on);
+  }
+  bool learning() const { return learning_; }
   /// Times a load or clear put a new map in place: a map that keeps something taken from this
   /// one (CObjectDatabaseMap's room depth) tells by it that what it took is gone.
   long mapsReplaced() const { return maps_replaced_; }
@@ -146,6 +153,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   }
   void ReplaceMap(std::unique_ptr<Map> map) {
     map_ = std::move(map);
+    map_->view_map().set_learning(learning_);
     ++maps_replaced_;
     last_ = {};
     frame_ = {};
@@ -227,6 +235,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
   const char* name_;
   const char* extension_;
   long frames_inserted_ = 0;
+  bool learning_ = true;
   long maps_replaced_ = 0;
 };
 

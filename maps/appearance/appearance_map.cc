@@ -182,8 +182,9 @@ AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
     : options_(options), map_(options.views), tile_work_(std::make_unique<TileWorkPool>()) {
   options_.surprise.update.Check();
   if (!(std::isfinite(options_.warp_sigma_px) && options_.warp_sigma_px >= 0.0)) {
-    throw std::invalid_argument("AppearanceMapOptions: warp_sigma_px must be finite and >= 0, got " +
-                                std::to_string(options_.warp_sigma_px));
+    throw std::invalid_argument(
+        "AppearanceMapOptions: warp_sigma_px must be finite and >= 0, got " +
+        std::to_string(options_.warp_sigma_px));
   }
   stats::CheckNormalGamma(options_.initial_prior, "AppearanceMapOptions::initial_prior");
 }
@@ -227,7 +228,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
       prior = map_.Predict(camera, pose, planes, predict_depth_);
     }
   }
-  const bool learn = options_.learn_warp_sigma && prior.warped;
+  const bool learn = options_.learn_warp_sigma && prior.warped && map_.learning();
   const double warp_sigma =
       prior.warped ? std::max(options_.warp_sigma_px, std::sqrt(learnt_warp_variance_)) : 0.0;
   const stats::NormalGamma& init = options_.initial_prior;
@@ -249,7 +250,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   // Beside the tiles, when the frame was warped, one more task: the mesh plan of the frame's
   // depth, which the view the frame becomes keeps for its next warp — a moving camera warps it
   // next frame (a static camera never does, and is not charged for it).
-  const int plan_tasks = prior.warped ? 1 : 0;
+  const int plan_tasks = prior.warped && map_.learning() ? 1 : 0;
   views::MeshPlan plan;
   cv::parallel_for_(
       cv::Range(0, plan_tasks + tiles),

@@ -216,6 +216,7 @@ ViewBasedMap::UpdateResult ViewBasedMap::Update(const core::PinholeCamera& camer
                                                 std::map<std::string, cv::Mat> payload,
                                                 const std::vector<int>& selected,
                                                 views::MeshPlan plan) {
+  if (!learning_) return {};
   double nearest = std::numeric_limits<double>::infinity();
   int nearest_view = -1;
   for (int j = 0; j < store_.size(); ++j) {

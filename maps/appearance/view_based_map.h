@@ -116,6 +116,10 @@ class ViewBasedMap {
   UpdateResult Update(const core::PinholeCamera& camera, const Eigen::Isometry3d& T_world_cam,
                       cv::Mat depth, std::map<std::string, cv::Mat> payload,
                       const std::vector<int>& selected, views::MeshPlan plan = {});
+  /// Off: Update changes nothing (no view added, none replaced), so that frames are judged
+  /// against the map as it was — learnt from one pass, judging the next. On by default.
+  void set_learning(bool on) { learning_ = on; }
+  bool learning() const { return learning_; }
 
   const views::ReferenceViewStore& store() const { return store_; }
   /// The pose of each view when it was created (same order as the store).
@@ -133,6 +137,7 @@ class ViewBasedMap {
 
   views::ReferenceViewStore store_;
   std::vector<Eigen::Isometry3d> anchors_;  // pose of each view when it was created
+  bool learning_ = true;
   // Per view, its mesh plan for the warper (mesh_plan.h; a byte per pixel): given with it by
   // Update, or else made at its first warp (a static camera replaces its view every frame and
   // never warps it); dropped with the decoded view when the store evicts it.

@@ -60,7 +60,9 @@ TEST(NoveltyVerdict, StretchesOfAtLeastMinFramesWithTheirPeaks) {
   tail[20] = tail[21] = tail[22] = 20;  // frames 21-23
   tail[21] = 30;
   const JudgedRun run(tail);
-  const NoveltyVerdict v = JudgeNovelty(run.numbers, run.frames);
+  NoveltyVerdictOptions two;
+  two.min_frames = 2;
+  const NoveltyVerdict v = JudgeNovelty(run.numbers, run.frames, two);
   ASSERT_EQ(v.stretches.size(), 2u);
   EXPECT_EQ(v.stretches[0].first, 6);
   EXPECT_EQ(v.stretches[0].last, 7);
@@ -74,9 +76,10 @@ TEST(NoveltyVerdict, StretchesOfAtLeastMinFramesWithTheirPeaks) {
                     0),
             0u)
       << s;
-  NoveltyVerdictOptions one;
-  one.min_frames = 1;
-  EXPECT_EQ(JudgeNovelty(run.numbers, run.frames, one).stretches.size(), 3u);
+  const NoveltyVerdict one = JudgeNovelty(run.numbers, run.frames);
+  ASSERT_EQ(one.stretches.size(), 3u) << "one frame is a stretch by default";
+  EXPECT_NE(one.Sentence().find(", 11 (peak 9.5 nats) and 21–23"), std::string::npos)
+      << one.Sentence();
 }
 
 TEST(NoveltyVerdict, AnUnpredictedFrameNeitherBreaksNorExtendsAStretch) {

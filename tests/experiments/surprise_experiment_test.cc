@@ -137,6 +137,29 @@ TEST_F(SurpriseRun, RunsWithoutGroundTruth) {
   EXPECT_NE(r.notes.back().find("No ground truth"), std::string::npos);
 }
 
+// learn_until: after frame 40 the maps judge without learning, so they end with the views a run
+// stopped at frame 40 has, and the cup put down at 64 stays new: its PAS at the end of the run
+// is higher than with learning, where the map has taken it in.
+TEST_F(SurpriseRun, MapsLearnUntilTheFrameAskedAndJudgeTheRestAsTheyWere) {
+  SurpriseExperimentOptions o = Options();
+  o.max_frames = 40;
+  const SurpriseExperimentResult first = RunSurpriseExperiment(o, Out("first40"));
+  o.max_frames.reset();
+  o.learn_until = 40;
+  const SurpriseExperimentResult frozen = RunSurpriseExperiment(o, Out("frozen"));
+  EXPECT_EQ(frozen.frames, 102);
+  EXPECT_EQ(frozen.views, first.views);
+  o.learn_until = 0;
+  const SurpriseExperimentResult learning = RunSurpriseExperiment(o, Out("learning"));
+  EXPECT_GT(learning.views, frozen.views);
+  const auto last_cup = [](const SurpriseExperimentResult& r) {
+    return eval::MeanOver(r.rows, "cup", 95, 102).pas_surprise;
+  };
+  EXPECT_GT(last_cup(frozen), last_cup(learning));
+  o.learn_until = -1;
+  EXPECT_THROW(RunSurpriseExperiment(o, Out("bad")), std::invalid_argument);
+}
+
 // fig. 4.13: maps with sparser reference views run side by side and hold fewer views.
 TEST_F(SurpriseRun, SparserMapsRunSideBySide) {
   SurpriseExperimentOptions o = Options();
