@@ -62,7 +62,9 @@ int Run(int argc, char** argv) {
   if (frames.isSet()) o.max_frames = frames.getValue();
   o.panels_every = panels.getValue();
   o.judge_only = judge_only.getValue();
-  if (o.insert_from < 0) throw apps::UsageError("--from must be >= 1");
+  if (o.insert_from < 0 || o.insert_from == 1)
+    throw apps::UsageError("--from must be 2 or more: the maps learn from the frames before");
+  if (o.max_frames && *o.max_frames < 2) throw apps::UsageError("--frames must be >= 2");
   if (o.panels_every < 1) throw apps::UsageError("--panels-every must be >= 1");
   o.status = [](const std::string& line) {
     std::fprintf(stderr, "novelty-insert: %s\n", line.c_str());

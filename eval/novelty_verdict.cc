@@ -58,7 +58,9 @@ NoveltyVerdict JudgeNovelty(const std::vector<int>& frame_numbers,
   for (double x : level)
     if (x <= v.median_nats) deviation.push_back(v.median_nats - x);
   v.sigma_nats = 1.4826 * Median(deviation);  // σ of a normal distribution from its MAD
+  v.z = options.z;
   v.threshold_nats = std::max(options.floor_nats, v.median_nats + options.z * v.sigma_nats);
+  v.at_floor = v.threshold_nats > v.median_nats + options.z * v.sigma_nats;
   NovelStretch run;
   int run_frames = 0;
   const auto close_run = [&] {
@@ -81,10 +83,13 @@ NoveltyVerdict JudgeNovelty(const std::vector<int>& frame_numbers,
 
 std::string NoveltyVerdict::Sentence() const {
   if (frames_judged == 0) return "No frame was predicted by the map: nothing could be judged.";
-  const std::string rule = cv::format(
-      "a frame counts when at least %d of its pixels are %.1f nats surprising or more: the run's "
-      "median %.1f nats plus z robust deviations of %.1f",
-      tail_pixels, threshold_nats, median_nats, sigma_nats);
+  const std::string rule =
+      cv::format("a frame counts when at least %d of its pixels are %.1f nats surprising or more",
+                 tail_pixels, threshold_nats) +
+      (at_floor ? cv::format(": the floor, above the run's median %.1f nats plus %g × %.1f",
+                             median_nats, z, sigma_nats)
+                : cv::format(": the run's median %.1f nats plus %g × its robust deviation %.1f",
+                             median_nats, z, sigma_nats));
   if (stretches.empty())
     return cv::format("Nothing new in frames %d–%d (%d frames judged; ", first_frame, last_frame,
                       frames_judged) +

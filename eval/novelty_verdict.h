@@ -48,6 +48,8 @@ struct NoveltyVerdict {
   double median_nats = 0.0, sigma_nats = 0.0;  ///< the run's level and robust spread
   double threshold_nats = 0.0;                 ///< what a frame had to reach
   int tail_pixels = 50;                        ///< the statistic's pixel, as in the options
+  double z = 3.0;                              ///< as in the options
+  bool at_floor = false;                       ///< the floor, not the spread, set the threshold
   std::vector<NovelStretch> stretches;
   /// "Nothing new in frames 2–58 (…)." or "Something new in frames 64–80 (peak 12.3 nats), …".
   std::string Sentence() const;

@@ -7,6 +7,8 @@
 
 #include "core/frame_stem.h"
 #include "core/range_check.h"
+#include "experiments/maps_config.h"
+#include "mrpt_plugins/multi_map_config.h"
 #include "sensors/dataset/rgbd_importer.h"
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
@@ -88,6 +90,11 @@ void WriteInserted(const InsertedObjectRunOptions& o, int insert_from, int frame
     if (o.progress) o.progress("drawing the box in", k, frames);
   }
   if (!truth) throw std::runtime_error(o.rawlog + ": no RGB-D frame could be read");
+  // A skipped frame would shift the box and the ground truth against the frames asked for.
+  if (reader.skipped() > 0)
+    throw std::runtime_error(o.rawlog + ": " + std::to_string(reader.skipped()) +
+                             " RGB-D frames could not be read (" + reader.skip_reasons().front() +
+                             "); the box needs every frame");
   truth->WriteEvents({});
   truth->WriteObjects();
   rawlog.Close();
@@ -101,6 +108,12 @@ InsertedObjectRunResult RunInsertedObject(const InsertedObjectRunOptions& o,
   if (!(o.size.minCoeff() > 0.0 && o.size.maxCoeff() <= 10.0))
     throw std::invalid_argument("box size: edge lengths in (0, 10] m");
   if (o.max_frames && *o.max_frames < 2) throw std::invalid_argument("max_frames must be >= 2");
+  // The baseline the box is scored against, checked before any frame is drawn.
+  const MapsConfig maps = OpenMapsConfig(o.config);
+  if (mrpt_plugins::CheckMultiMapConfig(*maps.ini, "map", maps.source)["CDifferencingMap"] != 1)
+    throw std::invalid_argument(maps.source +
+                                ": the box is scored against image differencing; declare "
+                                "CDifferencingMap_count = 1");
   int frames = CountFrames(o.rawlog);
   if (o.max_frames) frames = std::min(frames, *o.max_frames);
   if (frames < 2) throw std::runtime_error(o.rawlog + ": fewer than 2 RGB-D frames");

@@ -381,7 +381,7 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
   if (!a.groundtruth.empty()) ground_truth.emplace(a.groundtruth);
   if (ground_truth && !maps.has_differencing)
     throw std::invalid_argument(
-        "--groundtruth scores surprise against image differencing (thesis 4.3), but " +
+        "ground truth scores surprise against image differencing (thesis 4.3), but " +
         (a.config.empty() ? std::string("the default maps declare") : a.config + " declares") +
         " no CDifferencingMap");
   const mrpt_plugins::PoseSource pose_source = mrpt_plugins::ParsePoseSource(a.pose_source);

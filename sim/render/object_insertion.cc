@@ -62,6 +62,8 @@ Eigen::Isometry3d ObjectInserter::StandInFrontOf(const cv::Mat& depth,
   if (depth.type() != CV_32FC1 || depth.cols != camera.width || depth.rows != camera.height)
     throw std::invalid_argument("StandInFrontOf: a depth image of the camera's size");
   const int half = 10;
+  if (camera.width < 2 * half + 1 || camera.height < 2 * half + 1)
+    throw std::invalid_argument("StandInFrontOf: a camera of at least 21x21 pixels");
   const int u0 = std::clamp(int(std::lround(camera.cx)), half, camera.width - half - 1);
   const int v0 = std::clamp(int(std::lround(camera.cy)), half, camera.height - half - 1);
   std::vector<float> known;

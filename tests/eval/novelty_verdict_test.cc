@@ -49,7 +49,14 @@ TEST(NoveltyVerdict, ThresholdIsMedianPlusZRobustDeviations) {
   EXPECT_EQ(s.rfind("Nothing new in frames 2–31 (30 frames judged; ", 0), 0u) << s;
   // A still scene: σ̂ 0, and the floor keeps the threshold from the median itself.
   const JudgedRun still({0, 1, 1, 1, 1, 1.2, 1.3});
-  EXPECT_DOUBLE_EQ(JudgeNovelty(still.numbers, still.frames).threshold_nats, 5.0);
+  const NoveltyVerdict floor = JudgeNovelty(still.numbers, still.frames);
+  EXPECT_DOUBLE_EQ(floor.threshold_nats, 5.0);
+  EXPECT_TRUE(floor.at_floor);
+  EXPECT_FALSE(v.at_floor);
+  EXPECT_NE(floor.Sentence().find("the floor"), std::string::npos) << floor.Sentence();
+  EXPECT_NE(v.Sentence().find("median 5.0 nats plus 3 × its robust deviation 0.7"),
+            std::string::npos)
+      << v.Sentence();
 }
 
 TEST(NoveltyVerdict, StretchesOfAtLeastMinFramesWithTheirPeaks) {

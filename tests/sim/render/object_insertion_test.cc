@@ -76,7 +76,7 @@ TEST(ObjectInserter, TheRealSceneOccludesItAndUnknownDepthDoesNot) {
 }
 
 // Seen from 1 m to the right, the cube's centre projects 100·(−1)/2.35 = −42.6 px from the
-// principal point, and its left face shows as well.
+// principal point, and its +x face (nearest that camera) shows as well.
 TEST(ObjectInserter, SeenFromElsewhereItIsWhereItStands) {
   Wall w;
   const InsertedBoxOptions o = CubeBefore(w, 0.5);
