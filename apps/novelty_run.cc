@@ -79,8 +79,7 @@ RunArgs ParseArgs(int argc, char** argv) {
   TCLAP::ValueArg<int> objects_from(
       "", "objects-from",
       "The CObjectDatabaseMap takes frames from this one on (default 1); before, the appearance "
-      "map learns the room alone (the thesis's I1: 361 for share/scenarios/object_learning.scn; "
-      "a frame skipped just before it delays the start by one)",
+      "map learns the room alone (the thesis's I1: 361 for share/scenarios/object_learning.scn)",
       false, 1, "N", cmd);
   std::vector<std::string> pose_sources = {"groundtruth", "rawlog", "odometry"};
   TCLAP::ValuesConstraint<std::string> allowed_poses(pose_sources);

@@ -275,7 +275,11 @@ Played Play(const SurpriseExperimentOptions& a, const std::string& out, RunMaps&
   std::optional<eval::ObjectStepsCsv> object_steps;
   if (maps.objects()) object_steps.emplace(out + "/objects.csv");
   int objects_used = 0;  // frames the object database took so far
-  if (maps.objects()) maps.objects()->setPaused(a.objects_from > 1);
+  // What a frame's number decides, decided for the frame actually inserted.
+  player.SetBeforeInsert([&](int frame) {
+    if (maps.objects()) maps.objects()->setPaused(frame < a.objects_from);
+    maps.SetLearning(a.learn_until == 0 || frame <= a.learn_until);
+  });
   Played run;
   int index = 0;
   const auto start = std::chrono::steady_clock::now();
@@ -283,9 +287,6 @@ Played Play(const SurpriseExperimentOptions& a, const std::string& out, RunMaps&
   const int poses = ground_truth ? int(ground_truth->CameraPoses().size()) : 0;
   const int total = a.max_frames ? (poses ? std::min(*a.max_frames, poses) : *a.max_frames) : poses;
   while ((!a.max_frames || run.frames < *a.max_frames) && player.Next(maps.multi, index)) {
-    // The next frame is index + 1: the object database takes it from --objects-from on.
-    if (maps.objects()) maps.objects()->setPaused(index + 1 < a.objects_from);
-    maps.SetLearning(a.learn_until == 0 || index + 1 <= a.learn_until);
     const appearance::AppearanceProducts& p = map.lastProducts();
     const appearance::DifferencingProducts* d = maps.differencing();
     ++run.frames;

@@ -123,6 +123,7 @@ bool RawlogMapPlayer::Next(mrpt::maps::CMultiMetricMap& maps, int& frame) {
     try {
       sensors::CheckExternalDepth(*obs);
       obs->load();  // once for all the maps that decode it; unloaded when they are done
+      if (before_insert_) before_insert_(frame);
       const bool used = maps.insertObservation(*obs, *robot);
       obs->unload();
       if (!used) {

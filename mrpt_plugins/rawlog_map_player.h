@@ -15,6 +15,7 @@
 #include <mrpt/obs/CObservation.h>
 
 #include <Eigen/Geometry>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -47,6 +48,11 @@ class RawlogMapPlayer {
   /// rawlog of several). Throws std::invalid_argument unless 1 ≤ first ≤ last.
   void SetFrameRange(int first, int last);
 
+  /// Called with a frame's number just before it goes into the maps (not for frames skipped
+  /// before that), so that what a frame number decides — a map paused or learning — follows the
+  /// frame actually inserted, however many were skipped before it.
+  void SetBeforeInsert(std::function<void(int frame)> hook) { before_insert_ = std::move(hook); }
+
   int skipped() const { return int(skip_reasons_.size()); }
   const std::vector<std::string>& skip_reasons() const { return skip_reasons_; }
   /// Why the play ended early (a truncated rawlog), or empty.
@@ -57,6 +63,7 @@ class RawlogMapPlayer {
   std::unique_ptr<Impl> impl_;
   std::vector<std::string> skip_reasons_;
   std::string stopped_by_;
+  std::function<void(int frame)> before_insert_;
 };
 
 }  // namespace novelty::mrpt_plugins

@@ -124,9 +124,15 @@ TEST(RawlogMapPlayer, MissingPosesAndATruncatedRawlogAreReportedNotFatal) {
   BuildMaps(mrpt::config::CConfigFileMemory(kIni), multi);
   {
     RawlogMapPlayer player((dir / "clip.rawlog").string(), PoseSource::kGroundTruth, poses);
+    std::vector<int> hooked, inserted;
+    player.SetBeforeInsert([&](int frame) { hooked.push_back(frame); });
     int index = 0, frames = 0;
-    while (player.Next(multi, index)) ++frames;
+    while (player.Next(multi, index)) {
+      ++frames;
+      inserted.push_back(index);
+    }
     EXPECT_EQ(frames, 23);
+    EXPECT_EQ(hooked, inserted) << "told of each frame inserted, not of the skipped frame 3";
     ASSERT_EQ(player.skipped(), 1);
     EXPECT_NE(player.skip_reasons()[0].find("frame 3"), std::string::npos)
         << player.skip_reasons()[0];
