@@ -5,10 +5,11 @@
 //
 //   novelty-invariant DIR --out OUT [--colour per-channel|luminance-chromaticity]
 //                     [--min-intensity 3] [--min-lightings 2] [--kappa 0.5]
+//                     [--include GLOB ...] [--exclude GLOB ...]
 //
-// DIR holds the lightings (every image file in name order; see sensors/dataset/
-// lighting_folder_reader.h) and optionally mask.png; in the MIT Intrinsic Images layout
-// (reflectance.png, shading.png, diffuse.png) the decomposition is also scored with the
+// DIR holds the lightings (every image file in name order, or those the patterns pick; see
+// sensors/dataset/lighting_folder_reader.h) and optionally mask.png; in the MIT Intrinsic Images
+// layout (reflectance.png, shading.png, diffuse.png) the decomposition is also scored with the
 // benchmark's LMSE. OUT gets invariant.png (linear, the inputs' bit depth and scale),
 // illumination/ (L = I / R as 8 bits, 1 → 128), information/ (i_Y in false colour, 0 … 2 T_Y),
 // shapes/ (255 where i_Y > T_Y), panels/, model.csv, findings.csv and report.html.
@@ -42,12 +43,20 @@ int Run(int argc, char** argv) {
             {"min_intensity", "min-intensity"},
             {"min_lightings", "min-lightings"},
             {"kappa", "kappa"}});
+  TCLAP::MultiArg<std::string> include(
+      "", "include", "Only image files whose name matches GLOB are lightings (repeatable)", false,
+      "GLOB", cmd);
+  TCLAP::MultiArg<std::string> exclude(
+      "", "exclude", "Image files whose name matches GLOB are not lightings, e.g. '*_Ambient*'",
+      false, "GLOB", cmd);
   cmd.Parse(argc, argv);
   apps::OutputFolder out_folder("novelty-invariant", out.getValue(), {in.getValue()});
   const experiments::InvariantImageRunResult r = experiments::RunInvariantImage(
-      in.getValue(), options.Values().map, out_folder.path(), [](const std::string& line) {
+      in.getValue(), options.Values().map, out_folder.path(),
+      [](const std::string& line) {
         std::fprintf(stderr, "[novelty-invariant] %s\n", line.c_str());
-      });
+      },
+      {include.getValue(), exclude.getValue()});
   out_folder.Commit();
   std::printf("%s\n→ %s/report.html\n", r.summary.c_str(), out_folder.final_path().c_str());
   return apps::kExitOk;

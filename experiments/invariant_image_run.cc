@@ -171,10 +171,11 @@ std::optional<eval::IntrinsicScore> ScoreMit(const Learnt& l) {
 InvariantImageRunResult RunInvariantImage(const std::string& folder_path,
                                           const illumination::IlluminationMapOptions& map,
                                           const std::string& out_dir,
-                                          const std::function<void(const std::string&)>& status) {
+                                          const std::function<void(const std::string&)>& status,
+                                          const sensors::LightingFolderOptions& pick) {
   const auto start = std::chrono::steady_clock::now();
   Learnt l;
-  l.folder = sensors::ReadLightingFolder(folder_path);
+  l.folder = sensors::ReadLightingFolder(folder_path, pick);
   const int m_count = int(l.folder.images.size());
   if (map.invariant.min_lightings > m_count)
     throw std::invalid_argument("min_lightings " + std::to_string(map.invariant.min_lightings) +
@@ -182,7 +183,11 @@ InvariantImageRunResult RunInvariantImage(const std::string& folder_path,
                                 folder_path);
   if (status)
     status(cv::format("%d lightings of %dx%d from %s", m_count, l.folder.images[0].cols,
-                      l.folder.images[0].rows, folder_path.c_str()));
+                      l.folder.images[0].rows, folder_path.c_str()) +
+           (l.folder.left_out.empty()
+                ? std::string()
+                : cv::format(" (%d images left out by the patterns, first %s)",
+                             int(l.folder.left_out.size()), l.folder.left_out[0].c_str())));
   const std::vector<cv::Mat> coverage =
       l.folder.mask.empty() ? std::vector<cv::Mat>{} : std::vector<cv::Mat>(m_count, l.folder.mask);
   l.invariant = illumination::ComputeInvariantImage(l.folder.images, coverage, map.invariant);

@@ -18,6 +18,7 @@
 #include "eval/findings_table.h"
 #include "eval/lmse.h"
 #include "maps/illumination/illumination_map.h"
+#include "sensors/dataset/lighting_folder_reader.h"
 
 namespace novelty::experiments {
 
@@ -31,10 +32,12 @@ struct InvariantImageRunResult {
 
 /// Learns the invariant image and the model from the lightings in `folder` with the options of
 /// CIlluminationInvariantMap (`map.invariant`, `map.model`) and writes the results into `out_dir`
-/// (an existing folder). `status` is told the input's size. Throws std::invalid_argument naming
-/// the folder or option (fewer lightings than `min_lightings`, images of different sizes, ...).
+/// (an existing folder); `pick` says which of the folder's images are lightings. `status` is told
+/// the input's size and what the patterns left out. Throws std::invalid_argument naming the
+/// folder or option (fewer lightings than `min_lightings`, images of different sizes, ...).
 InvariantImageRunResult RunInvariantImage(
     const std::string& folder, const illumination::IlluminationMapOptions& map,
-    const std::string& out_dir, const std::function<void(const std::string&)>& status = {});
+    const std::string& out_dir, const std::function<void(const std::string&)>& status = {},
+    const sensors::LightingFolderOptions& pick = {});
 
 }  // namespace novelty::experiments

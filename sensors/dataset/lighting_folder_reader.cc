@@ -1,6 +1,8 @@
 #include "sensors/dataset/lighting_folder_reader.h"
 
+#include <fnmatch.h>
 #include <algorithm>
+
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -42,6 +44,12 @@ cv::Mat ReadImage(const fs::path& path) {
   return out;
 }
 
+bool MatchesAny(const std::vector<std::string>& patterns, const std::string& name) {
+  return std::any_of(patterns.begin(), patterns.end(), [&](const std::string& p) {
+    return fnmatch(p.c_str(), name.c_str(), 0) == 0;
+  });
+}
+
 std::string Describe(const cv::Mat& m) {
   return std::to_string(m.cols) + "x" + std::to_string(m.rows) + " with " +
          std::to_string(m.channels()) + " channel(s)";
@@ -49,7 +57,7 @@ std::string Describe(const cv::Mat& m) {
 
 }  // namespace
 
-LightingFolder ReadLightingFolder(const std::string& folder) {
+LightingFolder ReadLightingFolder(const std::string& folder, const LightingFolderOptions& o) {
   if (!fs::is_directory(folder)) throw std::runtime_error(folder + ": no such folder of lightings");
   std::vector<fs::path> lightings;
   LightingFolder out;
@@ -67,15 +75,22 @@ LightingFolder ReadLightingFolder(const std::string& folder) {
       out.shading = core::ToFloat255(ReadImage(p));
     } else if (stem == "diffuse") {
       out.diffuse = core::ToFloat255(ReadImage(p));
-    } else {
+    } else if ((o.include.empty() || MatchesAny(o.include, p.filename().string())) &&
+               !MatchesAny(o.exclude, p.filename().string())) {
       lightings.push_back(p);
+    } else {
+      out.left_out.push_back(p.filename().string());
     }
   }
   std::sort(lightings.begin(), lightings.end());
+  std::sort(out.left_out.begin(), out.left_out.end());
   if (lightings.size() < 2)
-    throw std::runtime_error(folder + ": " + std::to_string(lightings.size()) +
-                             " image(s) of lightings; a single lighting gives no invariant "
-                             "image, at least 2 are needed");
+    throw std::runtime_error(
+        folder + ": " + std::to_string(lightings.size()) + " image(s) of lightings" +
+        (out.left_out.empty() ? ""
+                              : " (" + std::to_string(out.left_out.size()) +
+                                    " left out by the include/exclude patterns)") +
+        "; a single lighting gives no invariant image, at least 2 are needed");
   for (const fs::path& p : lightings) {
     out.images.push_back(ReadImage(p));
     out.names.push_back(p.filename().string());

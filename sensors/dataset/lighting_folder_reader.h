@@ -3,7 +3,8 @@
 // bits, colour or grey. Files named mask.*, reflectance.*, shading.* and diffuse.* are not
 // lightings: a mask (non-zero = the pixels to use) and, in the MIT Intrinsic Images layout, the
 // ground truth of the decomposition (true reflectance and shading, the diffuse image the
-// benchmark divides to score a shading estimate).
+// benchmark divides to score a shading estimate). Patterns pick the lightings where a folder
+// holds other images too (a depth map, an ambient-only shot).
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -18,11 +19,20 @@ struct LightingFolder {
   cv::Mat mask;                    ///< CV_8UC1 (255 = use), empty when the folder has none
   /// Ground truth, float on the 0…255 scale (R G B or grey), each empty when absent.
   cv::Mat reflectance, shading, diffuse;
+  std::vector<std::string> left_out;  ///< image files the patterns left out, in name order
+};
+
+/// Which image files are lightings: shell patterns (fnmatch: *, ?, [...]) on the file name.
+struct LightingFolderOptions {
+  std::vector<std::string> include;  ///< a lighting matches one of these; empty: every image
+  std::vector<std::string> exclude;  ///< … and none of these, e.g. "*_Ambient*", "depth*"
 };
 
 /// Throws std::runtime_error naming the folder or file: a folder that does not exist, fewer than
-/// two lightings (one image is a single lighting: no invariant image), a file that cannot be
-/// read, or images whose size or channels differ from the first one's.
-LightingFolder ReadLightingFolder(const std::string& folder);
+/// two lightings (after the patterns; the message names how many they left out) (one image is a
+/// single lighting: no invariant image), a file that cannot be read, or images whose size or
+/// channels differ from the first one's.
+LightingFolder ReadLightingFolder(const std::string& folder,
+                                  const LightingFolderOptions& options = {});
 
 }  // namespace novelty::sensors

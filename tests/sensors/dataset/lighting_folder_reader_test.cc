@@ -51,6 +51,32 @@ TEST(LightingFolderReader, ReadsLightingsInNameOrderAsRgbWithMaskAndGroundTruth)
   EXPECT_TRUE(f.shading.empty());
 }
 
+// A folder that holds more than the lightings: patterns pick them, and say what they left out.
+TEST(LightingFolderReader, PatternsPickTheLightings) {
+  const fs::path dir = FreshFolder("patterns");
+  for (const char* name :
+       {"dir1.png", "dir2.png", "dir3.jpg", "all_Ambient.png", "depth_valid.png"})
+    WriteBgr(dir / name, {1, 2, 3});
+  EXPECT_EQ(ReadLightingFolder(dir.string()).images.size(), 5u) << "every image by default";
+  LightingFolderOptions o;
+  o.exclude = {"*_Ambient*", "depth*"};
+  LightingFolder f = ReadLightingFolder(dir.string(), o);
+  EXPECT_EQ(f.names, (std::vector<std::string>{"dir1.png", "dir2.png", "dir3.jpg"}));
+  EXPECT_EQ(f.left_out, (std::vector<std::string>{"all_Ambient.png", "depth_valid.png"}));
+  o.include = {"dir[12].*"};
+  f = ReadLightingFolder(dir.string(), o);
+  EXPECT_EQ(f.names, (std::vector<std::string>{"dir1.png", "dir2.png"}));
+  o.include = {"dir1.png"};
+  try {
+    ReadLightingFolder(dir.string(), o);
+    ADD_FAILURE();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("1 image(s) of lightings (4 left out by the "),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(LightingFolderReader, NamesTheProblem) {
   EXPECT_NE(ErrorOf("/nonexistent/lights").find("no such folder"), std::string::npos);
   const fs::path one = FreshFolder("one");
