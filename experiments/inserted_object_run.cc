@@ -14,7 +14,6 @@
 #include "sensors/rawlog/rawlog_frame_reader.h"
 #include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rawlog_output.h"
-#include "sim/output/ground_truth_reader.h"
 #include "sim/output/ground_truth_writer.h"
 #include "sim/render/object_insertion.h"
 #include "sim/scenario/scenario.h"
@@ -23,7 +22,7 @@ namespace novelty::experiments {
 namespace {
 
 constexpr int kBoxId = 1;
-constexpr int kMinBoxPixels = 30;  // as the surprise experiment's changed regions
+constexpr int kMinBoxPixels = 30;  // as the surprise experiment's changed regions (30 px)
 
 // The RGB-D observations of `rawlog`, counted without decoding an image.
 int CountFrames(const std::string& rawlog) {
@@ -52,9 +51,10 @@ sim::Scenario BoxScenario(const std::string& rawlog, const core::PinholeCamera& 
   return s;
 }
 
-// Writes the frames, the box drawn in from `insert_from` on, as a rawlog and ground truth.
+// Writes the frames, the box drawn in from `insert_from` on, as a rawlog and ground truth;
+// counts in `r` the frames that see the box as the scored regions do (kMinBoxPixels) and its area.
 void WriteInserted(const InsertedObjectRunOptions& o, int insert_from, int frames,
-                   const std::string& out) {
+                   const std::string& out, InsertedObjectRunResult& r) {
   sensors::RawlogFrameReader reader(o.rawlog);
   sensors::RawlogOutput rawlog(out + "/inserted.rawlog");
   const Eigen::Isometry3d mount = sensors::HandHeldMount();
@@ -87,6 +87,10 @@ void WriteInserted(const InsertedObjectRunOptions& o, int insert_from, int frame
     cv::Mat ids(mask.size(), CV_32SC1, cv::Scalar(0));
     ids.setTo(kBoxId, mask);
     truth->WriteFrame(k, f.time, *f.T_world_cam, nullptr, depth, ids, mask);
+    if (const int seen = cv::countNonZero(mask); seen >= kMinBoxPixels) {
+      ++r.box_frames;
+      r.box_pixels += seen;
+    }
     if (o.progress) o.progress("drawing the box in", k, frames);
   }
   if (!truth) throw std::runtime_error(o.rawlog + ": no RGB-D frame could be read");
@@ -123,7 +127,8 @@ InsertedObjectRunResult RunInsertedObject(const InsertedObjectRunOptions& o,
     throw std::invalid_argument("insert_from " + std::to_string(r.insert_from) +
                                 ": the box needs frames before it and from it on (2…" +
                                 std::to_string(frames) + ")");
-  WriteInserted(o, r.insert_from, frames, out);
+  WriteInserted(o, r.insert_from, frames, out, r);
+  if (r.box_frames > 0) r.box_pixels /= r.box_frames;
   SurpriseExperimentOptions s;
   s.rawlog = out + "/inserted.rawlog";
   s.groundtruth = out + "/groundtruth";
@@ -136,16 +141,7 @@ InsertedObjectRunResult RunInsertedObject(const InsertedObjectRunOptions& o,
   std::filesystem::create_directories(out + "/run");
   r.run = RunSurpriseExperiment(s, out + "/run");
   r.frames = r.run.frames;
-  // Means over the frames that see the box, as MeanOver takes them, and its area there.
-  const sim::GroundTruthReader truth(out + "/groundtruth");
-  for (int k = r.insert_from; k <= frames; ++k) {
-    const auto regions = truth.ChangedRegions(k, kMinBoxPixels);
-    const auto box = regions.find("box");
-    if (box == regions.end()) continue;
-    ++r.box_frames;
-    r.box_pixels += cv::countNonZero(box->second);
-  }
-  if (r.box_frames > 0) r.box_pixels /= r.box_frames;
+  // Means over the frames that see the box, as MeanOver takes them.
   r.box = eval::MeanOver(r.run.rows, "box", r.insert_from, frames);
   for (const eval::SelectivityRow& row : r.run.rows) {
     if (row.region != "box") continue;

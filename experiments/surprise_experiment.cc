@@ -73,7 +73,6 @@ struct RunMaps {
   mrpt::maps::CMultiMetricMap multi;
   std::vector<double> sparser_factors;
   std::vector<std::vector<eval::SelectivityRow>> sparser_rows;
-  bool has_differencing = false;
 
   RunMaps(const mrpt::config::CConfigFileBase& ini, const std::string& source, double reduction,
           const std::vector<double>& factors)
@@ -91,14 +90,13 @@ struct RunMaps {
     if (differencing.size() > 1)
       throw std::runtime_error(source + ": [map] declares " + std::to_string(differencing.size()) +
                                " CDifferencingMap, the run compares with one (0 or 1)");
-    has_differencing = !differencing.empty();
     appearance->config.map.views.new_view_distance *= reduction;
-    if (has_differencing) differencing[0]->config.map.new_view_distance *= reduction;
+    if (!differencing.empty()) differencing[0]->config.map.new_view_distance *= reduction;
     for (const double f : factors) {
       auto a = *appearance;
       a.config.map.views.new_view_distance *= f;
       inits.push_back(a);
-      if (!has_differencing) continue;
+      if (differencing.empty()) continue;
       auto d = *differencing[0];
       d.config.map.new_view_distance *= f;
       inits.push_back(d);
@@ -115,6 +113,7 @@ struct RunMaps {
     const auto d = multi.mapByClass<mrpt_plugins::CDifferencingMap>(k);
     return d ? &d->lastProducts() : nullptr;
   }
+  bool has_differencing() const { return differencing() != nullptr; }
   /// Whether the appearance and differencing maps, sparser ones too, learn from what they judge.
   void SetLearning(bool on) {
     for (const auto& m : multi.maps) {
@@ -203,7 +202,7 @@ void WriteReport(const std::string& out, const Played& run,
                  const std::vector<std::string>& notes, const std::string& verdict,
                  std::ostream* console) {
   const std::vector<eval::SelectivityRow>& rows = run.rows;
-  eval::HtmlReport report(maps.has_differencing
+  eval::HtmlReport report(maps.has_differencing()
                               ? "NoveltyMaps — Bayesian surprise vs image differencing"
                               : "NoveltyMaps — Bayesian surprise");
   char summary[256];
@@ -260,7 +259,7 @@ void WriteReport(const std::string& out, const Played& run,
                  table);
   }
   report.Heading(std::string("Panels: camera | expected (τ) | surprise | uncertainty Σβ") +
-                 (maps.has_differencing ? " | differencing" : ""));
+                 (maps.has_differencing() ? " | differencing" : ""));
   for (int f : run.panel_frames)
     report.Image("panels/" + core::FrameStem(f) + ".png", "frame " + std::to_string(f));
   report.Save(out + "/report.html");
@@ -380,7 +379,7 @@ SurpriseExperimentResult RunSurpriseExperiment(const SurpriseExperimentOptions& 
   // Scored only where there is ground truth; the run itself needs none.
   std::optional<sim::GroundTruthReader> ground_truth;
   if (!a.groundtruth.empty()) ground_truth.emplace(a.groundtruth);
-  if (ground_truth && !maps.has_differencing)
+  if (ground_truth && !maps.has_differencing())
     throw std::invalid_argument(
         "ground truth scores surprise against image differencing (thesis 4.3), but " +
         (a.config.empty() ? std::string("the default maps declare") : a.config + " declares") +
