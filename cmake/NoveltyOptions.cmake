@@ -14,6 +14,12 @@
 #   NOVELTY_PCH        (ON)  precompiled headers (the standard library, Eigen, OpenCV, MRPT, and
 #                            GoogleTest for tests): 42 % less compile time (plain build).
 #                            Turn off to check that every file includes what it uses.
+#   NOVELTY_UNITY      (ON)  unity builds: each library's sources, and each part's tests, are
+#                            compiled NOVELTY_UNITY_BATCH (8) files at a time, so the headers they
+#                            share are parsed and their templates instantiated once per batch:
+#                            a fresh build takes 5.6 min instead of 15 on 2 cores. Turn off for
+#                            the quickest rebuild of one changed file, and to check that every
+#                            file includes what it uses.
 #   BUILD_SHARED_LIBS  (ON)  shared libraries: a program that uses the installed package links
 #                            NoveltyMaps::mrpt and nothing else, and the maps register on load.
 #
@@ -29,6 +35,10 @@ option(BUILD_SHARED_LIBS "Build NoveltyMaps' libraries as shared libraries" ON)
 option(NOVELTY_FUZZ "Build the libFuzzer targets of tests/fuzz (clang; all our code instrumented)" OFF)
 option(NOVELTY_PORTABLE "Build for any x86-64, with AVX2/AVX-512 variants chosen at run time" OFF)
 option(NOVELTY_PCH "Precompile the third-party headers every file includes" ON)
+option(NOVELTY_UNITY "Compile the sources of each library and test program in batches" ON)
+set(NOVELTY_UNITY_BATCH 8 CACHE STRING "Source files per unity batch (NOVELTY_UNITY)")
+set(CMAKE_UNITY_BUILD ${NOVELTY_UNITY})
+set(CMAKE_UNITY_BUILD_BATCH_SIZE ${NOVELTY_UNITY_BATCH})
 if(NOVELTY_PORTABLE)
   if(NOVELTY_NATIVE)
     message(FATAL_ERROR "NOVELTY_PORTABLE=ON needs NOVELTY_NATIVE=OFF (-march=native is not portable)")
@@ -57,6 +67,12 @@ endif()
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
   target_compile_options(novelty_build_flags INTERFACE -Wno-uninitialized
                                                        -Wno-maybe-uninitialized -Wno-array-bounds)
+endif()
+# In a unity batch every source is an included file, so GCC warns about each class that holds a
+# type of its own file's anonymous namespace (a pimpl's members): true of any included file, and
+# harmless here, where the class is defined and used in that one source.
+if(NOVELTY_UNITY AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+  target_compile_options(novelty_build_flags INTERFACE -Wno-subobject-linkage)
 endif()
 if(NOVELTY_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")

@@ -1,5 +1,6 @@
 #include "eval/findings_table.h"
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -17,6 +18,12 @@ std::string NumberText(double v) {
   std::ostringstream o;
   o << v;
   return o.str();
+}
+
+std::string PercentText(double fraction) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f %%", 100.0 * fraction);
+  return b;
 }
 
 void FindingsTable::Add(const std::string& what, const std::string& value,

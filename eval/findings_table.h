@@ -47,4 +47,7 @@ std::string HoldsText(const std::optional<bool>& holds);
 /// where no unit or precision is chosen.
 std::string NumberText(double v);
 
+/// A fraction as a percentage with one decimal: 0.1234 -> "12.3 %".
+std::string PercentText(double fraction);
+
 }  // namespace novelty::eval

@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double Median(std::vector<double> v) {
+double UpperMedian(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return v[v.size() / 2];
@@ -72,10 +72,10 @@ PredictionSummary SummarisePrediction(const std::vector<PredictionQuality>& fram
   }
   PredictionSummary s;
   s.frames = int(coverage.size());
-  s.median_coverage = Median(coverage);
-  s.median_psnr_db = Median(psnr);
-  s.median_mean_surprise = Median(mean);
-  s.median_p95_surprise = Median(p95);
+  s.median_coverage = UpperMedian(coverage);
+  s.median_psnr_db = UpperMedian(psnr);
+  s.median_mean_surprise = UpperMedian(mean);
+  s.median_p95_surprise = UpperMedian(p95);
   return s;
 }
 

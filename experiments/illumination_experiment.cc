@@ -54,10 +54,6 @@ const sim::GroundTruthReader::Phase& FindPhase(const sim::GroundTruthReader& tru
                               "/events.csv (phases: " + (known.empty() ? "none" : known) + ")");
 }
 
-std::string Percent(double v) {
-  return cv::format("%.1f %%", 100.0 * v);
-}
-
 // One test frame as the evaluation sees it.
 struct TestFrame {
   int index = 0;
@@ -85,7 +81,7 @@ struct Evaluation {
   double detect_seconds = 0.0;
 };
 
-cv::Mat Baseline(int k, const cv::Mat& image, const cv::Mat& reference) {
+cv::Mat BaselineNovelty(int k, const cv::Mat& image, const cv::Mat& reference) {
   return k == 0 ? illumination::GradientCorrelationChange(image, reference)
                 : illumination::SphericalColorChange(image, reference);
 }
@@ -93,8 +89,8 @@ cv::Mat Baseline(int k, const cv::Mat& image, const cv::Mat& reference) {
 // Scores one test frame and writes its panel.
 void Score(const TestFrame& t, Evaluation& e, eval::HtmlReport& report, const fs::path& dir) {
   const cv::Mat& reference = t.references.front();
-  const cv::Mat maps[3] = {t.novelty, Baseline(0, t.image, reference),
-                           Baseline(1, t.image, reference)};
+  const cv::Mat maps[3] = {t.novelty, BaselineNovelty(0, t.image, reference),
+                           BaselineNovelty(1, t.image, reference)};
   cv::Mat relative;
   const cv::Mat grey_obs = core::ChannelMean(t.image),
                 grey_ref = core::ChannelMean(reference) + 1.0f;
@@ -104,7 +100,7 @@ void Score(const TestFrame& t, Evaluation& e, eval::HtmlReport& report, const fs
   std::vector<cv::Mat> others[2];
   for (int k = 0; k < 2; ++k)
     for (std::size_t r = 1; r < t.references.size(); ++r)
-      others[k].push_back(Baseline(k, t.image, t.references[r]));
+      others[k].push_back(BaselineNovelty(k, t.image, t.references[r]));
   e.candidate_pixels += long(t.image.total());
   for (int y = 0; y < t.image.rows; ++y)
     for (int x = 0; x < t.image.cols; ++x) {
@@ -140,13 +136,13 @@ void Score(const TestFrame& t, Evaluation& e, eval::HtmlReport& report, const fs
   ++e.tested;
 }
 
-struct Learnt {
+struct LearntSummary {
   std::string summary;  // for the report: what was learnt
   std::vector<std::pair<std::string, std::string>> findings;
 };
 
 // Writes roc.csv, findings.csv and report.html; returns what they say.
-IlluminationExperimentResult Finish(const Evaluation& e, const Learnt& learnt,
+IlluminationExperimentResult Finish(const Evaluation& e, const LearntSummary& learnt,
                                     const std::string& lightings_name, double learn_seconds,
                                     const fs::path& dir, eval::HtmlReport& report) {
   std::vector<eval::Roc> rocs;
@@ -169,17 +165,17 @@ IlluminationExperimentResult Finish(const Evaluation& e, const Learnt& learnt,
       if (e.lighting_only[j]) ++lighting, flagged += e.methods[k].scores[j] >= threshold;
     const double lighting_share = lighting ? double(flagged) / lighting : 0.0;
     const std::string& name = e.methods[k].name;
-    rows.push_back({name, Percent(roc.TprAtFpr(0.01)), Percent(roc.TprAtFpr(0.05)),
-                    Percent(roc.TprAtFpr(0.10)), cv::format("%.3f", roc.auc),
-                    Percent(lighting_share)});
-    findings.Add(name + ": TPR at FPR <= 1 %", Percent(roc.TprAtFpr(0.01)), "(reported)");
-    findings.Add(name + ": TPR at FPR <= 5 %", Percent(roc.TprAtFpr(0.05)), "(reported)");
+    rows.push_back({name, eval::PercentText(roc.TprAtFpr(0.01)),
+                    eval::PercentText(roc.TprAtFpr(0.05)), eval::PercentText(roc.TprAtFpr(0.10)),
+                    cv::format("%.3f", roc.auc), eval::PercentText(lighting_share)});
+    findings.Add(name + ": TPR at FPR <= 1 %", eval::PercentText(roc.TprAtFpr(0.01)), "(reported)");
+    findings.Add(name + ": TPR at FPR <= 5 %", eval::PercentText(roc.TprAtFpr(0.05)), "(reported)");
     if (k == 0)
       findings.Add(name + ": AUC", eval::NumberText(roc.auc), ">= 0.95", roc.auc >= 0.95);
     else
       findings.Add(name + ": AUC", eval::NumberText(roc.auc), "(reported)");
-    findings.Add(name + ": lighting-only change flagged at TPR 90 %", Percent(lighting_share),
-                 "(reported)");
+    findings.Add(name + ": lighting-only change flagged at TPR 90 %",
+                 eval::PercentText(lighting_share), "(reported)");
     eval::PlotSeries s{name, e.methods[k].colour, {}, 0.0};
     for (const auto& p : roc.points) s.points.push_back({p.fpr, p.tpr});
     curves.push_back(s);
@@ -194,7 +190,7 @@ IlluminationExperimentResult Finish(const Evaluation& e, const Learnt& learnt,
                ahead);
   findings.Add("test frames", std::to_string(e.tested));
   findings.Add("evaluated pixels", std::to_string(e.positive.size()));
-  findings.Add("evaluated share of the test frames' pixels", Percent(scored_share));
+  findings.Add("evaluated share of the test frames' pixels", eval::PercentText(scored_share));
   findings.Add("object pixels", std::to_string(rocs[0].positives));
   for (const auto& [name, value] : learnt.findings) findings.Add(name, value);
   findings.Add("learning seconds", eval::NumberText(learn_seconds));
@@ -220,7 +216,7 @@ IlluminationExperimentResult Finish(const Evaluation& e, const Learnt& learnt,
       const double mine = rocs[0].TprAtFpr(lead_fprs[f]);
       findings.Add("novelty TPR above " + name +
                        "'s best reference at FPR <= " + eval::NumberText(100 * lead_fprs[f]) + " %",
-                   Percent(mine) + " vs " + Percent(best_tpr[f]), "(reported)",
+                   eval::PercentText(mine) + " vs " + eval::PercentText(best_tpr[f]), "(reported)",
                    mine > best_tpr[f] || (mine == 1.0 && best_tpr[f] == 1.0));
     }
   }
@@ -241,7 +237,7 @@ IlluminationExperimentResult Finish(const Evaluation& e, const Learnt& learnt,
   report.Paragraph(cv::format(
       "%d test frames, %zu evaluated pixels (%s of the frames' pixels; %d on the object); %s; "
       "novelty ahead of both baselines at every FPR <= 10 %%: %s.",
-      e.tested, e.positive.size(), Percent(scored_share).c_str(), rocs[0].positives,
+      e.tested, e.positive.size(), eval::PercentText(scored_share).c_str(), rocs[0].positives,
       learnt.summary.c_str(), ahead ? "yes" : "no"));
   findings.WriteCsv((dir / "findings.csv").string());
   report.Save((dir / "report.html").string());
@@ -294,7 +290,7 @@ double RunStatic(const std::string& rawlog, const sim::GroundTruthReader& truth,
                  const sim::GroundTruthReader::Phase& train,
                  const sim::GroundTruthReader::Phase& test, std::optional<int> reference_frame,
                  const IlluminationExperimentOptions& o, const fs::path& dir,
-                 eval::HtmlReport& report, Evaluation& e, Learnt& learnt) {
+                 eval::HtmlReport& report, Evaluation& e, LearntSummary& learnt) {
   std::map<int, core::Frame> frames = ReadFrames(rawlog, [&](int i) {
     return (i >= train.first && i <= train.last) || (i >= test.first && i <= test.last) ||
            (reference_frame && i == *reference_frame);
@@ -354,7 +350,8 @@ double RunStatic(const std::string& rawlog, const sim::GroundTruthReader& truth,
 double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
                  const std::vector<const sim::GroundTruthReader::Phase*>& train,
                  const sim::GroundTruthReader::Phase& test, const IlluminationExperimentOptions& o,
-                 const fs::path& dir, eval::HtmlReport& report, Evaluation& e, Learnt& learnt) {
+                 const fs::path& dir, eval::HtmlReport& report, Evaluation& e,
+                 LearntSummary& learnt) {
   auto phase_of = [&](int i) -> int {
     for (std::size_t m = 0; m < train.size(); ++m)
       if (i >= train[m]->first && i <= train[m]->last) return int(m);
@@ -463,9 +460,9 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
   learnt.findings = {{"lightings", std::to_string(train.size())},
                      {"viewpoints", std::to_string(map.size())},
                      {"viewpoints dropped", std::to_string(map.dropped_viewpoints())},
-                     {"mean viewpoint coverage", Percent(coverage)},
+                     {"mean viewpoint coverage", eval::PercentText(coverage)},
                      {"mean test-frame coverage of the interpolated invariant image",
-                      Percent(frame_coverage / std::max(1, e.tested))},
+                      eval::PercentText(frame_coverage / std::max(1, e.tested))},
                      {"frames with the ground truth's depth", std::to_string(depth_from_truth)},
                      {"camera poses", o.poses_from_rawlog ? "rawlog" : "ground truth"},
                      {"frames skipped without a pose", std::to_string(without_pose)},
@@ -487,7 +484,7 @@ IlluminationExperimentResult RunIlluminationExperiment(const IlluminationExperim
   fs::create_directories(dir / "panels");
   eval::HtmlReport report("novelty-illumination: " + o.rawlog);
   Evaluation e;
-  Learnt learnt;
+  LearntSummary learnt;
   const bool moving = train.size() > 1;
   const double learn_seconds =
       moving ? RunMoving(o.rawlog, truth, train, test, o, dir, report, e, learnt)

@@ -93,7 +93,7 @@ std::string HistogramPlot(const std::string& title, const std::vector<cv::Mat>& 
   return eval::SvgLinePlot(title, "value", "density", {hist, gamma});
 }
 
-struct Learnt {
+struct LearntFolder {
   sensors::LightingFolder folder;
   illumination::InvariantImage invariant;
   illumination::IlluminationModel model;
@@ -103,7 +103,7 @@ struct Learnt {
 
 // Per lighting: its illumination image, information map, shapes and panel; the components for
 // the histograms; a table row of the share above T_Y.
-void WriteLightings(const Learnt& l, const fs::path& dir, eval::HtmlReport& report,
+void WriteLightings(const LearntFolder& l, const fs::path& dir, eval::HtmlReport& report,
                     std::vector<cv::Mat>& luminance, std::vector<cv::Mat>& saturation,
                     std::vector<std::vector<std::string>>& rows) {
   for (const char* sub : {"illumination", "information", "shapes", "panels"})
@@ -138,7 +138,8 @@ void WriteLightings(const Learnt& l, const fs::path& dir, eval::HtmlReport& repo
   }
 }
 
-void WriteModel(const Learnt& l, double kappa, const fs::path& dir, eval::HtmlReport& report) {
+void WriteModel(const LearntFolder& l, double kappa, const fs::path& dir,
+                eval::HtmlReport& report) {
   const illumination::IlluminationModel& model = l.model;
   std::ofstream csv(dir / "model.csv");
   csv << "a_Y,b_Y,a_S,b_S,mean_information_Y,T_Y,kappa,lightings\n"
@@ -155,7 +156,7 @@ void WriteModel(const Learnt& l, double kappa, const fs::path& dir, eval::HtmlRe
 }
 
 // The benchmark's protocol: shading = diffuse image / reflectance estimate, in grey.
-std::optional<eval::IntrinsicScore> ScoreMit(const Learnt& l) {
+std::optional<eval::IntrinsicScore> ScoreMit(const LearntFolder& l) {
   const sensors::LightingFolder& f = l.folder;
   if (f.reflectance.empty() || f.shading.empty() || f.diffuse.empty() || f.mask.empty())
     return std::nullopt;
@@ -174,7 +175,7 @@ InvariantImageRunResult RunInvariantImage(const std::string& folder_path,
                                           const std::function<void(const std::string&)>& status,
                                           const sensors::LightingFolderOptions& pick) {
   const auto start = std::chrono::steady_clock::now();
-  Learnt l;
+  LearntFolder l;
   l.folder = sensors::ReadLightingFolder(folder_path, pick);
   const int m_count = int(l.folder.images.size());
   if (map.invariant.min_lightings > m_count)

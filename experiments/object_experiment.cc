@@ -36,12 +36,6 @@
 namespace novelty::experiments {
 namespace {
 
-std::string Percent(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f %%", 100.0 * v);
-  return b;
-}
-
 std::string Num(double v, const char* format = "%.3f") {
   char b[32];
   std::snprintf(b, sizeof b, format, v);
@@ -560,28 +554,29 @@ ObjectExperimentResult RunObjectExperiment(const ObjectExperimentOptions& a,
   finding("objects learnt", std::to_string(db.objects()), "3 (thesis)", db.objects() == 3);
   finding("features in the database", std::to_string(db.features()), "88 (thesis)", -1);
   finding("learnt features on their object",
-          judged ? Percent(double(on_object) / judged) +
+          judged ? eval::PercentText(double(on_object) / judged) +
                        (judged < db.features() ? " of " + std::to_string(judged) + " judged"
                                                : std::string())
                  : "-",
           "100 % (none from background)", judged ? on_object == judged : -1);
   finding("focus box centre inside the new object's true box",
           learning.compared_frames
-              ? Percent(double(learning.centre_inside) / learning.compared_frames)
+              ? eval::PercentText(double(learning.centre_inside) / learning.compared_frames)
               : "-",
           "(reported)", -1);
   finding("median focus box centre error (px)", Num(learning.median_centre_error_px, "%.1f"),
           "(reported)", -1);
   finding("median share of the new object's true box inside the focus box",
-          std::isnan(learning.median_box_covered) ? "-" : Percent(learning.median_box_covered),
+          std::isnan(learning.median_box_covered) ? "-"
+                                                  : eval::PercentText(learning.median_box_covered),
           "(reported)", -1);
   for (int i = 0; i < kScores; ++i) {
     const std::string what = kScoreNames[i];
     const eval::Roc& r = rocs[std::size_t(i)];
-    finding("TPR at FPR <= 0.3 %, " + what, Percent(r.TprAtFpr(0.003)), ">= 90 % (thesis 81.5 %)",
-            r.TprAtFpr(0.003) >= 0.9);
-    finding("TPR at FPR <= 1 %, " + what, Percent(r.TprAtFpr(0.01)), "(reported)", -1);
-    finding("TPR at FPR <= 5 %, " + what, Percent(r.TprAtFpr(0.05)), "(reported)", -1);
+    finding("TPR at FPR <= 0.3 %, " + what, eval::PercentText(r.TprAtFpr(0.003)),
+            ">= 90 % (thesis 81.5 %)", r.TprAtFpr(0.003) >= 0.9);
+    finding("TPR at FPR <= 1 %, " + what, eval::PercentText(r.TprAtFpr(0.01)), "(reported)", -1);
+    finding("TPR at FPR <= 5 %, " + what, eval::PercentText(r.TprAtFpr(0.05)), "(reported)", -1);
     finding("AUC, " + what, Num(r.auc), "(reported)", -1);
   }
   // What the consistent keypoints' tolerances rest on (keypoint_consistency.h).
@@ -609,13 +604,14 @@ ObjectExperimentResult RunObjectExperiment(const ObjectExperimentOptions& a,
         found += is_visible && passes;
         false_positives += !is_visible && passes;
       }
-    finding("TPR of " + learning.names[std::size_t(k)] + " at FPR <= 0.3 % (" +
-                (std::isinf(threshold) ? std::string("no threshold")
-                                       : ">= " + Num(threshold, "%.0f") + " matches") +
-                ")",
-            (shown ? Percent(double(found) / shown) + " of " + std::to_string(shown) : "-") + " (" +
-                std::to_string(false_positives) + " false positives)",
-            "(reported)", -1);
+    finding(
+        "TPR of " + learning.names[std::size_t(k)] + " at FPR <= 0.3 % (" +
+            (std::isinf(threshold) ? std::string("no threshold")
+                                   : ">= " + Num(threshold, "%.0f") + " matches") +
+            ")",
+        (shown ? eval::PercentText(double(found) / shown) + " of " + std::to_string(shown) : "-") +
+            " (" + std::to_string(false_positives) + " false positives)",
+        "(reported)", -1);
   }
   // Where the misses come from: the same matching among only the object's own keypoints.
   for (int k = 0; k < db.objects(); ++k) {
@@ -633,7 +629,8 @@ ObjectExperimentResult RunObjectExperiment(const ObjectExperimentOptions& a,
     finding(learning.names[std::size_t(k)] +
                 ": visible decisions with a match among its own keypoints (ground truth; in "
                 "the whole frame)",
-            Percent(double(on_own) / shown) + " (" + Percent(double(in_frame) / shown) + ")",
+            eval::PercentText(double(on_own) / shown) + " (" +
+                eval::PercentText(double(in_frame) / shown) + ")",
             "(diagnostic)", -1);
     finding(learning.names[std::size_t(k)] +
                 ": mean distance of a learnt feature to its nearest keypoint on the object",
@@ -646,13 +643,14 @@ ObjectExperimentResult RunObjectExperiment(const ObjectExperimentOptions& a,
     finding("baseline: segmentation IoU with the object, mean over " +
                 std::to_string(baseline->frames) + " frames",
             Num(baseline->mean_iou), "(reported)", -1);
-    finding("baseline: TPR at FPR <= 0.3 %", Percent(b.TprAtFpr(0.003)), "(reported)", -1);
-    finding("baseline: TPR at FPR <= 1 %", Percent(b.TprAtFpr(0.01)), "(reported)", -1);
-    finding("baseline: TPR at FPR <= 5 %", Percent(b.TprAtFpr(0.05)), "(thesis: 81.5 % at 7.2 %)",
+    finding("baseline: TPR at FPR <= 0.3 %", eval::PercentText(b.TprAtFpr(0.003)), "(reported)",
             -1);
+    finding("baseline: TPR at FPR <= 1 %", eval::PercentText(b.TprAtFpr(0.01)), "(reported)", -1);
+    finding("baseline: TPR at FPR <= 5 %", eval::PercentText(b.TprAtFpr(0.05)),
+            "(thesis: 81.5 % at 7.2 %)", -1);
     finding("baseline: AUC", Num(b.auc), "(reported)", -1);
     finding("baseline: TPR at FPR <= 0.3 %, " + std::string(kScoreNames[kScores - 1]),
-            Percent(baseline_run->rocs[kScores - 1].TprAtFpr(0.003)), "(reported)", -1);
+            eval::PercentText(baseline_run->rocs[kScores - 1].TprAtFpr(0.003)), "(reported)", -1);
     // The thesis's claim: the surprise-driven database ahead at every FPR up to 5 % — with the
     // thesis's score, and with both databases' matches checked against their learnt keypoints.
     for (int i : {0, kScores - 1}) {

@@ -31,10 +31,6 @@ namespace {
 constexpr int32_t kMaxViewpoints = 100000;
 constexpr int32_t kMaxTailEntries = 4096;  // a missing-texture tail table (64 by default)
 
-[[noreturn]] void Corrupt(const std::string& what) {
-  throw std::runtime_error(std::string(kMapFileError) + what);
-}
-
 void WriteFit(mrpt::serialization::CArchive& out, const stats::GammaFit& f) {
   out << f.alpha << f.beta;
 }
@@ -171,8 +167,8 @@ void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in,
   in >> lightings >> viewpoints;
   if (lightings < 2 || lightings > illumination::kMaxLightings || viewpoints < 1 ||
       viewpoints > kMaxViewpoints)
-    Corrupt(std::to_string(lightings) + " lightings and " + std::to_string(viewpoints) +
-            " viewpoints");
+    ThrowMapFileError(std::to_string(lightings) + " lightings and " + std::to_string(viewpoints) +
+                      " viewpoints");
   auto map = std::make_unique<illumination::IlluminationMap>(config.map);
   for (int32_t i = 0; i < viewpoints; ++i) {
     const std::string what = "viewpoint " + std::to_string(i);
@@ -187,7 +183,7 @@ void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in,
       int32_t entries = 0, block = 0;
       in >> entries;
       if (entries < 0 || entries > kMaxTailEntries)
-        Corrupt(what + ": " + std::to_string(entries) + " tail entries");
+        ThrowMapFileError(what + ": " + std::to_string(entries) + " tail entries");
       m.model.texture.values.resize(std::size_t(entries));
       for (float& v : m.model.texture.values) in >> v;
       in >> m.model.texture.max_information >> m.model.texture_floor >> block;
@@ -197,11 +193,12 @@ void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in,
          {m.coverage, m.model.luminance_step, m.model.saturation_step, m.model.mean_information,
           m.model.threshold, m.model.saturation.alpha, m.model.saturation.beta,
           m.model.texture.max_information, m.model.texture_floor})
-      if (!std::isfinite(v) || v < 0) Corrupt(what + ": a model value is negative or not finite");
+      if (!std::isfinite(v) || v < 0)
+        ThrowMapFileError(what + ": a model value is negative or not finite");
     try {
       map->AddViewpoint(std::move(view), std::move(m), lightings);
     } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
-      Corrupt(e.what());
+      ThrowMapFileError(e.what());
     }
   }
   config_ = config;  // only now: a failure above leaves the map as it was

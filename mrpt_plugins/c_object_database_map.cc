@@ -40,10 +40,6 @@ Eigen::Vector3d ReadVector(mrpt::serialization::CArchive& in) {
   return p;
 }
 
-[[noreturn]] void Corrupt(const std::string& what) {
-  throw std::runtime_error(std::string(kMapFileError) + what);
-}
-
 // A colour per object, well apart for neighbouring indices (golden-ratio hues).
 mrpt::img::TColorf ObjectColour(int k) {
   const double h = std::fmod(0.61803398875 * k, 1.0) * 6.0;
@@ -227,12 +223,13 @@ void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
   int32_t objects = 0, rows = 0, cols = 0;
   in >> objects >> rows >> cols;
   if (objects < 0 || objects > kMaxObjects || rows < 0 || rows > kMaxFeatures)
-    Corrupt(std::to_string(objects) + " objects and " + std::to_string(rows) + " features");
+    ThrowMapFileError(std::to_string(objects) + " objects and " + std::to_string(rows) +
+                      " features");
   const int width = objects::DescriptorWidth(config.map.extractor);
   if (rows > 0 && cols != width)
-    Corrupt("descriptors of width " + std::to_string(cols) + ", but " +
-            objects::FeatureExtractorName(config.map.extractor) + " gives " +
-            std::to_string(width));
+    ThrowMapFileError("descriptors of width " + std::to_string(cols) + ", but " +
+                      objects::FeatureExtractorName(config.map.extractor) + " gives " +
+                      std::to_string(width));
   // Everything grows as it is read, never by what the file claims: a truncated or corrupt file
   // fails at its end, having allocated no more than it held.
   cv::Mat d(0, width, CV_32F), row(1, width, CV_32F);
@@ -244,7 +241,7 @@ void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
   for (int h = 0; h < rows; ++h) {
     uint32_t n = 0;
     in >> n;
-    if (n > uint32_t(objects)) Corrupt(std::to_string(n) + " counts for a feature");
+    if (n > uint32_t(objects)) ThrowMapFileError(std::to_string(n) + " counts for a feature");
     counts.emplace_back();
     for (uint32_t i = 0; i < n; ++i) {
       int32_t k = 0, m = 0;
@@ -265,7 +262,7 @@ void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
     acquisition->learner().database() =
         objects::FeatureDatabase::FromParts(objects, d, counts, positions, keypoints);
   } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
-    Corrupt(e.what());
+    ThrowMapFileError(e.what());
   }
   config_ = config;  // only now: a failure above leaves the map as it was
   acquisition_ = std::move(acquisition);

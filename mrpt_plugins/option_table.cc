@@ -62,6 +62,10 @@ void CheckPositive(double value, const char* key) {
 void CheckNotNegative(double value, const char* key) {
   if (!(value >= 0.0)) throw std::invalid_argument(std::string(key) + " must be >= 0");
 }
+void ThrowMapFileError(const std::string& what) {
+  throw std::runtime_error(std::string(kMapFileError) + what);
+}
+
 std::string ReadShortString(mrpt::serialization::CArchive& in, std::size_t max_length,
                             const std::string& what) {
   uint32_t length = 0;

@@ -34,6 +34,9 @@ namespace novelty::mrpt_plugins {
 /// How errors in a map file's content begin (LoadInto in map_file.h puts the path instead).
 inline constexpr const char* kMapFileError = "map file: ";
 
+/// Throws std::runtime_error "map file: WHAT": a map file's content cannot be right.
+[[noreturn]] void ThrowMapFileError(const std::string& what);
+
 /// A string as MRPT's `<<` writes it (uint32 length, bytes), refused before any allocation when
 /// the length exceeds `max_length`: a corrupt length must not ask for gigabytes.
 std::string ReadShortString(mrpt::serialization::CArchive& in, std::size_t max_length,

@@ -7,36 +7,39 @@
 # after scripts/build.sh (the packages are installed there).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tests=(lanes_test row_windows_test with_count_test normal_gamma_batch_test ycbcr_planes_test interleave_test fill_where_test
-       planar_blocks_test mesh_plan_test depth_mesh_warper_test quad_rasteriser_test
-       view_blender_test view_based_map_test c_appearance_map_test)
+# The SIMD kernels' suites, by test program (bin/<part>_tests) and GoogleTest filter.
+kernels=(
+  "core_tests Lanes.*:RowWindows.*:WithCount.*:Interleave.*:FillWhere.*"
+  "maps_tests NormalGammaBatch.*:YCbCrPlanes.*:PlanarBlocks.*:MeshPlan.*:DepthMeshWarper.*:QuadRasteriser.*:ViewBlender.*:ViewBasedMap.*"
+  "mrpt_plugins_tests CAppearanceMap.*")
+programs=()
+for k in "${kernels[@]}"; do programs+=("${k%% *}"); done
 cmake -S . -B build-portable -G Ninja -DCMAKE_BUILD_TYPE=Release -DNOVELTY_NATIVE=OFF \
   -DNOVELTY_PORTABLE=ON > /dev/null
 # Every program (target novelty-programs): scripts/example.sh installs them all.
-cmake --build build-portable --parallel "$(nproc)" --target "${tests[@]}" novelty-programs
+cmake --build build-portable --parallel "$(nproc)" --target "${programs[@]}" novelty-programs
 
 # The variant the loader picks for a test, e.g. "glibc-hwcaps/x86-64-v3" or "" (baseline).
 variant() {
-  env ${1:+GLIBC_TUNABLES=$1} LD_DEBUG=libs build-portable/bin/normal_gamma_batch_test \
+  env ${1:+GLIBC_TUNABLES=$1} LD_DEBUG=libs build-portable/bin/maps_tests \
     --gtest_list_tests 2>&1 | grep -o 'calling init: .*libnovelty_maps[^ ]*' | head -1
 }
 log=$(mktemp)
 for mask in "" "glibc.cpu.hwcaps=-AVX512F" "glibc.cpu.hwcaps=-AVX512F,-AVX2"; do
   echo "portable: ${mask:-no mask}: $(variant "$mask")"
-  for t in "${tests[@]}"; do
-    env ${mask:+GLIBC_TUNABLES=$mask} build-portable/bin/"$t" --gtest_brief=1 > "$log" 2>&1 \
-      || { cat "$log"; echo "portable: $t failed (${mask:-no mask})"; exit 1; }
+  for k in "${kernels[@]}"; do
+    t=${k%% *}
+    env ${mask:+GLIBC_TUNABLES=$mask} build-portable/bin/"$t" --gtest_filter="${k#* }" \
+      --gtest_brief=1 > "$log" 2>&1 || { cat "$log"; echo "portable: $t failed (${mask:-no mask})"; exit 1; }
   done
 done
 # Header-only kernels (core/lanes.h, row_windows.h, with_count.h) compile into each test
 # program; the portable tests above run their baseline form, these their AVX2 form.
-headers=(lanes_test row_windows_test with_count_test)
-# Without precompiled headers: that core and these tests include what they use.
+headers="Lanes.*:RowWindows.*:WithCount.*"
+# Without precompiled headers or unity batches: that core and its tests include what they use.
 cmake -S . -B build-x86-64-v3 -G Ninja -DCMAKE_BUILD_TYPE=Release -DNOVELTY_NATIVE=OFF \
-  -DNOVELTY_PCH=OFF -DCMAKE_CXX_FLAGS=-march=x86-64-v3 > /dev/null
-cmake --build build-x86-64-v3 --parallel "$(nproc)" --target "${headers[@]}"
-for t in "${headers[@]}"; do
-  build-x86-64-v3/bin/"$t" --gtest_brief=1 > "$log" 2>&1 \
-    || { cat "$log"; echo "x86-64-v3: $t failed"; exit 1; }
-done
+  -DNOVELTY_PCH=OFF -DNOVELTY_UNITY=OFF -DCMAKE_CXX_FLAGS=-march=x86-64-v3 > /dev/null
+cmake --build build-x86-64-v3 --parallel "$(nproc)" --target core_tests
+build-x86-64-v3/bin/core_tests --gtest_filter="$headers" --gtest_brief=1 > "$log" 2>&1 \
+  || { cat "$log"; echo "x86-64-v3: core_tests failed"; exit 1; }
 bash scripts/example.sh build-portable

@@ -17,6 +17,7 @@
 #include "sensors/rawlog/rgbd_observation.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/simulate_frames.h"
+#include "tests/mrpt_plugins/clip_observations.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
@@ -40,11 +41,6 @@ const std::vector<sim::SimulatedFrame>& Frames() {
 int PassOf(double time) {
   const int k = int(time / kPass);
   return time - k * kPass < kChange ? k : -1;  // -1: in a stop, while the lamp moves
-}
-
-mrpt::obs::CObservation3DRangeScan Observation(const sim::SimulatedFrame& f) {
-  return sensors::MakeRgbdObservation(
-      f.time, f.rgb, f.depth, core::PinholeCamera::FromFov(320, 240, M_PI / 3), f.T_world_cam);
 }
 
 // The map from share/illumination_invariant.ini through a CMultiMetricMap, acquired.

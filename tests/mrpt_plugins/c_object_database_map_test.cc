@@ -22,6 +22,7 @@
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/simulate_frames.h"
 #include "tests/mrpt_plugins/box_clip.h"
+#include "tests/mrpt_plugins/clip_observations.h"
 
 namespace novelty::mrpt_plugins {
 namespace {
@@ -32,11 +33,6 @@ namespace fs = std::filesystem;
 std::vector<sim::SimulatedFrame> Simulate(bool box_added, double stop = 0.5, int frames = 0) {
   std::istringstream in(ClipText(box_added, stop));
   return sim::SimulateFrames(sim::ParseScenario(in, "objects.scn", Textures()), frames);
-}
-
-mrpt::obs::CObservation3DRangeScan Observation(const sim::SimulatedFrame& f) {
-  return sensors::MakeRgbdObservation(
-      f.time, f.rgb, f.depth, core::PinholeCamera::FromFov(320, 240, M_PI / 3), f.T_world_cam);
 }
 
 // The thesis's settings (share/thesis/object_database.ini): what the clips below were designed
@@ -365,8 +361,7 @@ TEST(CObjectDatabaseMap, ObjectsAddedByHandAreListedWithoutAPlace) {
   map.database().AddObject();
   ASSERT_EQ(map.learntAt().size(), 1u);
   EXPECT_TRUE(std::isnan(map.learntAt()[0].x()));
-  EXPECT_NE(map.asString().find("1 objects, 0 sift features"), std::string::npos)
-      << map.asString();
+  EXPECT_NE(map.asString().find("1 objects, 0 sift features"), std::string::npos) << map.asString();
 }
 
 TEST(CObjectDatabaseMap, DeclaredBesideTheAppearanceMapInAMultiMetricMapIni) {

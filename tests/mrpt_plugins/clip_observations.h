@@ -36,11 +36,12 @@ arc 0 0 1.6 -80 -100 0.15
   return frames;
 }
 
-// The frame as an observation from a sensor at its true pose, the robot at the origin.
+// A frame of a clip whose camera has a 60 degree field of view (`camera W H 60`) as an
+// observation from a sensor at its true pose, the robot at the origin.
 inline mrpt::obs::CObservation3DRangeScan Observation(const sim::SimulatedFrame& f) {
-  return sensors::MakeRgbdObservation(f.time, f.rgb, f.depth,
-                                      core::PinholeCamera::FromFov(160, 120, 60.0 * M_PI / 180),
-                                      f.T_world_cam);
+  return sensors::MakeRgbdObservation(
+      f.time, f.rgb, f.depth, core::PinholeCamera::FromFov(f.rgb.cols, f.rgb.rows, M_PI / 3),
+      f.T_world_cam);
 }
 
 }  // namespace novelty::mrpt_plugins

@@ -78,7 +78,7 @@ void WriteBytes(const fs::path& p, const std::vector<char>& bytes) {
 
 // The error LoadFromFile gives for `path`, "" if it loads.
 template <class Map>
-std::string LoadError(const fs::path& path) {
+std::string LoadFileError(const fs::path& path) {
   Map map;
   try {
     map.LoadFromFile(path.string());
@@ -107,7 +107,7 @@ TEST_F(MapChecksumTest, ASavedMapEndsInAChecksumThatMatches) {
   const std::vector<char> bytes = FileBytes(file);
   ASSERT_GT(bytes.size(), 12u);
   EXPECT_EQ(std::string(bytes.end() - 12, bytes.end() - 4), "NVMAPCRC");
-  EXPECT_EQ(LoadError<CAppearanceMap>(file), "");
+  EXPECT_EQ(LoadFileError<CAppearanceMap>(file), "");
 }
 
 // The probe: 12 of 14 random bit flips in an object database loaded without a word.
@@ -133,8 +133,8 @@ TEST_F(MapChecksumTest, EveryChangedBitIsAnErrorNamingTheFile) {
       bytes[at] ^= char(1 << std::uniform_int_distribution<int>(0, 7)(random));
       const fs::path file = dir_ / ("flipped" + saved.extension().string());
       WriteBytes(file, bytes);
-      const std::string what = saved == saved_objects ? LoadError<CObjectDatabaseMap>(file)
-                                                      : LoadError<CAppearanceMap>(file);
+      const std::string what = saved == saved_objects ? LoadFileError<CObjectDatabaseMap>(file)
+                                                      : LoadFileError<CAppearanceMap>(file);
       ++flips;
       EXPECT_EQ(what.rfind(file.string() + ": ", 0), 0u) << "byte " << at << ": " << what;
       EXPECT_NE(what.find("checksum does not match"), std::string::npos) << what;
@@ -145,8 +145,8 @@ TEST_F(MapChecksumTest, EveryChangedBitIsAnErrorNamingTheFile) {
     const fs::path file = dir_ / ("marker" + saved.extension().string());
     WriteBytes(file, bytes);
     EXPECT_EQ(CheckMapChecksum(file.string()), MapChecksum::kMissing);
-    EXPECT_EQ(saved == saved_objects ? LoadError<CObjectDatabaseMap>(file)
-                                     : LoadError<CAppearanceMap>(file),
+    EXPECT_EQ(saved == saved_objects ? LoadFileError<CObjectDatabaseMap>(file)
+                                     : LoadFileError<CAppearanceMap>(file),
               "");
   }
   EXPECT_EQ(errors, flips);
@@ -161,8 +161,8 @@ TEST_F(MapChecksumTest, AFileWithoutTheTrailerLoadsUncheckedAsBefore) {
   bytes.resize(bytes.size() - 12);
   WriteBytes(file, bytes);
   EXPECT_EQ(CheckMapChecksum(file.string()), MapChecksum::kMissing);
-  EXPECT_EQ(LoadError<CAppearanceMap>(file), "");
-  EXPECT_NE(LoadError<CAppearanceMap>(dir_).find("is a folder"), std::string::npos);
+  EXPECT_EQ(LoadFileError<CAppearanceMap>(file), "");
+  EXPECT_NE(LoadFileError<CAppearanceMap>(dir_).find("is a folder"), std::string::npos);
 }
 
 }  // namespace

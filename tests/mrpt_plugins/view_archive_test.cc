@@ -98,7 +98,7 @@ void Poke(std::vector<uint8_t>& bytes, std::size_t at, T value) {
 
 // Writes `bytes` as a map file and loads it into a map holding one frame: the error, which must
 // be one line naming the file, and the map must keep its view.
-std::string LoadError(const std::vector<uint8_t>& bytes) {
+std::string LoadBytesError(const std::vector<uint8_t>& bytes) {
   const fs::path file = fs::temp_directory_path() / "novelty_corrupt.appearance_map";
   {
     mrpt::io::CFileGZOutputStream out(file.string());
@@ -161,7 +161,7 @@ TEST(MapFiles, CorruptValuesAreRefusedNamingViewAndPlane) {
   for (const Case& c : cases) {
     std::vector<uint8_t> bytes = Saved().file;
     c.corrupt(bytes);
-    const std::string e = LoadError(bytes);
+    const std::string e = LoadBytesError(bytes);
     EXPECT_NE(e.find(c.says), std::string::npos) << c.what << ": " << e;
   }
 }

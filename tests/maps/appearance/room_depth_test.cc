@@ -7,16 +7,16 @@
 namespace novelty::appearance {
 namespace {
 
-const core::PinholeCamera kCamera = core::PinholeCamera::FromFov(32, 24, 1.0);
+const core::PinholeCamera kRoomCamera = core::PinholeCamera::FromFov(32, 24, 1.0);
 
-cv::Mat Depth(float metres) {
-  return cv::Mat(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(metres));
+cv::Mat FlatDepth(float metres) {
+  return cv::Mat(kRoomCamera.height, kRoomCamera.width, CV_32FC1, cv::Scalar(metres));
 }
-cv::Mat Plane(float value) {
-  return cv::Mat(kCamera.height, kCamera.width, CV_32FC3, cv::Scalar::all(value));
+cv::Mat FlatPlane(float value) {
+  return cv::Mat(kRoomCamera.height, kRoomCamera.width, CV_32FC3, cv::Scalar::all(value));
 }
 
-Eigen::Isometry3d At(double x) {
+Eigen::Isometry3d RoomAt(double x) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.translation().x() = x;
   return T;
@@ -46,18 +46,19 @@ SpanSummary Summarise(const cv::Mat& span) {
 // replaces that view's depth with it; the snapshot taken before still predicts the wall.
 TEST(RoomDepth, KeepsTheRoomsDepthWhereTheMapHasTakenInANearerObject) {
   ViewBasedMap map;
-  map.Update(kCamera, At(0.0), Depth(2.0), {{"p", Plane(1)}}, {});
-  map.Update(kCamera, At(0.2), Depth(2.0), {{"p", Plane(1)}}, {0});
+  map.Update(kRoomCamera, RoomAt(0.0), FlatDepth(2.0), {{"p", FlatPlane(1)}}, {});
+  map.Update(kRoomCamera, RoomAt(0.2), FlatDepth(2.0), {{"p", FlatPlane(1)}}, {0});
   ASSERT_EQ(map.store().size(), 2);
   RoomDepth room(map);
   EXPECT_EQ(room.views(), 2);
-  EXPECT_FALSE(map.Update(kCamera, At(0.001), Depth(1.0), {{"p", Plane(2)}}, {0}).added);
+  EXPECT_FALSE(
+      map.Update(kRoomCamera, RoomAt(0.001), FlatDepth(1.0), {{"p", FlatPlane(2)}}, {0}).added);
 
-  const SpanSummary now = Summarise(map.Predict(kCamera, At(0.01), {}, true).depth_span);
+  const SpanSummary now = Summarise(map.Predict(kRoomCamera, RoomAt(0.01), {}, true).depth_span);
   ASSERT_GT(now.covered, 32 * 24 / 2);
   EXPECT_NEAR(now.nearest, 1.0f, 1e-4) << "the map predicts the object it has taken in";
 
-  const cv::Mat span = room.DepthSpan(kCamera, At(0.01));
+  const cv::Mat span = room.DepthSpan(kRoomCamera, RoomAt(0.01));
   ASSERT_EQ(span.type(), CV_32FC2);
   ASSERT_EQ(span.size(), cv::Size(32, 24));
   const SpanSummary before = Summarise(span);
@@ -74,15 +75,15 @@ TEST(RoomDepth, DecodesTheViewsACompactMapHoldsEncoded) {
   ViewBasedMap map(options);
   for (int i = 0; i < 4; ++i) {
     const float wall = 2.0f + 0.5f * float(i);
-    map.Update(kCamera, At(0.1 * i), Depth(wall), {{"p", Plane(1)}}, {});
-    map.Predict(kCamera, At(0.1 * i), {{"p", 3}});  // evicts all but the view used
+    map.Update(kRoomCamera, RoomAt(0.1 * i), FlatDepth(wall), {{"p", FlatPlane(1)}}, {});
+    map.Predict(kRoomCamera, RoomAt(0.1 * i), {{"p", 3}});  // evicts all but the view used
   }
   ASSERT_EQ(map.store().size(), 4);
   ASSERT_FALSE(map.store().decoded(0));
   RoomDepth room(map);
   for (int i = 0; i < 4; ++i) {
     // The camera at a view's pose reads that view alone (no warp).
-    const SpanSummary s = Summarise(room.DepthSpan(kCamera, At(0.1 * i)));
+    const SpanSummary s = Summarise(room.DepthSpan(kRoomCamera, RoomAt(0.1 * i)));
     const float wall = 2.0f + 0.5f * float(i);
     EXPECT_EQ(s.covered, 32 * 24) << "view " << i;
     EXPECT_NEAR(s.nearest, wall, wall * 1e-4) << "view " << i;
@@ -93,7 +94,7 @@ TEST(RoomDepth, DecodesTheViewsACompactMapHoldsEncoded) {
 TEST(RoomDepth, AnEmptyMapPredictsNoDepth) {
   RoomDepth room{ViewBasedMap{}};
   EXPECT_EQ(room.views(), 0);
-  const cv::Mat span = room.DepthSpan(kCamera, At(0.0));
+  const cv::Mat span = room.DepthSpan(kRoomCamera, RoomAt(0.0));
   ASSERT_EQ(span.type(), CV_32FC2);
   ASSERT_EQ(span.size(), cv::Size(32, 24));
   EXPECT_EQ(cv::countNonZero(span.reshape(1)), 0);

@@ -10,10 +10,10 @@ namespace {
 const core::PinholeCamera kCamera = core::PinholeCamera::FromFov(32, 24, 1.0);
 
 // A wall 2 m in front of the camera; the payload plane holds (1, 2, 3) in half floats.
-struct Frame {
+struct ViewFrame {
   cv::Mat depth = cv::Mat(24, 32, CV_32FC1, cv::Scalar(2.0f));
   cv::Mat payload;
-  Frame() { cv::Mat(24, 32, CV_32FC3, cv::Scalar(1, 2, 3)).convertTo(payload, CV_16F); }
+  ViewFrame() { cv::Mat(24, 32, CV_32FC3, cv::Scalar(1, 2, 3)).convertTo(payload, CV_16F); }
 };
 
 cv::Mat Depth(float metres) {
@@ -32,7 +32,7 @@ Eigen::Isometry3d At(double x, double yaw_deg = 0.0) {
 
 TEST(ViewBasedMap, AStaticCameraReadsItsViewsOwnPlanes) {
   ViewBasedMap map;
-  const Frame f;
+  const ViewFrame f;
   map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {});
   const Prediction p = map.Predict(kCamera, At(0), {{"p", 3}});
   ASSERT_EQ(p.selected, std::vector<int>{0});
@@ -77,7 +77,7 @@ TEST(ViewBasedMap, APredictedDepthIsTheWarpedSurfacesDepthAndZeroWhereNothingCov
 
 TEST(ViewBasedMap, APredictionNeverWritesIntoAViewsPlanes) {
   ViewBasedMap map;
-  Frame f;
+  ViewFrame f;
   cv::Mat(24, 32, CV_32FC3, cv::Scalar(1, 2, 3)).copyTo(f.payload);  // the type of a prediction
   map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {});
   const Prediction shared = map.Predict(kCamera, At(0), {{"p", 3}});
@@ -97,7 +97,7 @@ TEST(ViewBasedMap, ADeferredPredictionBlendedRowsAtATimeEqualsPredict) {
   ViewBasedMap map(options);
   cv::RNG rng(3);
   for (const auto& [x, yaw] : std::vector<std::pair<double, double>>{{-0.05, -15}, {0.05, 15}}) {
-    Frame f;
+    ViewFrame f;
     cv::Mat values(24, 32, CV_32FC3);
     rng.fill(values, cv::RNG::UNIFORM, 0.0, 100.0);
     values.convertTo(f.payload, CV_16F);
@@ -162,7 +162,7 @@ TEST(ViewBasedMap, AViewKeepsThePlanGivenWithItUnlessMadeForOtherOptions) {
   // The plan decides which quads a warp draws. A wall's depth given with the plan of a depth
   // without surface draws nothing — the plan is kept and used; the same plan made with other
   // block options is made anew from the wall, which then covers the frame.
-  const Frame f;
+  const ViewFrame f;
   const cv::Mat no_surface(24, 32, CV_32FC1, cv::Scalar(0.0f));
   const views::WarpOptions map_warp = ViewBasedMapOptions{}.warp;
   for (const int block : {map_warp.planar_block, map_warp.planar_block / 2}) {
@@ -186,7 +186,7 @@ TEST(ViewBasedMap, FarFramesAddViewsNearOnesReplaceTheSelected) {
   ViewBasedMapOptions options;
   options.new_view_distance = 0.1;
   ViewBasedMap map(options);
-  const Frame f;
+  const ViewFrame f;
   EXPECT_TRUE(map.Update(kCamera, At(0), f.depth, {{"p", f.payload}}, {}).added);
   EXPECT_TRUE(map.Update(kCamera, At(0.2), f.depth, {{"p", f.payload}}, {0}).added);
   const ViewBasedMap::UpdateResult r =

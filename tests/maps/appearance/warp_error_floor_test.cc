@@ -204,7 +204,7 @@ const SensorClipData& SensorClip() {
   return clip;
 }
 
-struct GlassSelectivity {
+struct WarpGlassSelectivity {
   double as_surprise = 0, as_difference = 0;
   double warp_sigma = 0;  // mean s of the floor over the glass frames
   int frames = 0;
@@ -212,10 +212,10 @@ struct GlassSelectivity {
 
 // Mean AS of the glass over the frames after `after` s that show it, for an appearance map with
 // `options` and the differencing baseline.
-GlassSelectivity PlaySensorClip(const AppearanceMapOptions& options, double after) {
+WarpGlassSelectivity PlaySensorClip(const AppearanceMapOptions& options, double after) {
   AppearanceMap map(options);
   DifferencingMap baseline(options.views);
-  GlassSelectivity r;
+  WarpGlassSelectivity r;
   for (const SensorFrame& f : SensorClip().frames) {
     const AppearanceProducts p = map.Insert(f.rgb, f.depth, f.camera, f.pose);
     const DifferencingProducts d = baseline.Insert(f.rgb, f.depth, f.camera, f.pose);
@@ -239,16 +239,17 @@ GlassSelectivity PlaySensorClip(const AppearanceMapOptions& options, double afte
 // with differencing, whose differences along every edge (pose error) compete with the glass. The
 // floor's s is learnt from the frames (no value for the tracker is given); the thesis's prior
 // (no floor) is played on the same frames for the record.
-TEST(FloorVarianceByWarpError, FromStereoAndTrackerTheGlassIsMoreSurprisingThanDifferencingMakesIt) {
+TEST(FloorVarianceByWarpError,
+     FromStereoAndTrackerTheGlassIsMoreSurprisingThanDifferencingMakesIt) {
   AppearanceMapOptions options;
   options.learn_warp_sigma = true;
-  const GlassSelectivity s = PlaySensorClip(options, 7.2);
+  const WarpGlassSelectivity s = PlaySensorClip(options, 7.2);
   ASSERT_GT(s.frames, 10);
   EXPECT_GT(s.as_surprise, s.as_difference);
   // What was learnt is the pose error in pixels: fx times the tracker's rotation error (the
   // frame's and the views' errors are smoothed over 0.4 s, so they partly cancel).
-  const double pose_error_px = SensorClip().frames.front().camera.fx *
-                               SensorClip().median_rotation_error;
+  const double pose_error_px =
+      SensorClip().frames.front().camera.fx * SensorClip().median_rotation_error;
   EXPECT_NEAR(s.warp_sigma, pose_error_px, 0.5 * pose_error_px);
   PlaySensorClip(AppearanceMapOptions{}, 7.2);
 }

@@ -30,7 +30,7 @@ cv::Mat BlockReflectance(cv::Size size, int seed) {
 
 // Lighting m: a shading ramp whose slopes over the five images are -2a, -a, 0, a, 2a (median 0)
 // and a hard shadow (factor 0.3) at a place of its own.
-cv::Mat Lighting(cv::Size size, int m) {
+cv::Mat RampLighting(cv::Size size, int m) {
   cv::Mat l(size, CV_32FC3);
   const double slope = 0.004 * (m - 2);
   for (int y = 0; y < size.height; ++y)
@@ -60,7 +60,7 @@ TEST(InvariantImage, RecoversReflectanceAndLightingOfASyntheticScene) {
   const cv::Mat reflectance = BlockReflectance(size, 3);
   std::vector<cv::Mat> images, lightings;
   for (int m = 0; m < 5; ++m) {
-    lightings.push_back(Lighting(size, m));
+    lightings.push_back(RampLighting(size, m));
     images.push_back(reflectance.mul(lightings.back()));
   }
   for (auto colour : {InvariantImageOptions::Colour::kPerChannel,

@@ -9,7 +9,7 @@
 namespace novelty::objects {
 namespace {
 
-const core::PinholeCamera kCamera;  // fx = 400
+const core::PinholeCamera kConsistencyCamera;  // fx = 400
 
 cv::KeyPoint At(float x, float y, float size, float angle) {
   return cv::KeyPoint(cv::Point2f(x, y), size, angle);
@@ -17,12 +17,12 @@ cv::KeyPoint At(float x, float y, float size, float angle) {
 
 TEST(KeypointConsistency, MetricSizeIsSizeTimesDepthOverFocalLength) {
   // A 20 px blob at 2 m with fx = 400 spans 0.1 m.
-  EXPECT_DOUBLE_EQ(MetricSize(At(10, 10, 20, 0), 2.0, kCamera), 0.1);
-  core::PinholeCamera mirrored = kCamera;
+  EXPECT_DOUBLE_EQ(MetricSize(At(10, 10, 20, 0), 2.0, kConsistencyCamera), 0.1);
+  core::PinholeCamera mirrored = kConsistencyCamera;
   mirrored.fx = -400;  // a mirrored image: the size is still positive
   EXPECT_DOUBLE_EQ(MetricSize(At(10, 10, 20, 0), 2.0, mirrored), 0.1);
   for (double bad : {0.0, -1.0, std::nan(""), double(INFINITY)})
-    EXPECT_TRUE(std::isnan(MetricSize(At(10, 10, 20, 0), bad, kCamera))) << bad;
+    EXPECT_TRUE(std::isnan(MetricSize(At(10, 10, 20, 0), bad, kConsistencyCamera))) << bad;
 }
 
 TEST(KeypointConsistency, MetricSizesReadTheDepthAtTheRoundedPixel) {
@@ -32,22 +32,22 @@ TEST(KeypointConsistency, MetricSizesReadTheDepthAtTheRoundedPixel) {
   depth.at<float>(3, 4) = 2.0f;  // the last pixel
   const std::vector<cv::KeyPoint> k = {At(2.6f, 1.6f, 40, 0), At(0.2f, 0.3f, 40, 0),
                                        At(9, 1, 40, 0), At(1, 1, 40, 0), At(4.6f, 3.7f, 40, 0)};
-  const std::vector<double> s = MetricSizes(k, depth, kCamera);
+  const std::vector<double> s = MetricSizes(k, depth, kConsistencyCamera);
   ASSERT_EQ(s.size(), 5u);
   EXPECT_DOUBLE_EQ(s[0], 40 * 4.0 / 400);  // (2.6, 1.6) rounds to column 3, row 2
   EXPECT_TRUE(std::isnan(s[1]));           // depth 0
   EXPECT_TRUE(std::isnan(s[2]));           // outside the image
   EXPECT_DOUBLE_EQ(s[3], 0.1);
   EXPECT_DOUBLE_EQ(s[4], 40 * 2.0 / 400);  // rounds one past the edge: the border pixel
-  for (double v : MetricSizes(k, cv::Mat(), kCamera)) EXPECT_TRUE(std::isnan(v));
-  EXPECT_THROW(MetricSizes(k, cv::Mat(4, 5, CV_64FC1), kCamera), std::invalid_argument);
+  for (double v : MetricSizes(k, cv::Mat(), kConsistencyCamera)) EXPECT_TRUE(std::isnan(v));
+  EXPECT_THROW(MetricSizes(k, cv::Mat(4, 5, CV_64FC1), kConsistencyCamera), std::invalid_argument);
 }
 
 TEST(KeypointConsistency, OrientationIsComparedRoundTheCircle) {
   KeypointConsistencyOptions o;
   o.enabled = true;  // 20°, 1.3
   const LearntKeypoint learnt =
-      ToLearntKeypoint(At(0, 0, 20, 355), MetricSize(At(0, 0, 20, 355), 1.0, kCamera));
+      ToLearntKeypoint(At(0, 0, 20, 355), MetricSize(At(0, 0, 20, 355), 1.0, kConsistencyCamera));
   EXPECT_DOUBLE_EQ(learnt.angle_deg, 355);
   EXPECT_DOUBLE_EQ(learnt.size_m, 0.05);
   EXPECT_TRUE(ConsistentKeypoint(learnt, At(0, 0, 20, 10), 0.05, o));     // 15° across 0

@@ -9,17 +9,17 @@
 namespace novelty::objects {
 namespace {
 
-const core::PinholeCamera kCamera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
+const core::PinholeCamera kPoseCamera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
 
 // A box-shaped object's feature places (object frame, metres) and a camera 0.9 m in front of it,
 // turned 20° about the vertical and 5° about its own axis.
-struct Scene {
+struct PointScene {
   std::vector<Eigen::Vector3d> points;
   Eigen::Isometry3d T_cam_object = Eigen::Isometry3d::Identity();
 };
 
-Scene MakeScene(int n, unsigned seed) {
-  Scene s;
+PointScene MakeScene(int n, unsigned seed) {
+  PointScene s;
   cv::RNG rng(seed);
   for (int i = 0; i < n; ++i)
     s.points.emplace_back(rng.uniform(-0.1, 0.1), rng.uniform(-0.07, 0.07),
@@ -31,11 +31,11 @@ Scene MakeScene(int n, unsigned seed) {
   return s;
 }
 
-std::vector<cv::Point2f> Project(const Scene& s, double noise_px, unsigned seed) {
+std::vector<cv::Point2f> Project(const PointScene& s, double noise_px, unsigned seed) {
   cv::RNG rng(seed);
   std::vector<cv::Point2f> px;
   for (const Eigen::Vector3d& p : s.points) {
-    const Eigen::Vector2d uv = kCamera.Project(s.T_cam_object * p);
+    const Eigen::Vector2d uv = kPoseCamera.Project(s.T_cam_object * p);
     px.emplace_back(float(uv.x() + rng.gaussian(noise_px)), float(uv.y() + rng.gaussian(noise_px)));
   }
   return px;
@@ -46,12 +46,12 @@ double AngleDeg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
 }
 
 TEST(VerifyObjectPose, RecoversThePoseThroughAThirdOfWrongMatches) {
-  Scene s = MakeScene(40, 1);
+  PointScene s = MakeScene(40, 1);
   std::vector<cv::Point2f> px = Project(s, 0.3, 2);
   cv::RNG rng(3);
   for (int i = 0; i < 13; ++i)  // a third of the matches wrong: anywhere in the image
     px[std::size_t(i)] = cv::Point2f(rng.uniform(0.f, 320.f), rng.uniform(0.f, 240.f));
-  const VerifiedPose v = VerifyObjectPose(s.points, px, kCamera);
+  const VerifiedPose v = VerifyObjectPose(s.points, px, kPoseCamera);
   ASSERT_TRUE(v.verified);
   EXPECT_EQ(v.pairs, 40);
   EXPECT_GE(v.inliers, 25) << "the 27 right pairs, bar a couple beyond 2 px of 0.3 px noise";
@@ -63,11 +63,11 @@ TEST(VerifyObjectPose, RecoversThePoseThroughAThirdOfWrongMatches) {
 TEST(VerifyObjectPose, TheAgreeingPairsAreNamedByTheirIndexAmongThoseGiven) {
   // Every other place unknown: the agreeing pairs are the known ones, by their index in the
   // input (not among the pairs RANSAC was given).
-  const Scene s = MakeScene(20, 7);
+  const PointScene s = MakeScene(20, 7);
   std::vector<Eigen::Vector3d> places = s.points;
   for (std::size_t i = 0; i < places.size(); i += 2)
     places[i] = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-  const VerifiedPose v = VerifyObjectPose(places, Project(s, 0.0, 8), kCamera);
+  const VerifiedPose v = VerifyObjectPose(places, Project(s, 0.0, 8), kPoseCamera);
   ASSERT_TRUE(v.verified);
   EXPECT_EQ(v.pairs, 10);
   std::vector<int> odd;
@@ -79,22 +79,23 @@ TEST(VerifyObjectPose, TheAgreeingPairsAreNamedByTheirIndexAmongThoseGiven) {
 }
 
 TEST(VerifyObjectPose, WrongMatchesOnlyOrTooFewPlacesVerifyNothing) {
-  const Scene s = MakeScene(30, 4);
+  const PointScene s = MakeScene(30, 4);
   std::vector<cv::Point2f> px(30);
   cv::RNG rng(5);
   for (cv::Point2f& p : px) p = cv::Point2f(rng.uniform(0.f, 320.f), rng.uniform(0.f, 240.f));
-  EXPECT_FALSE(VerifyObjectPose(s.points, px, kCamera).verified) << "all matches wrong";
+  EXPECT_FALSE(VerifyObjectPose(s.points, px, kPoseCamera).verified) << "all matches wrong";
   // Right matches, but only five with a known place.
   std::vector<Eigen::Vector3d> places = s.points;
   for (std::size_t i = 5; i < places.size(); ++i)
     places[i] = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-  const VerifiedPose few = VerifyObjectPose(places, Project(s, 0.0, 6), kCamera);
+  const VerifiedPose few = VerifyObjectPose(places, Project(s, 0.0, 6), kPoseCamera);
   EXPECT_FALSE(few.verified);
   EXPECT_EQ(few.pairs, 5);
-  EXPECT_THROW(VerifyObjectPose(s.points, {}, kCamera), std::invalid_argument);
+  EXPECT_THROW(VerifyObjectPose(s.points, {}, kPoseCamera), std::invalid_argument);
   PoseVerificationOptions bad;
   bad.min_inliers = 3;
-  EXPECT_THROW(VerifyObjectPose(s.points, Project(s, 0.0, 6), kCamera, bad), std::invalid_argument);
+  EXPECT_THROW(VerifyObjectPose(s.points, Project(s, 0.0, 6), kPoseCamera, bad),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -13,10 +13,10 @@
 namespace novelty::objects {
 namespace {
 
-const core::PinholeCamera kCamera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
+const core::PinholeCamera kRecognitionCamera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
 
 cv::Mat Print(int seed) {  // blurred noise: blobs a few pixels wide, like a photograph's detail
-  cv::Mat t(kCamera.height, kCamera.width, CV_8UC1);
+  cv::Mat t(kRecognitionCamera.height, kRecognitionCamera.width, CV_8UC1);
   cv::RNG(seed).fill(t, cv::RNG::UNIFORM, 0, 256);
   cv::GaussianBlur(t, t, cv::Size(0, 0), 3.0);
   cv::normalize(t, t, 0, 255, cv::NORM_MINMAX);
@@ -35,8 +35,8 @@ FeatureDatabase Learn(cv::Feature2D& extractor, bool two_objects) {
     std::vector<Eigen::Vector3d> places;
     std::vector<LearntKeypoint> learnt;
     for (const cv::KeyPoint& p : k) {
-      places.push_back(kCamera.RayCam(p.pt.x, p.pt.y));  // z = 1
-      learnt.push_back(ToLearntKeypoint(p, MetricSize(p, 1.0, kCamera)));
+      places.push_back(kRecognitionCamera.RayCam(p.pt.x, p.pt.y));  // z = 1
+      learnt.push_back(ToLearntKeypoint(p, MetricSize(p, 1.0, kRecognitionCamera)));
     }
     db.AddFeatures(d, db.AddObject(), places, learnt);
   }
@@ -48,13 +48,14 @@ TEST(ObjectRecognition, FindsALearntPrintAfterTheCameraMovedAndVerifiesItsPose) 
   const FeatureDatabase db = Learn(*extractor, false);
   ASSERT_GE(db.features(), 30);
   // The camera moved 1 cm to the left: the plane at 1 m shifts by fx * 0.01 px to the right.
-  const double shift = kCamera.fx * 0.01;
+  const double shift = kRecognitionCamera.fx * 0.01;
   cv::Mat moved;
   const cv::Mat M = (cv::Mat_<double>(2, 3) << 1, 0, shift, 0, 1, 0);
   cv::warpAffine(Print(1), moved, M, Print(1).size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
   ObjectRecognitionOptions verify;
   verify.verify = true;
-  const FrameRecognition r = RecognizeObjects(moved, cv::Mat(), *extractor, db, kCamera, verify);
+  const FrameRecognition r =
+      RecognizeObjects(moved, cv::Mat(), *extractor, db, kRecognitionCamera, verify);
   ASSERT_EQ(r.per_object.size(), 1u);
   EXPECT_GE(r.per_object[0].matches, db.features() / 2);
   ASSERT_TRUE(r.per_object[0].pose.verified);
@@ -64,9 +65,9 @@ TEST(ObjectRecognition, FindsALearntPrintAfterTheCameraMovedAndVerifiesItsPose) 
   // mm; where its points land is not.)
   const Eigen::Isometry3d& T = r.per_object[0].pose.T_cam_object;
   EXPECT_NEAR(T.translation().x(), 0.01, 5e-3);
-  for (double u = 20; u < kCamera.width; u += 60)
-    for (double v = 20; v < kCamera.height; v += 50) {
-      const Eigen::Vector2d seen = kCamera.Project(T * kCamera.RayCam(u, v));
+  for (double u = 20; u < kRecognitionCamera.width; u += 60)
+    for (double v = 20; v < kRecognitionCamera.height; v += 50) {
+      const Eigen::Vector2d seen = kRecognitionCamera.Project(T * kRecognitionCamera.RayCam(u, v));
       EXPECT_NEAR(seen.x(), u + shift, 1.0) << u << "," << v;
       EXPECT_NEAR(seen.y(), v, 1.0) << u << "," << v;
     }
@@ -79,7 +80,8 @@ TEST(ObjectRecognition, AnotherPrintIsNotRecognised) {
   const FeatureDatabase db = Learn(*extractor, true);
   ObjectRecognitionOptions verify;
   verify.verify = true;
-  const FrameRecognition r = RecognizeObjects(Print(3), cv::Mat(), *extractor, db, kCamera, verify);
+  const FrameRecognition r =
+      RecognizeObjects(Print(3), cv::Mat(), *extractor, db, kRecognitionCamera, verify);
   ASSERT_EQ(r.per_object.size(), 2u);
   for (const ObjectEvidence& e : r.per_object) {
     // Chance ratio-test matches between unrelated prints are rare; a pose never agrees.
@@ -87,7 +89,8 @@ TEST(ObjectRecognition, AnotherPrintIsNotRecognised) {
     EXPECT_FALSE(e.pose.verified);
   }
   // Print 2 itself: object 1, not object 0.
-  const FrameRecognition two = RecognizeObjects(Print(2), cv::Mat(), *extractor, db, kCamera);
+  const FrameRecognition two =
+      RecognizeObjects(Print(2), cv::Mat(), *extractor, db, kRecognitionCamera);
   EXPECT_GE(two.per_object[1].matches, 20);
   EXPECT_LE(two.per_object[0].matches, 3);
 }
@@ -115,7 +118,7 @@ TEST(ObjectRecognition, NearestKeypointsVerifyWhereEachBlobsDuplicateDefeatsTheR
   FrameFeatures f;
   cv::RNG rng(8);
   for (int h = 0; h < db.features(); ++h) {
-    const Eigen::Vector2d uv = kCamera.Project(db.Position(h));
+    const Eigen::Vector2d uv = kRecognitionCamera.Project(db.Position(h));
     for (int dup = 0; dup < 3; ++dup) {
       f.keypoints.emplace_back(cv::Point2f(float(uv.x()) + 0.4f * float(dup), float(uv.y())), 20.f);
       cv::Mat noise(1, 64, CV_32F);
@@ -131,18 +134,18 @@ TEST(ObjectRecognition, NearestKeypointsVerifyWhereEachBlobsDuplicateDefeatsTheR
   }
   ObjectRecognitionOptions thesis;
   thesis.verify = true;
-  const FrameRecognition r = MatchObjects(f, db, kCamera, thesis);
+  const FrameRecognition r = MatchObjects(f, db, kRecognitionCamera, thesis);
   EXPECT_EQ(r.per_object[0].matches, 0) << "every second-nearest is the blob's duplicate";
   EXPECT_FALSE(r.per_object[0].pose.verified);
   ObjectRecognitionOptions nearest = thesis;
   nearest.verify_nearest = 2;
-  const VerifiedPose v = MatchObjects(f, db, kCamera, nearest).per_object[0].pose;
+  const VerifiedPose v = MatchObjects(f, db, kRecognitionCamera, nearest).per_object[0].pose;
   ASSERT_TRUE(v.verified);
   EXPECT_EQ(v.inliers, 12) << "one per place: not the 24 agreeing pairs";
   EXPECT_GE(v.inlier_pairs.size(), 20u);
   EXPECT_LT(v.T_cam_object.translation().norm(), 0.01) << "object frame = camera frame";
   nearest.verify_nearest = -1;
-  EXPECT_THROW(MatchObjects(f, db, kCamera, nearest), std::invalid_argument);
+  EXPECT_THROW(MatchObjects(f, db, kRecognitionCamera, nearest), std::invalid_argument);
 }
 
 TEST(ObjectRecognition, APoseThatCollapsesTheObjectOntoOneClusterOfKeypointsIsNotVerified) {
@@ -155,7 +158,7 @@ TEST(ObjectRecognition, APoseThatCollapsesTheObjectOntoOneClusterOfKeypointsIsNo
     keypoints.emplace_back(cv::Point2f(160.f + float(h % 3), 120.f + float(h / 3 % 3)), 20.f);
     matches.push_back({h, h, 0.1f});
   }
-  const VerifiedPose v = VerifyObjectMatches(db, matches, keypoints, 0, kCamera, {});
+  const VerifiedPose v = VerifyObjectMatches(db, matches, keypoints, 0, kRecognitionCamera, {});
   EXPECT_FALSE(v.verified);
   EXPECT_TRUE(v.T_cam_object.isApprox(Eigen::Isometry3d::Identity()));
   // Five keypoints on a ring of 1.9 px, each 2.2 px from its neighbours: every one within the
@@ -168,13 +171,13 @@ TEST(ObjectRecognition, APoseThatCollapsesTheObjectOntoOneClusterOfKeypointsIsNo
                       20.f);
   PoseVerificationOptions four;
   four.min_inliers = 4;
-  const VerifiedPose r = VerifyObjectMatches(db, matches, ring, 0, kCamera, four);
+  const VerifiedPose r = VerifyObjectMatches(db, matches, ring, 0, kRecognitionCamera, four);
   EXPECT_FALSE(r.verified) << r.inliers << " places";
   ASSERT_TRUE(
       VerifyObjectPose({db.Position(0), db.Position(1), db.Position(2), db.Position(3),
                         db.Position(4), db.Position(5)},
                        {ring[0].pt, ring[1].pt, ring[2].pt, ring[3].pt, ring[4].pt, ring[5].pt},
-                       kCamera, four)
+                       kRecognitionCamera, four)
           .verified)
       << "the pose check alone accepts the collapse: the count of places is what refuses it";
 }
@@ -191,18 +194,19 @@ TEST(ObjectRecognition, ConsistentKeypointsRejectATurnedPrintAndOneOfAnotherSize
   std::vector<cv::KeyPoint> learnt_keypoints;
   cv::Mat unused;
   extractor->detectAndCompute(Print(1), cv::noArray(), learnt_keypoints, unused);
-  const double shift = kCamera.fx * 0.01;
+  const double shift = kRecognitionCamera.fx * 0.01;
   cv::Mat moved, turned;
   const cv::Mat M = (cv::Mat_<double>(2, 3) << 1, 0, shift, 0, 1, 0);
   cv::warpAffine(Print(1), moved, M, Print(1).size(), cv::INTER_LINEAR, cv::BORDER_REFLECT);
   cv::rotate(moved, turned, cv::ROTATE_180);
   ObjectRecognitionOptions consistent;
   consistent.consistency.enabled = true;
-  const cv::Mat at_1m(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(1.0f));
+  const cv::Mat at_1m(kRecognitionCamera.height, kRecognitionCamera.width, CV_32FC1,
+                      cv::Scalar(1.0f));
   const cv::Mat at_2m = 2.0 * at_1m;
   const auto recognise = [&](const cv::Mat& grey, const cv::Mat& depth,
                              const ObjectRecognitionOptions& options) {
-    return RecognizeObjects(grey, depth, *extractor, db, kCamera, options);
+    return RecognizeObjects(grey, depth, *extractor, db, kRecognitionCamera, options);
   };
   const FrameRecognition all = recognise(moved, at_1m, {});
   ASSERT_GE(all.per_object[0].matches, db.features() / 2);
@@ -225,12 +229,14 @@ TEST(ObjectRecognition, ConsistentKeypointsRejectATurnedPrintAndOneOfAnotherSize
   EXPECT_LE(recognise(moved, at_2m, consistent).per_object[0].matches,
             all.per_object[0].matches / 20);
   // Metric sizes that are not one per keypoint are refused.
-  FrameFeatures bad = ExtractFrameFeatures(moved, *extractor, at_1m, kCamera);
+  FrameFeatures bad = ExtractFrameFeatures(moved, *extractor, at_1m, kRecognitionCamera);
   bad.metric_sizes.pop_back();
-  EXPECT_THROW(MatchObjects(bad, db, kCamera, consistent), std::invalid_argument);
+  EXPECT_THROW(MatchObjects(bad, db, kRecognitionCamera, consistent), std::invalid_argument);
   // So is a depth image of another size than the grey one (a keypoint would read another place).
   EXPECT_THROW(
-      recognise(moved, at_1m(cv::Rect(0, 0, kCamera.width / 2, kCamera.height)), consistent),
+      recognise(moved,
+                at_1m(cv::Rect(0, 0, kRecognitionCamera.width / 2, kRecognitionCamera.height)),
+                consistent),
       std::invalid_argument);
 }
 
@@ -238,7 +244,8 @@ TEST(ObjectRecognition, ADatabaseOfAnotherWidthIsAClearError) {
   FeatureDatabase db;
   db.AddFeatures(cv::Mat::ones(3, 128, CV_32F), db.AddObject());
   cv::Ptr<cv::Feature2D> msurf = CreateFeatureExtractor(FeatureExtractor::kMSurf);
-  EXPECT_THROW(RecognizeObjects(Print(1), cv::Mat(), *msurf, db, kCamera), std::invalid_argument);
+  EXPECT_THROW(RecognizeObjects(Print(1), cv::Mat(), *msurf, db, kRecognitionCamera),
+               std::invalid_argument);
 }
 
 }  // namespace

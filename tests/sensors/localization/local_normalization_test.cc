@@ -10,7 +10,9 @@
 namespace novelty::sensors {
 namespace {
 
-cv::Mat Texture() { return BlurredNoise({80, 60}, CV_32F, 3, 1.0); }
+cv::Mat NoiseTexture() {
+  return BlurredNoise({80, 60}, CV_32F, 3, 1.0);
+}
 
 TEST(LocallyNormalized, IsZeroOnAFlatImage) {
   const cv::Mat flat(40, 50, CV_32F, cv::Scalar(117));
@@ -18,7 +20,7 @@ TEST(LocallyNormalized, IsZeroOnAFlatImage) {
 }
 
 TEST(LocallyNormalized, UndoesAGainAndOffsetUpToTheFloor) {
-  const cv::Mat texture = Texture();
+  const cv::Mat texture = NoiseTexture();
   LocalNormalizationOptions o;
   o.floor = 1e-3;  // nearly none: the result is then invariant to I → a·I + b
   const cv::Mat relit = 0.6 * texture + 40;
@@ -44,7 +46,7 @@ TEST(LocallyNormalized, MatchesTheClosedFormOnACheckerboard) {
 }
 
 TEST(LocallyNormalized, WindowZeroReturnsTheImageAndBadOptionsThrow) {
-  const cv::Mat texture = Texture();
+  const cv::Mat texture = NoiseTexture();
   LocalNormalizationOptions o;
   o.window = 0;
   EXPECT_EQ(cv::norm(LocallyNormalized(texture, o), texture, cv::NORM_INF), 0.0);

@@ -8,6 +8,8 @@
 #include <iterator>
 #include <sstream>
 
+#include "tests/sim/scenario/scenario_text.h"
+
 namespace novelty::sim {
 namespace {
 
@@ -33,14 +35,9 @@ event 1.0 lamp l1 1 1 2
 phase A 1 10 first half
 )";
 
-Scenario Parse(const std::string& text) {
-  std::istringstream in(text);
-  return ParseScenario(in, "test.scn");
-}
-
 std::string ErrorOf(const std::string& text) {
   try {
-    Parse(text);
+    ParseScenarioText(text);
   } catch (const std::runtime_error& e) {
     return e.what();
   }
@@ -48,7 +45,7 @@ std::string ErrorOf(const std::string& text) {
 }
 
 TEST(ScenarioParser, ReadsEveryStatement) {
-  const Scenario s = Parse(kMinimal);
+  const Scenario s = ParseScenarioText(kMinimal);
   EXPECT_EQ(s.name, "tiny");
   EXPECT_EQ(s.frames, 20);
   EXPECT_DOUBLE_EQ(s.fps, 10.0);
@@ -128,11 +125,12 @@ TEST(ScenarioParser, OutOfRangeNumbersAreRefusedBeforeTheSimulatorSeesThem) {
 
 TEST(ScenarioParser, NameCannotLeaveTheOutputFolder) {
   for (const char* bad : {"../../x", "a/b", ".hidden", "/etc/x"}) {
-    EXPECT_NE(ErrorOf(std::string("name ") + bad + "\narc 0 0 1 0 10 0.1\n").find("plain file name"),
-              std::string::npos)
+    EXPECT_NE(
+        ErrorOf(std::string("name ") + bad + "\narc 0 0 1 0 10 0.1\n").find("plain file name"),
+        std::string::npos)
         << bad;
   }
-  EXPECT_EQ(Parse("name run-2_b.1\narc 0 0 1 0 10 0.1\n").name, "run-2_b.1");
+  EXPECT_EQ(ParseScenarioText("name run-2_b.1\narc 0 0 1 0 10 0.1\n").name, "run-2_b.1");
 }
 
 TEST(ScenarioParser, MissingFileIsNamed) {

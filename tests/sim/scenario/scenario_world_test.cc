@@ -7,14 +7,10 @@
 #include "sim/output/ground_truth_writer.h"
 #include "sim/render/renderer.h"
 #include "sim/scenario/scenario_parser.h"
+#include "tests/sim/scenario/scenario_text.h"
 
 namespace novelty::sim {
 namespace {
-
-Scenario Parse(const std::string& text) {
-  std::istringstream in(text);
-  return ParseScenario(in, "test.scn");
-}
 
 const char* kTable = R"(
 name table
@@ -32,9 +28,9 @@ lamp l1 0 0 2.5 1.5 1.5 1.5
 )";
 
 TEST(ScenarioWorld, ObjectsComeToRestOnTheTable) {
-  const Scenario s = Parse(std::string(kTable) +
-                           "static_camera 1.2 -1.2 1.3 0 0 0.7\n"
-                           "event 0.5 add cup\n");
+  const Scenario s = ParseScenarioText(std::string(kTable) +
+                                       "static_camera 1.2 -1.2 1.3 0 0 0.7\n"
+                                       "event 0.5 add cup\n");
   ScenarioWorld world(s);
   world.AdvanceTo(2.5);
   const double cloth_top = 0.70 + 0.001;
@@ -46,10 +42,10 @@ TEST(ScenarioWorld, ObjectsComeToRestOnTheTable) {
 }
 
 TEST(ScenarioWorld, EventsHappenWhenTheArmArrives) {
-  const Scenario s = Parse(std::string(kTable) +
-                           "static_camera 1.2 -1.2 1.3 0 0 0.7\n"
-                           "event 1.0 add cup arm 0.8\n"
-                           "event 2.0 remove box\n");
+  const Scenario s = ParseScenarioText(std::string(kTable) +
+                                       "static_camera 1.2 -1.2 1.3 0 0 0.7\n"
+                                       "event 1.0 add cup arm 0.8\n"
+                                       "event 2.0 remove box\n");
   ScenarioWorld world(s);
   world.AdvanceTo(0.9);
   EXPECT_FALSE(world.IsPresent("cup"));
@@ -66,9 +62,9 @@ TEST(ScenarioWorld, EventsHappenWhenTheArmArrives) {
 }
 
 TEST(ScenarioWorld, NoveltyMaskMarksAddedObjectsAndWhereRemovedOnesWere) {
-  const Scenario s = Parse(std::string(kTable) +
-                           "static_camera 1.0 -1.0 1.4 0 0 0.7\n"
-                           "event 0.2 add cup\nevent 0.2 remove box\n");
+  const Scenario s = ParseScenarioText(std::string(kTable) +
+                                       "static_camera 1.0 -1.0 1.4 0 0 0.7\n"
+                                       "event 0.2 add cup\nevent 0.2 remove box\n");
   ScenarioWorld world(s);
   world.AdvanceTo(1.0);
   RayScene now, reference;
@@ -93,9 +89,9 @@ TEST(ScenarioWorld, NoveltyMaskMarksAddedObjectsAndWhereRemovedOnesWere) {
 }
 
 TEST(ScenarioWorld, AnObjectAddedAndLaterRemovedLeavesARemovedRegion) {
-  const Scenario s = Parse(std::string(kTable) +
-                           "static_camera 1.0 -1.0 1.4 0 0 0.7\n"
-                           "event 0.2 add cup\nevent 1.0 remove cup\n");
+  const Scenario s = ParseScenarioText(std::string(kTable) +
+                                       "static_camera 1.0 -1.0 1.4 0 0 0.7\n"
+                                       "event 0.2 add cup\nevent 1.0 remove cup\n");
   ScenarioWorld world(s);
   world.AdvanceTo(1.5);
   EXPECT_EQ(world.RemovedIds(), std::vector<int>{4});
@@ -113,9 +109,9 @@ TEST(ScenarioWorld, AnObjectAddedAndLaterRemovedLeavesARemovedRegion) {
 }
 
 TEST(ScenarioWorld, CameraHeadSitsOnTheMastLookingAtTheArcCentre) {
-  const Scenario s = Parse(std::string(kTable) +
-                           "mount 0 0 1.10 90 15\n"
-                           "arc 0 0 1.5 -100 -80 0.1\n");
+  const Scenario s = ParseScenarioText(std::string(kTable) +
+                                       "mount 0 0 1.10 90 15\n"
+                                       "arc 0 0 1.5 -100 -80 0.1\n");
   ScenarioWorld world(s);
   world.AdvanceTo(2.0);
   const Eigen::Isometry3d head = world.HeadPose();
