@@ -17,7 +17,7 @@
 #   NOVELTY_UNITY      (ON)  unity builds: each library's sources, and each part's tests, are
 #                            compiled NOVELTY_UNITY_BATCH (8) files at a time, so the headers they
 #                            share are parsed and their templates instantiated once per batch:
-#                            a fresh build takes 5.6 min instead of 15 on 2 cores. Turn off for
+#                            a fresh build takes 5.5 min instead of 15 on 2 cores. Turn off for
 #                            the quickest rebuild of one changed file, and to check that every
 #                            file includes what it uses.
 #   BUILD_SHARED_LIBS  (ON)  shared libraries: a program that uses the installed package links

@@ -51,9 +51,8 @@ uint8_t CurrentMapFormat(const std::string& map_class) {
 MapFormat MapFormatOf(const std::string& map_class, uint8_t version) {
   const ClassFormats& c = Find(map_class);
   if (version > c.current) {
-    throw std::runtime_error(std::string(kMapFileError) + "format version " +
-                             std::to_string(version) + ", newer than this program's (" +
-                             std::to_string(c.current) + ")");
+    ThrowMapFileError("format version " + std::to_string(version) +
+                      ", newer than this program's (" + std::to_string(c.current) + ")");
   }
   MapFormat f;
   f.version = version;

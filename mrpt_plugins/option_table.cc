@@ -62,6 +62,7 @@ void CheckPositive(double value, const char* key) {
 void CheckNotNegative(double value, const char* key) {
   if (!(value >= 0.0)) throw std::invalid_argument(std::string(key) + " must be >= 0");
 }
+
 void ThrowMapFileError(const std::string& what) {
   throw std::runtime_error(std::string(kMapFileError) + what);
 }
@@ -71,8 +72,8 @@ std::string ReadShortString(mrpt::serialization::CArchive& in, std::size_t max_l
   uint32_t length = 0;
   in >> length;
   if (length > max_length) {
-    throw std::runtime_error(std::string(kMapFileError) + what + " of " + std::to_string(length) +
-                             " bytes (at most " + std::to_string(max_length) + ")");
+    ThrowMapFileError(what + " of " + std::to_string(length) + " bytes (at most " +
+                      std::to_string(max_length) + ")");
   }
   std::string s(length, '\0');
   if (length > 0) in.ReadBuffer(s.data(), length);

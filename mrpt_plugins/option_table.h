@@ -173,8 +173,7 @@ class OptionTable {
   void Read(mrpt::serialization::CArchive& in, Options& options) const {
     uint32_t n = 0;
     in >> n;
-    if (n > 4 * rows_.size() + 64)
-      throw std::runtime_error(std::string(kMapFileError) + "implausible option count");
+    if (n > 4 * rows_.size() + 64) ThrowMapFileError("implausible option count");
     std::vector<bool> seen(rows_.size(), false);
     for (uint32_t i = 0; i < n; ++i) {
       const std::string key = ReadShortString(in, 256, "option name");
@@ -182,8 +181,7 @@ class OptionTable {
       in >> value;
       const Row* r = Find(key);
       if (!r) {
-        throw std::runtime_error(std::string(kMapFileError) + "unknown option '" + key +
-                                 "' (written by a newer version?)");
+        ThrowMapFileError("unknown option '" + key + "' (written by a newer version?)");
       }
       seen[std::size_t(r - rows_.data())] = true;
       SetChecked(*r, value, options);
@@ -205,9 +203,7 @@ class OptionTable {
       if (r->entry.kind == OptionKind::kFlag) {
         uint8_t b = 0;  // MRPT writes a bool as one byte; any other value than 0 or 1 is corrupt
         in >> b;
-        if (b > 1)
-          throw std::runtime_error(std::string(kMapFileError) + key + ": flag byte " +
-                                   std::to_string(b) + ", not 0 or 1");
+        if (b > 1) ThrowMapFileError(key + ": flag byte " + std::to_string(b) + ", not 0 or 1");
         value = b;
       } else {
         in >> value;
@@ -251,8 +247,7 @@ class OptionTable {
     try {
       CheckOptionValue(r.entry, value / r.entry.scale);
     } catch (const std::invalid_argument& e) {
-      throw std::runtime_error(std::string(kMapFileError) + "option " + r.entry.key + ": " +
-                               e.what());
+      ThrowMapFileError("option " + r.entry.key + ": " + e.what());
     }
     r.set(options, value);
   }

@@ -51,19 +51,17 @@ int ReadImageHeader(mrpt::serialization::CArchive& in, const core::PinholeCamera
   int32_t type, rows, cols;
   in >> type >> rows >> cols;
   if (rows != camera.height || cols != camera.width) {
-    throw std::runtime_error(std::string(kMapFileError) + what + " is " + std::to_string(cols) +
-                             "x" + std::to_string(rows) + ", the view's camera " +
-                             std::to_string(camera.width) + "x" + std::to_string(camera.height));
+    ThrowMapFileError(what + " is " + std::to_string(cols) + "x" + std::to_string(rows) +
+                      ", the view's camera " + std::to_string(camera.width) + "x" +
+                      std::to_string(camera.height));
   }
   const int depth = CV_MAT_DEPTH(type), channels = CV_MAT_CN(type);
   const bool known_depth = depth == CV_8U || depth == CV_16U || depth == CV_16F || depth == CV_32F;
   if (type < 0 || !known_depth || channels > 64) {  // 64: an illumination map's lightings
-    throw std::runtime_error(std::string(kMapFileError) + what + " has an unknown type " +
-                             std::to_string(type));
+    ThrowMapFileError(what + " has an unknown type " + std::to_string(type));
   }
   bytes = std::size_t(rows) * cols * CV_ELEM_SIZE(type);
-  if (bytes > (std::size_t(1) << 28))
-    throw std::runtime_error(std::string(kMapFileError) + what + " is over 256 MB");
+  if (bytes > (std::size_t(1) << 28)) ThrowMapFileError(what + " is over 256 MB");
   return type;
 }
 
@@ -76,7 +74,7 @@ views::EncodedView::Plane ReadEncoded(mrpt::serialization::CArchive& in,
   uint32_t size = 0;
   in >> size;
   if (size > bytes + bytes / 8 + 1024)  // more than zstd's worst case for the plane
-    throw std::runtime_error(std::string(kMapFileError) + what + ": implausible encoded size");
+    ThrowMapFileError(what + ": implausible encoded size");
   p.bytes = ReadChunked(in, size);
   return p;
 }
@@ -98,14 +96,14 @@ core::PinholeCamera ReadCamera(mrpt::serialization::CArchive& in, const std::str
   core::PinholeCamera c;
   in >> w >> h >> c.fx >> c.fy >> c.cx >> c.cy;
   if (w < 1 || h < 1 || w > 8192 || h > 8192)
-    throw std::runtime_error(std::string(kMapFileError) + what + ": implausible camera size " +
-                             std::to_string(w) + "x" + std::to_string(h));
+    ThrowMapFileError(what + ": implausible camera size " + std::to_string(w) + "x" +
+                      std::to_string(h));
   c.width = w;
   c.height = h;
   try {
     c.Check();
   } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(std::string(kMapFileError) + what + ": " + e.what());
+    ThrowMapFileError(what + ": " + e.what());
   }
   return c;
 }
@@ -113,8 +111,7 @@ core::PinholeCamera ReadCamera(mrpt::serialization::CArchive& in, const std::str
 // Depth as maps take it (core/depth_check.h).
 void CheckDepth(const cv::Mat& depth, const std::string& what) {
   if (const int n = core::CountBrokenDepths(depth); n > 0)
-    throw std::runtime_error(std::string(kMapFileError) + what + ": " + std::to_string(n) +
-                             " negative or infinite depths");
+    ThrowMapFileError(what + ": " + std::to_string(n) + " negative or infinite depths");
 }
 
 void WritePose(mrpt::serialization::CArchive& out, const Eigen::Isometry3d& p) {
@@ -143,19 +140,17 @@ void ReadPlanes(mrpt::serialization::CArchive& in, const std::string& what, cons
   read("", what + " depth");
   int32_t planes;
   in >> planes;
-  if (planes < 0 || planes > 16)
-    throw std::runtime_error(std::string(kMapFileError) + what + ": implausible plane count");
+  if (planes < 0 || planes > 16) ThrowMapFileError(what + ": implausible plane count");
   for (int32_t k = 0; k < planes; ++k) {
     const std::string name = ReadShortString(in, 64, what + " plane name");
-    if (name.empty())
-      throw std::runtime_error(std::string(kMapFileError) + what + ": a plane without a name");
+    if (name.empty()) ThrowMapFileError(what + ": a plane without a name");
     read(name, what + " plane '" + name + "'");
   }
   if (!format.raw_planes) {
     try {
       views::DecodeInto(e, v);
     } catch (const std::runtime_error& error) {
-      throw std::runtime_error(std::string(kMapFileError) + what + " " + error.what());
+      ThrowMapFileError(what + " " + error.what());
     }
   }
   CheckDepth(v.depth, what);
@@ -206,8 +201,7 @@ void ReadViewMap(mrpt::serialization::CArchive& in, appearance::ViewBasedMap& ma
                  const MapFormat& format) {
   int32_t n;
   in >> n;
-  if (n < 0 || n > 1000000)
-    throw std::runtime_error(std::string(kMapFileError) + "corrupt view count");
+  if (n < 0 || n > 1000000) ThrowMapFileError("corrupt view count");
   std::vector<views::ReferenceView> views;
   std::vector<views::EncodedView> encoded;  // kept as they are by a compact map
   const bool as_held = !format.raw_planes && format.encoding == views::PlaneEncoding::kPredicted;
@@ -247,7 +241,7 @@ views::ReferenceView ReadView(mrpt::serialization::CArchive& in, const std::stri
   try {
     v.Check(what);
   } catch (const std::invalid_argument& error) {
-    throw std::runtime_error(std::string(kMapFileError) + error.what());
+    ThrowMapFileError(error.what());
   }
   return v;
 }

@@ -132,7 +132,7 @@ class ViewMapAdapter : public mrpt::maps::CMetricMap, public mrpt::system::COutp
       ReadViewMap(in, map->view_map(), format);
       map->CheckStoredPlanes();
     } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
-      throw std::runtime_error(std::string(kMapFileError) + e.what());
+      ThrowMapFileError(e.what());
     }
     ReplaceMap(std::move(map));  // only now: a failure above leaves the map as it was
     depth_source_ = c.depth;

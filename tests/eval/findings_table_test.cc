@@ -47,5 +47,12 @@ TEST(FindingsTable, CsvHtmlAndConsoleSayTheSame) {
   fs::remove(html);
 }
 
+TEST(FindingsTable, PercentTextRoundsToOneDecimal) {
+  EXPECT_EQ(PercentText(0.1234), "12.3 %");
+  EXPECT_EQ(PercentText(0.99951), "100.0 %");
+  EXPECT_EQ(PercentText(0.0), "0.0 %");
+  EXPECT_EQ(PercentText(-0.005), "-0.5 %");
+}
+
 }  // namespace
 }  // namespace novelty::eval
