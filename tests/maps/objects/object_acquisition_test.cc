@@ -16,10 +16,10 @@
 namespace novelty::objects {
 namespace {
 
-const core::PinholeCamera kCamera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
+const core::PinholeCamera kSlidingCamera = core::PinholeCamera::FromFov(320, 240, M_PI / 3);
 constexpr double kWallZ = 2.0, kFaceZ = 1.0, kFaceHalf = 0.2;  // m
 
-Eigen::Isometry3d Pose(int t) {  // 5 mm to the right per frame
+Eigen::Isometry3d SlidingPose(int t) {  // 5 mm to the right per frame
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.translation() = Eigen::Vector3d(0.005 * t, 0.0, 0.0);
   return T;
@@ -40,22 +40,22 @@ struct Rendered {
 };
 
 // The wall (a smooth grey ramp, almost featureless) and, if `with_face`, the face at kFaceZ
-// centred on the world's Z axis, seen from Pose(t).
-// Where pixel (u, v)'s ray from Pose(t) meets the face's plane z = kFaceZ (world frame).
+// centred on the world's Z axis, seen from SlidingPose(t).
+// Where pixel (u, v)'s ray from SlidingPose(t) meets the face's plane z = kFaceZ (world frame).
 Eigen::Vector3d OnFacePlane(int u, int v, int t) {
-  const Eigen::Vector3d ray = kCamera.RayCam(u, v) / kCamera.RayCam(u, v).z();
-  return Pose(t).translation() + kFaceZ * ray;
+  const Eigen::Vector3d ray = kSlidingCamera.RayCam(u, v) / kSlidingCamera.RayCam(u, v).z();
+  return SlidingPose(t).translation() + kFaceZ * ray;
 }
 
 Rendered Render(int t, bool with_face) {
   static const cv::Mat texture = FaceTexture();
-  Rendered r{cv::Mat(kCamera.height, kCamera.width, CV_8UC3),
-             cv::Mat(kCamera.height, kCamera.width, CV_32FC1),
-             cv::Mat::zeros(kCamera.height, kCamera.width, CV_8UC1)};
-  const Eigen::Vector3d c = Pose(t).translation();
-  for (int v = 0; v < kCamera.height; ++v)
-    for (int u = 0; u < kCamera.width; ++u) {
-      const Eigen::Vector3d ray = kCamera.RayCam(u, v) / kCamera.RayCam(u, v).z();
+  Rendered r{cv::Mat(kSlidingCamera.height, kSlidingCamera.width, CV_8UC3),
+             cv::Mat(kSlidingCamera.height, kSlidingCamera.width, CV_32FC1),
+             cv::Mat::zeros(kSlidingCamera.height, kSlidingCamera.width, CV_8UC1)};
+  const Eigen::Vector3d c = SlidingPose(t).translation();
+  for (int v = 0; v < kSlidingCamera.height; ++v)
+    for (int u = 0; u < kSlidingCamera.width; ++u) {
+      const Eigen::Vector3d ray = kSlidingCamera.RayCam(u, v) / kSlidingCamera.RayCam(u, v).z();
       const Eigen::Vector3d on_face = c + kFaceZ * ray;
       if (with_face && std::abs(on_face.x()) < kFaceHalf && std::abs(on_face.y()) < kFaceHalf) {
         const float tx = float((on_face.x() + kFaceHalf) / (2 * kFaceHalf) * 399.0);
@@ -91,11 +91,11 @@ FeatureDatabase LearnAddedFace(
     const std::function<cv::Mat(const Rendered&, int)>& surprising,
     const std::function<void(const AcquisitionStep&, int)>& check = nullptr) {
   ObjectAcquisition acquisition(options);
-  const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  const cv::Mat wall_depth(kSlidingCamera.height, kSlidingCamera.width, CV_32FC1, cv::Scalar(kWallZ));
   for (int t = 0; t < 12; ++t) {
     const Rendered r = Render(t, true);
     const AcquisitionStep s = acquisition.Process(r.rgb, r.depth, Surprise(surprising(r, t), t),
-                                                  wall_depth, kCamera, Pose(t));
+                                                  wall_depth, kSlidingCamera, SlidingPose(t));
     EXPECT_EQ(s.change.kind, ChangeKind::kAdded) << "frame " << t;
     if (check) check(s, t);
   }
@@ -104,12 +104,12 @@ FeatureDatabase LearnAddedFace(
 
 TEST(ObjectAcquisition, LearnsAnAddedObjectAndRecognisesItLater) {
   ObjectAcquisition acquisition;
-  const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  const cv::Mat wall_depth(kSlidingCamera.height, kSlidingCamera.width, CV_32FC1, cv::Scalar(kWallZ));
   int learnt_frames = 0;
   for (int t = 0; t < 12; ++t) {
     const Rendered r = Render(t, true);
     const AcquisitionStep s =
-        acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), wall_depth, kCamera, Pose(t));
+        acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), wall_depth, kSlidingCamera, SlidingPose(t));
     EXPECT_EQ(s.change.kind, ChangeKind::kAdded) << "frame " << t;
     EXPECT_NEAR(s.change.observed_depth, kFaceZ, 0.05) << "frame " << t;
     EXPECT_TRUE(s.learning);
@@ -135,7 +135,7 @@ TEST(ObjectAcquisition, LearnsAnAddedObjectAndRecognisesItLater) {
   // Later, the same face seen again: the database recognises it.
   const Rendered again = Render(20, true);
   const AcquisitionStep s = acquisition.Process(again.rgb, again.depth, Surprise(again.face, 20),
-                                                wall_depth, kCamera, Pose(20));
+                                                wall_depth, kSlidingCamera, SlidingPose(20));
   EXPECT_EQ(s.learner.recognised, LearnerStep::Recognised::kByDatabase);
   EXPECT_EQ(s.learner.object, 0);
   ASSERT_EQ(s.learner.matches_per_object.size(), 1u);
@@ -176,7 +176,7 @@ TEST(ObjectAcquisition, NeverLearnsTheBackgroundARemovedObjectUncovers) {
     // The map knew the face (its depth expected there); the frame shows the wall.
     const Rendered known = Render(t, true), now = Render(t, false);
     const AcquisitionStep s = acquisition.Process(now.rgb, now.depth, Surprise(known.face, t),
-                                                  known.depth, kCamera, Pose(t));
+                                                  known.depth, kSlidingCamera, SlidingPose(t));
     EXPECT_EQ(s.change.kind, ChangeKind::kRemoved) << "frame " << t;
     EXPECT_FALSE(s.learning);
     EXPECT_EQ(s.extracted, 0);
@@ -199,13 +199,13 @@ TEST(ObjectAcquisition, OnlyFeaturesNearerThanExpectedAreLearntWhenAsked) {
     *left_out = 0;
     for (int t = 0; t < 12; ++t) {
       const Rendered r = Render(t, true);
-      cv::Mat expected(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
-      for (int v = 0; v < kCamera.height; ++v)
-        for (int u = 0; u < kCamera.width; ++u)
+      cv::Mat expected(kSlidingCamera.height, kSlidingCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+      for (int v = 0; v < kSlidingCamera.height; ++v)
+        for (int u = 0; u < kSlidingCamera.width; ++u)
           if (r.face.at<uchar>(v, u) && OnFacePlane(u, v, t).x() > kThird)
             expected.at<float>(v, u) = float(kFaceZ);
       const AcquisitionStep s =
-          acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), expected, kCamera, Pose(t));
+          acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), expected, kSlidingCamera, SlidingPose(t));
       EXPECT_EQ(s.change.kind, ChangeKind::kAdded) << "frame " << t;
       EXPECT_LE(s.not_nearer, s.extracted);
       EXPECT_EQ(s.reconstructed, s.extracted - s.not_nearer);
@@ -241,13 +241,13 @@ TEST(ObjectAcquisition, TheFocusGrowsOverTheNearerObjectWhenAsked) {
     options.grow_focus_over_nearer = grow;
     const auto with_hole = [](const Rendered& r, int t) {
       cv::Mat m = r.face.clone();
-      for (int u = 0; u < kCamera.width; ++u)
+      for (int u = 0; u < kSlidingCamera.width; ++u)
         if (std::abs(OnFacePlane(u, 0, t).x()) < kHole) m.col(u).setTo(0);
       return m;
     };
     // The face spans 0.4 m at 1 m, 0.4 · fx px; the part left of the hole 0.16 m.
-    const double face_px = 2 * kFaceHalf * kCamera.fx / kFaceZ;
-    const double left_px = (kFaceHalf - kHole) * kCamera.fx / kFaceZ;
+    const double face_px = 2 * kFaceHalf * kSlidingCamera.fx / kFaceZ;
+    const double left_px = (kFaceHalf - kHole) * kSlidingCamera.fx / kFaceZ;
     return LearnAddedFace(options, with_hole, [&](const AcquisitionStep& s, int t) {
       EXPECT_NEAR(s.focus.box.width, grow ? face_px : left_px, 3.0) << "frame " << t;
     });
@@ -274,15 +274,15 @@ TEST(ObjectAcquisition, AnUnchangedRegionDoesNotGrow) {
   ObjectAcquisition acquisition(options);
   const Rendered r = Render(0, true);
   cv::Mat quarter = r.face.clone();
-  cv::Mat expected(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
-  for (int u = 0; u < kCamera.width; ++u)
+  cv::Mat expected(kSlidingCamera.height, kSlidingCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  for (int u = 0; u < kSlidingCamera.width; ++u)
     if (OnFacePlane(u, 0, 0).x() >= -kFaceHalf / 2) quarter.col(u).setTo(0);
   r.depth.copyTo(expected, quarter);
   const AcquisitionStep s =
-      acquisition.Process(r.rgb, r.depth, Surprise(quarter, 0), expected, kCamera, Pose(0));
+      acquisition.Process(r.rgb, r.depth, Surprise(quarter, 0), expected, kSlidingCamera, SlidingPose(0));
   EXPECT_EQ(s.change.kind, ChangeKind::kUnchanged);
   EXPECT_TRUE(s.learning);
-  EXPECT_NEAR(s.focus.box.width, kFaceHalf / 2 * kCamera.fx / kFaceZ, 3.0);
+  EXPECT_NEAR(s.focus.box.width, kFaceHalf / 2 * kSlidingCamera.fx / kFaceZ, 3.0);
 }
 
 // A static camera: the appearance map stores each frame's depth, so from the second frame on it
@@ -290,11 +290,11 @@ TEST(ObjectAcquisition, AnUnchangedRegionDoesNotGrow) {
 // added — and recognised.
 TEST(ObjectAcquisition, AnObjectTheMapAlreadyExpectsIsLearntOnceItWasAdded) {
   ObjectAcquisition acquisition;
-  const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  const cv::Mat wall_depth(kSlidingCamera.height, kSlidingCamera.width, CV_32FC1, cv::Scalar(kWallZ));
   const Rendered r = Render(0, true);
   for (int t = 0; t < 4; ++t) {
     const AcquisitionStep s = acquisition.Process(r.rgb, r.depth, Surprise(r.face, t),
-                                                  t == 0 ? wall_depth : r.depth, kCamera, Pose(0));
+                                                  t == 0 ? wall_depth : r.depth, kSlidingCamera, SlidingPose(0));
     EXPECT_EQ(s.change.kind, t == 0 ? ChangeKind::kAdded : ChangeKind::kUnchanged) << t;
     EXPECT_TRUE(s.learning) << t;
   }
@@ -307,17 +307,17 @@ TEST(ObjectAcquisition, AnObjectTheMapAlreadyExpectsIsLearntOnceItWasAdded) {
 // after forget_after_frames are gone — else they would name whatever is put down next.
 TEST(ObjectAcquisition, FramesWithoutANewObjectForgetTheActiveFeatures) {
   ObjectAcquisition acquisition;
-  const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+  const cv::Mat wall_depth(kSlidingCamera.height, kSlidingCamera.width, CV_32FC1, cv::Scalar(kWallZ));
   for (int t = 0; t < 3; ++t) {
     const Rendered r = Render(t, true);
-    acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), wall_depth, kCamera, Pose(t));
+    acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), wall_depth, kSlidingCamera, SlidingPose(t));
   }
   ASSERT_FALSE(acquisition.learner().active().empty());
   const int forget = ObjectLearnerOptions{}.forget_after_frames;
   for (int t = 3; t < 3 + forget; ++t) {
     const Rendered with = Render(t, true), without = Render(t, false);
     const AcquisitionStep s = acquisition.Process(
-        without.rgb, without.depth, Surprise(with.face, t), with.depth, kCamera, Pose(t));
+        without.rgb, without.depth, Surprise(with.face, t), with.depth, kSlidingCamera, SlidingPose(t));
     EXPECT_EQ(s.change.kind, ChangeKind::kRemoved) << t;
     EXPECT_FALSE(s.learning) << t;
     if (t + 1 < 3 + forget) {
@@ -335,7 +335,7 @@ TEST(ObjectAcquisition, NeverLearnsWhereOnlyTheLookChanged) {
   for (int t = 0; t < 12; ++t) {
     const Rendered r = Render(t, true);
     const AcquisitionStep s =
-        acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), r.depth, kCamera, Pose(t));
+        acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), r.depth, kSlidingCamera, SlidingPose(t));
     EXPECT_EQ(s.change.kind, ChangeKind::kUnchanged) << "frame " << t;
     EXPECT_FALSE(s.learning);
   }
@@ -347,10 +347,10 @@ TEST(ObjectAcquisition, EveryExtractorLearnsTheAddedFace) {
     ObjectAcquisitionOptions o;
     o.extractor = ParseFeatureExtractor(name);
     ObjectAcquisition acquisition(o);
-    const cv::Mat wall_depth(kCamera.height, kCamera.width, CV_32FC1, cv::Scalar(kWallZ));
+    const cv::Mat wall_depth(kSlidingCamera.height, kSlidingCamera.width, CV_32FC1, cv::Scalar(kWallZ));
     for (int t = 0; t < 8; ++t) {
       const Rendered r = Render(t, true);
-      acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), wall_depth, kCamera, Pose(t));
+      acquisition.Process(r.rgb, r.depth, Surprise(r.face, t), wall_depth, kSlidingCamera, SlidingPose(t));
     }
     const FeatureDatabase& db = acquisition.learner().database();
     std::printf("%s: %d objects, %d features learnt in 8 frames\n", name.c_str(), db.objects(),
@@ -380,22 +380,22 @@ TEST(ObjectAcquisition, BadInputIsRejectedAndTheLearnerUnchanged) {
   const Rendered r = Render(0, true);
   const cv::Mat s = Surprise(r.face, 0);
   const cv::Mat small(10, 10, CV_32FC1, cv::Scalar(1.0f));
-  EXPECT_THROW(acquisition.Process(r.rgb, small, s, cv::Mat(), kCamera, Pose(0)),
+  EXPECT_THROW(acquisition.Process(r.rgb, small, s, cv::Mat(), kSlidingCamera, SlidingPose(0)),
                std::invalid_argument);
-  EXPECT_THROW(acquisition.Process(r.depth, r.depth, s, cv::Mat(), kCamera, Pose(0)),
+  EXPECT_THROW(acquisition.Process(r.depth, r.depth, s, cv::Mat(), kSlidingCamera, SlidingPose(0)),
                std::invalid_argument);
-  EXPECT_THROW(acquisition.Process(r.rgb, r.depth, s, small, kCamera, Pose(0)),
+  EXPECT_THROW(acquisition.Process(r.rgb, r.depth, s, small, kSlidingCamera, SlidingPose(0)),
                std::invalid_argument);
-  Eigen::Isometry3d nan_pose = Pose(0);
+  Eigen::Isometry3d nan_pose = SlidingPose(0);
   nan_pose.translation().x() = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(acquisition.Process(r.rgb, r.depth, s, cv::Mat(), kCamera, nan_pose),
+  EXPECT_THROW(acquisition.Process(r.rgb, r.depth, s, cv::Mat(), kSlidingCamera, nan_pose),
                std::invalid_argument);
   EXPECT_TRUE(acquisition.learner().active().empty());
   // A map that covers nothing (all NaN): no box, a frame without features, no error.
   const cv::Mat uncovered(r.depth.size(), CV_32FC1,
                           cv::Scalar(std::numeric_limits<float>::quiet_NaN()));
   const AcquisitionStep step =
-      acquisition.Process(r.rgb, r.depth, uncovered, cv::Mat(), kCamera, Pose(0));
+      acquisition.Process(r.rgb, r.depth, uncovered, cv::Mat(), kSlidingCamera, SlidingPose(0));
   EXPECT_TRUE(step.focus.box.empty());
   EXPECT_EQ(step.learner.selected, 0);
 }
