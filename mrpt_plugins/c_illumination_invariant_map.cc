@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -78,7 +79,13 @@ std::string CIlluminationInvariantMap::asString() const {
     threshold += m.model(i).model.threshold / m.size();
   }
   s << " (" << m.dropped_viewpoints() << " dropped), mean coverage " << 100.0 * coverage
-    << " %, mean T_Y " << threshold << ", " << m.BytesUsed() / 1e6 << " MB";
+    << " %, mean T_Y " << threshold << ", decision threshold ";
+  if (std::isnan(m.decision_threshold()))
+    s << "none";
+  else
+    s << m.decision_threshold() << " nats at " << 100.0 * m.options().threshold.false_alarm_rate
+      << " % false alarms";
+  s << ", " << m.BytesUsed() / 1e6 << " MB";
   return s.str();
 }
 
@@ -133,7 +140,8 @@ void CIlluminationInvariantMap::saveMetricMapRepresentationToFile(const std::str
 // "shapes"), its coverage, its model (gamma fits of luminance and saturation, quantisation
 // widths, mean information, T_Y) and the missing texture's tail table (entries, values,
 // ln(N + 1); no entries: not learnt), energy floor and block; the texture's scale is the view's
-// plane "texture". Older versions: map_formats.h.
+// plane "texture"; then the decision threshold on Δ (NaN: none learnt). Older versions:
+// map_formats.h.
 uint8_t CIlluminationInvariantMap::serializeGetVersion() const {
   return CurrentMapFormat("CIlluminationInvariantMap");
 }
@@ -157,6 +165,7 @@ void CIlluminationInvariantMap::serializeTo(mrpt::serialization::CArchive& out) 
     out << m.model.texture.max_information << m.model.texture_floor
         << int32_t(m.model.texture_block);
   }
+  out << map_->decision_threshold();
 }
 
 void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
@@ -200,6 +209,13 @@ void CIlluminationInvariantMap::serializeFrom(mrpt::serialization::CArchive& in,
     } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
       ThrowMapFileError(e.what());
     }
+  }
+  double threshold = std::numeric_limits<double>::quiet_NaN();  // older files: none learnt
+  if (format.decision_threshold) in >> threshold;
+  try {
+    map->SetDecisionThreshold(threshold);
+  } catch (const std::invalid_argument& e) {
+    ThrowMapFileError(e.what());
   }
   config_ = config;  // only now: a failure above leaves the map as it was
   map_ = std::move(map);

@@ -56,6 +56,14 @@ const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfi
             {"frame", "empty"},
             "e-hat of eq. 6.24: frame (the frame's largest e, the thesis) | empty (each region's "
             "distance to the empty shape)")
+        .Add(
+            "false_alarm_rate", [](C & c) -> auto& { return c.map.threshold.false_alarm_rate; },
+            "share of an unchanged new lighting's pixels above the decision threshold learnt by "
+            "leaving one training lighting out (beyond the thesis)")
+        .Add(
+            "threshold_viewpoints", [](C & c) -> auto& { return c.map.threshold.viewpoints; },
+            "viewpoints the threshold is learnt at (each costs one invariant image per "
+            "lighting; 0: no threshold)")
         .Check([](const C& c) {
           const illumination::IlluminationMapOptions& o = c.map;
           CheckInRange(o.viewpoint_distance, 0, 100, "viewpoint_distance");
@@ -72,6 +80,8 @@ const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfi
           CheckInRange(o.zernike.grid, 2, 512, "zernike_grid");
           CheckInRange(o.novelty.min_region_pixels, 1, 1000000, "min_region_pixels");
           CheckInRange(o.novelty.min_window_share, 0, 1, "min_window_share");
+          CheckInRange(o.threshold.false_alarm_rate, 1e-6, 0.5, "false_alarm_rate");
+          CheckInRange(o.threshold.viewpoints, 0, 1000, "threshold_viewpoints");
         });
     return t;
   }();

@@ -17,7 +17,8 @@ struct ClassFormats {
 
 // Versions of the view maps: 0 and 1 stored options positionally and planes raw, 2 options by
 // key, 3 planes encoded (shuffled), 4 encoded with prediction. The others: version 1 added
-// the object database's keypoints and the illumination map's texture tails.
+// the object database's keypoints and the illumination map's texture tails, the illumination
+// map's version 2 its decision threshold.
 const std::vector<ClassFormats>& Classes() {
   static const std::vector<ClassFormats> classes = {
       {"CAppearanceMap",
@@ -31,7 +32,7 @@ const std::vector<ClassFormats>& Classes() {
        {"new_view_distance", "new_view_angle_deg", "max_relative_depth_jump", "depth_tolerance"},
        {"angle_power", "weight_by_rays"}},
       {"CObjectDatabaseMap", 1, {}, {}},
-      {"CIlluminationInvariantMap", 1, {}, {}},
+      {"CIlluminationInvariantMap", 2, {}, {}},
   };
   return classes;
 }
@@ -69,6 +70,7 @@ MapFormat MapFormatOf(const std::string& map_class, uint8_t version) {
     f.encoding = version == 3 ? views::PlaneEncoding::kShuffled : views::PlaneEncoding::kPredicted;
   } else {
     f.learnt_keypoints = f.texture_tails = version >= 1;
+    f.decision_threshold = c.map_class != std::string("CIlluminationInvariantMap") || version >= 2;
   }
   return f;
 }

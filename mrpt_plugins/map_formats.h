@@ -26,6 +26,8 @@ struct MapFormat {
   bool learnt_keypoints = true;
   /// CIlluminationInvariantMap: each viewpoint's missing-texture tail table.
   bool texture_tails = true;
+  /// CIlluminationInvariantMap: the decision threshold on Δ learnt from the training lightings.
+  bool decision_threshold = true;
 };
 
 /// The current version of `map_class`'s file ("CAppearanceMap", …); throws std::logic_error for

@@ -150,6 +150,10 @@ IlluminationMap::IlluminationMap(const IlluminationMapOptions& options)
         "IlluminationMap: viewpoint_distance and viewpoint_angle_deg must be >= 0");
   if (!(options.min_viewpoint_coverage >= 0.0 && options.min_viewpoint_coverage <= 1.0))
     throw std::invalid_argument("IlluminationMap: min_viewpoint_coverage must be in [0, 1]");
+  if (!(options.threshold.false_alarm_rate > 0.0 && options.threshold.false_alarm_rate < 1.0) ||
+      options.threshold.viewpoints < 0)
+    throw std::invalid_argument(
+        "IlluminationMap: threshold.false_alarm_rate must be in (0, 1), threshold.viewpoints >= 0");
 }
 
 void IlluminationMap::BeginLighting() {
@@ -258,6 +262,7 @@ void IlluminationMap::Build() {
                                 "image's gradient, not an invariant one — acquire at least two");
   views::ReferenceViewStore kept;
   std::vector<IlluminationViewpointModel> models;
+  std::vector<int> kept_index;
   int dropped = 0;
   std::string first_error;
   for (int v = 0; v < viewpoints.size(); ++v) {
@@ -280,6 +285,7 @@ void IlluminationMap::Build() {
       m.model.texture_scale.release();
       kept.Add(std::move(view));
       models.push_back(std::move(m));
+      kept_index.push_back(v);
     } catch (const std::invalid_argument& e) {
       if (first_error.empty()) first_error = "viewpoint " + std::to_string(v) + ": " + e.what();
       ++dropped;
@@ -289,14 +295,47 @@ void IlluminationMap::Build() {
     throw std::invalid_argument("IlluminationMap: no viewpoint has an invariant image (" +
                                 std::to_string(dropped) + " dropped" +
                                 (first_error.empty() ? "" : "; first: " + first_error) + ")");
+  const double threshold = LearnThreshold(images, masks, kept_index);
   store_ = std::move(kept);
   models_ = std::move(models);
   dropped_ = dropped;
+  decision_threshold_ = threshold;
   lightings_ = lightings;
   virtual_rgb_.clear();
   virtual_valid_.clear();
   frames_.clear();
   built_ = true;
+}
+
+double IlluminationMap::LearnThreshold(const std::vector<std::vector<cv::Mat>>& images,
+                                       const std::vector<std::vector<cv::Mat>>& masks,
+                                       const std::vector<int>& kept_index) const {
+  const LightingThresholdOptions& o = options_.threshold;
+  const int lightings = int(images.front().size());
+  if (o.viewpoints <= 0 || lightings - 1 < std::max(2, options_.invariant.min_lightings))
+    return std::numeric_limits<double>::quiet_NaN();
+  // Evenly spread over the kept viewpoints: the middle of each of n equal runs.
+  const int n = std::min(o.viewpoints, int(kept_index.size()));
+  std::vector<float> pooled;
+  for (int k = 0; k < n; ++k) {
+    const auto v =
+        std::size_t(kept_index[std::size_t((2 * k + 1) * int(kept_index.size()) / (2 * n))]);
+    try {
+      const HeldOutNovelty held = HeldOutLightingNovelty(
+          images[v], masks[v], options_.invariant, options_.model, options_.novelty, zernike_);
+      pooled.insert(pooled.end(), held.values.begin(), held.values.end());
+    } catch (const std::invalid_argument&) {
+      // One lighting fewer can leave a viewpoint without an invariant image; the others speak.
+    }
+  }
+  if (pooled.empty()) return std::numeric_limits<double>::quiet_NaN();
+  return ThresholdAtFalseAlarmRate(std::move(pooled), o.false_alarm_rate);
+}
+
+void IlluminationMap::SetDecisionThreshold(double threshold) {
+  if (!(std::isnan(threshold) || (std::isfinite(threshold) && threshold >= 0.0)))
+    throw std::invalid_argument("IlluminationMap: a decision threshold must be >= 0 and finite");
+  decision_threshold_ = threshold;
 }
 
 void IlluminationMap::AddViewpoint(views::ReferenceView view, IlluminationViewpointModel model,

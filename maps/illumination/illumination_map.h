@@ -23,6 +23,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <limits>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -32,6 +33,7 @@
 #include "maps/illumination/illumination_model.h"
 #include "maps/illumination/illumination_novelty.h"
 #include "maps/illumination/invariant_image.h"
+#include "maps/illumination/lighting_threshold.h"
 #include "maps/illumination/zernike_moments.h"
 #include "maps/views/reference_view_store.h"
 #include "maps/views/view_selection.h"
@@ -63,6 +65,8 @@ struct IlluminationMapOptions {
   ZernikeOptions zernike;
   /// Its min_intensity is the invariant's (a frame is clipped as the images the map was made of).
   IlluminationNoveltyOptions novelty;
+  /// The decision threshold on Δ learnt at Build from the training lightings alone.
+  LightingThresholdOptions threshold;
 };
 
 /// What one viewpoint holds besides its geometry.
@@ -94,7 +98,8 @@ class IlluminationMap {
   /// Makes the invariant images and models. Throws std::invalid_argument, leaving the map as it
   /// was, with fewer than two lightings (one lighting gives no invariant image) or when no
   /// viewpoint is covered by enough of them; viewpoints below min_viewpoint_coverage are dropped
-  /// and counted.
+  /// and counted. With at least min_lightings + 1 lightings (and threshold.viewpoints > 0) it
+  /// also learns decision_threshold() by leaving one lighting out (lighting_threshold.h).
   void Build();
   bool built() const { return built_; }
 
@@ -116,6 +121,11 @@ class IlluminationMap {
   /// The viewpoints (their geometry: poses for drawing, selection).
   const views::ReferenceViewStore& store() const { return store_; }
   int dropped_viewpoints() const { return dropped_; }
+  /// τ on Δ at options().threshold.false_alarm_rate (nats); NaN when none was learnt (too few
+  /// lightings, or threshold.viewpoints = 0). A pixel with Δ > τ is judged novel.
+  double decision_threshold() const { return decision_threshold_; }
+  /// A loaded map's τ: finite and ≥ 0, or NaN for none (std::invalid_argument otherwise).
+  void SetDecisionThreshold(double threshold);
   const IlluminationMapOptions& options() const { return options_; }
   const ZernikeMoments& zernike() const { return zernike_; }
   std::size_t BytesUsed() const;
@@ -128,6 +138,10 @@ class IlluminationMap {
   // The current lighting's virtual images at every viewpoint.
   RenderedLighting RenderLighting(const views::ReferenceViewStore& viewpoints) const;
   // Each viewpoint's virtual image and mask of one lighting onto its lists.
+  // τ from the kept viewpoints' virtual images (`images`, `masks` indexed as `kept_index`).
+  double LearnThreshold(const std::vector<std::vector<cv::Mat>>& images,
+                        const std::vector<std::vector<cv::Mat>>& masks,
+                        const std::vector<int>& kept_index) const;
   static void Append(const RenderedLighting& rendered, std::vector<std::vector<cv::Mat>>& images,
                      std::vector<std::vector<cv::Mat>>& masks);
 
@@ -140,6 +154,7 @@ class IlluminationMap {
   std::vector<std::vector<cv::Mat>> virtual_rgb_, virtual_valid_;  // [viewpoint][lighting]
   std::vector<IlluminationViewpointModel> models_;
   int dropped_ = 0;
+  double decision_threshold_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace novelty::illumination

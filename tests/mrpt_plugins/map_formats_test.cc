@@ -35,7 +35,7 @@ TEST(MapFormats, TheClassesWriteTheCurrentVersion) {
   EXPECT_EQ(VersionWritten(CObjectDatabaseMap(), "CObjectDatabaseMap"),
             CurrentMapFormat("CObjectDatabaseMap"));
   // An illumination map is saved only once built (its own test checks the round trip).
-  EXPECT_EQ(CurrentMapFormat("CIlluminationInvariantMap"), 1);
+  EXPECT_EQ(CurrentMapFormat("CIlluminationInvariantMap"), 2);
 }
 
 TEST(MapFormats, TheCurrentVersionIsTheFullLayout) {
@@ -46,7 +46,7 @@ TEST(MapFormats, TheCurrentVersionIsTheFullLayout) {
     EXPECT_TRUE(f.positional_keys.empty()) << c;
     EXPECT_FALSE(f.raw_planes) << c;
     EXPECT_EQ(f.encoding, full.encoding) << c;
-    EXPECT_TRUE(f.learnt_keypoints && f.texture_tails) << c;
+    EXPECT_TRUE(f.learnt_keypoints && f.texture_tails && f.decision_threshold) << c;
   }
 }
 
@@ -62,6 +62,8 @@ TEST(MapFormats, OlderViewMapsDifferAsDocumented) {
   EXPECT_EQ(MapFormatOf("CAppearanceMap", 3).encoding, views::PlaneEncoding::kShuffled);
   EXPECT_FALSE(MapFormatOf("CObjectDatabaseMap", 0).learnt_keypoints);
   EXPECT_FALSE(MapFormatOf("CIlluminationInvariantMap", 0).texture_tails);
+  EXPECT_TRUE(MapFormatOf("CIlluminationInvariantMap", 1).texture_tails);
+  EXPECT_FALSE(MapFormatOf("CIlluminationInvariantMap", 1).decision_threshold);
 }
 
 // A positional key that names no option would make an old file unreadable: each must be in the

@@ -231,6 +231,55 @@ TEST(IlluminationMap, ANewObjectStandsOutAndANewShadowDoesNot) {
   EXPECT_TRUE(cv::checkRange(r.novelty.novelty));
 }
 
+// Share of the covered pixels of `mask` with Δ above τ.
+double ShareAboveThreshold(const IlluminationMapResult& r, const cv::Mat& mask, double tau) {
+  const cv::Mat judged = mask & r.viewpoint.covered;
+  return cv::countNonZero((r.novelty.novelty > tau) & judged) / double(cv::countNonZero(judged));
+}
+
+TEST(IlluminationMap, TheThresholdFromTrainingLightingsHoldsOnUnseenOnes) {
+  const IlluminationMap map = Learnt();
+  const double tau = map.decision_threshold();
+  ASSERT_TRUE(std::isfinite(tau));
+  // Unseen lightings with shadows of their own, nothing new: the target false-alarm rate (1 %),
+  // with room for the few frames judged.
+  const std::vector<Lighting> unseen = {
+      {1.1, {-0.05, 0.25}}, {0.85, {0.30, 0.05}}, {1.25, {0.15, -0.30}}};
+  long alarms = 0, judged = 0;
+  for (std::size_t k = 0; k < unseen.size(); ++k) {
+    const IlluminationMapResult r = map.Detect(Render(0.07 + 0.05 * k, unseen[k], 4000 + int(k)));
+    alarms += cv::countNonZero((r.novelty.novelty > tau) & r.viewpoint.covered);
+    judged += cv::countNonZero(r.viewpoint.covered);
+  }
+  EXPECT_LE(double(alarms) / double(judged), 0.02) << alarms << " of " << judged << ", tau " << tau;
+  // A new object under an unseen lighting: most of it above τ.
+  const NewObject object{{0.25, -0.15, 0.15, 0.15}, {0.6, 0.2, 0.2}};
+  cv::Mat truth;
+  const IlluminationMapResult r =
+      map.Detect(Render(0.11, {1.1, {-0.05, 0.25}, 0.15}, 4100, &object, &truth));
+  EXPECT_GE(ShareAboveThreshold(r, truth, tau), 0.5);
+}
+
+TEST(IlluminationMap, NoThresholdWithoutALightingToLeaveOut) {
+  IlluminationMapOptions options;
+  options.invariant.min_lightings = 2;
+  IlluminationMap two(options);
+  for (int m = 0; m < 2; ++m) {
+    two.BeginLighting();
+    for (int k = 0; k <= 5; ++k) two.AddTrainingFrame(Render(0.02 * k, kLightings[m], 10 * m + k));
+  }
+  two.Build();
+  EXPECT_TRUE(std::isnan(two.decision_threshold()));
+  options.threshold.viewpoints = 0;
+  EXPECT_TRUE(std::isnan(Learnt(options).decision_threshold()));
+  options.threshold.false_alarm_rate = 0.0;
+  EXPECT_THROW(IlluminationMap{options}, std::invalid_argument);
+  IlluminationMap loaded;
+  EXPECT_THROW(loaded.SetDecisionThreshold(-1.0), std::invalid_argument);
+  loaded.SetDecisionThreshold(4.5);
+  EXPECT_EQ(loaded.decision_threshold(), 4.5);
+}
+
 TEST(IlluminationMap, AFrameNoViewpointFacesHasNoCoverage) {
   const IlluminationMap map = Learnt();
   core::Frame frame = Render(0.1, kLightings[0], 3000);
