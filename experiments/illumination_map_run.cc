@@ -113,7 +113,8 @@ bool ReportEnd(const mrpt_plugins::RawlogMapPlayer& player, const RawlogPass& pa
 struct Judged {
   eval::PlotSeries coverage{"covered share", "#0072b2", {}, 1.0},
       auc{"pixel AUC", "#d55e00", {}, 1.0}, mean{"mean Δ", "#009e73", {}, 1.0},
-      max{"largest Δ", "#cc79a7", {}, 1.0};
+      max{"largest Δ", "#cc79a7", {}, 1.0}, novel{"share above τ", "#e69f00", {}, 1.0};
+  long novel_pixels = 0, covered_pixels = 0;  // over all frames, with a decision threshold
   std::vector<double> scores;  // Δ of the covered pixels of all frames, with ground truth
   std::vector<bool> positive;
   std::vector<std::pair<std::string, std::string>> panels;  // (path, caption)
@@ -149,14 +150,21 @@ void WritePictures(const mrpt_plugins::CIlluminationInvariantMap& map, int frame
   cv::Mat information = r.novelty.information_y.clone();
   information.setTo(0.0f, r.viewpoint.covered == 0);
   const std::string panel = cv::format("panels/%06d.png", frame);
-  core::WriteRgbImage(
-      (out / panel).string(),
-      eval::SideBySide(
-          {map.lastFrame().rgb,
-           illumination::LinearImage8(r.viewpoint.log_invariant, r.viewpoint.covered),
-           core::FalseColor(information, scale), delta},
-          4,
-          {cv::format("frame %d", frame), "invariant image", "information i_Y", "novelty (6.3)"}));
+  std::vector<cv::Mat> tiles = {
+      map.lastFrame().rgb,
+      illumination::LinearImage8(r.viewpoint.log_invariant, r.viewpoint.covered),
+      core::FalseColor(information, scale), delta};
+  std::vector<std::string> captions = {cv::format("frame %d", frame), "invariant image",
+                                       "information i_Y", "novelty (6.3)"};
+  if (!r.novel.empty()) {  // the decision: the camera image, red where Δ > τ
+    cv::Mat decided = map.lastFrame().rgb.clone(), red(decided.size(), CV_8UC3, {255, 0, 0});
+    cv::addWeighted(decided, 0.4, red, 0.6, 0.0, red);
+    red.copyTo(decided, r.novel);
+    tiles.push_back(decided);
+    captions.push_back(cv::format("novel: %.1f %% above %.1f", 100 * r.novel_share,
+                                  map.map().decision_threshold()));
+  }
+  core::WriteRgbImage((out / panel).string(), eval::SideBySide(tiles, int(tiles.size()), captions));
   j.panels.emplace_back(panel, cv::format("frame %d: %.0f %% covered, %d regions", frame,
                                           100 * r.coverage, r.novelty.region_count));
 }
@@ -178,28 +186,76 @@ void RecordFrame(const mrpt_plugins::CIlluminationInvariantMap& map, int frame, 
   j.auc.points.emplace_back(frame, auc);
   j.mean.points.emplace_back(frame, covered ? mean_delta : NAN);
   j.max.points.emplace_back(frame, covered ? max_delta : NAN);
+  j.novel.points.emplace_back(frame, r.novel_share);
+  if (!r.novel.empty()) {
+    j.novel_pixels += cv::countNonZero(r.novel);
+    j.covered_pixels += cv::countNonZero(r.viewpoint.covered);
+  }
+  const auto blank_if_nan = [](double v) {
+    return std::isnan(v) ? std::string() : eval::NumberText(v);
+  };
   csv << frame << ',' << r.coverage << ',' << r.novelty.region_count << ','
       << r.novelty.matched_count << ',' << mean_delta << ',' << max_delta << ','
-      << (std::isnan(auc) ? std::string() : std::to_string(auc)) << '\n';
+      << blank_if_nan(r.novel_share) << ',' << blank_if_nan(auc) << '\n';
   if (covered) WritePictures(map, frame, judged, panels_every, out, j);
 }
 
-void WriteReport(const std::string& title, const std::string& summary,
+// The decision threshold's findings: τ, the share of covered pixels above it (with nothing new
+// in view, the false-alarm rate; its target the map's), and with ground truth its false-alarm
+// rate and TPR over the pixels the truth labels.
+void AddDecisionFindings(const illumination::IlluminationMap& map, const Judged& j,
+                         JudgeIlluminationMapResult& r) {
+  const double tau = map.decision_threshold(), target = map.options().threshold.false_alarm_rate;
+  if (std::isnan(tau)) {
+    r.findings.Add("decision threshold",
+                   "none (the map file has none: rebuild it with 3 or more "
+                   "lightings)");
+    return;
+  }
+  r.novel_share = j.covered_pixels ? double(j.novel_pixels) / double(j.covered_pixels) : NAN;
+  r.findings.Add("decision threshold τ (nats)", eval::NumberText(tau),
+                 "learnt at " + eval::PercentText(target) + " false alarms");
+  r.findings.Add("covered pixels above τ", eval::PercentText(r.novel_share),
+                 "(with nothing new: ≈ " + eval::PercentText(target) + ")");
+  r.summary += "; " + eval::PercentText(r.novel_share) +
+               " of the covered pixels above τ = " + eval::NumberText(tau);
+  long negatives = 0, false_alarms = 0, positives = 0, hits = 0;
+  for (std::size_t k = 0; k < j.scores.size(); ++k) {
+    const bool above = j.scores[k] > tau;
+    (j.positive[k] ? positives : negatives) += 1;
+    (j.positive[k] ? hits : false_alarms) += above;
+  }
+  if (negatives > 0) {
+    r.false_alarm_rate = double(false_alarms) / double(negatives);
+    r.summary += " (false alarms " + eval::PercentText(r.false_alarm_rate) + ")";
+    r.findings.Add("false-alarm rate at τ (ground truth)", eval::PercentText(r.false_alarm_rate),
+                   "(reported; the map's target " + eval::PercentText(target) + ")");
+  }
+  if (positives > 0)
+    r.findings.Add("TPR at τ (ground truth)", eval::PercentText(double(hits) / double(positives)),
+                   "(reported)");
+}
+
+void WriteReport(const std::string& title, const JudgeIlluminationMapResult& r,
                  const std::optional<eval::Roc>& roc, const Judged& j, const fs::path& out) {
   eval::HtmlReport report(title);
-  report.Paragraph(summary);
+  report.Paragraph(r.summary);
+  r.findings.AddTo(report);
   report.Paragraph(
       "frames.csv: per frame the share of pixels the map covers, the regions of i_Y > T_Y and how "
       "many a stored highlight or shadow shape explains, the mean and largest novelty Δ (nats, "
-      "eq. 6.24) and, with --groundtruth, the pixel AUC of Δ against the novelty mask. Pictures: "
-      "Δ and i_Y in false colour from 0 to 2·T_Y.");
+      "eq. 6.24), the share of covered pixels above the map's decision threshold τ (learnt from "
+      "the training lightings: with nothing new in view it is the false-alarm rate) and, with "
+      "--groundtruth, the pixel AUC of Δ against the novelty mask. Pictures: Δ and i_Y in false "
+      "colour from 0 to 2·T_Y; the last tile of a panel is red where Δ > τ.");
   report.Heading("Per frame");
   report.Raw(
       eval::SvgLinePlot("Novelty Δ over the covered pixels", "frame", "Δ (nats)", {j.mean, j.max}));
-  std::vector<eval::PlotSeries> shares = {j.coverage};
+  std::vector<eval::PlotSeries> shares = {j.coverage, j.novel};
   if (roc) shares.push_back(j.auc);
-  report.Raw(
-      eval::SvgLinePlot(roc ? "Coverage and pixel AUC" : "Coverage", "frame", "share", shares));
+  report.Raw(eval::SvgLinePlot(
+      roc ? "Coverage, share above τ and pixel AUC" : "Coverage and share above τ", "frame",
+      "share", shares));
   if (roc) {
     report.Heading("ROC of Δ over the covered pixels of all frames");
     report.Raw(eval::SvgLinePlot("ROC", "FPR (%)", "TPR (%)",
@@ -301,7 +357,7 @@ JudgeIlluminationMapResult JudgeIlluminationMap(const std::string& map_in,
   fs::create_directories(out / "novelty");
   fs::create_directories(out / "panels");
   std::ofstream csv(out / "frames.csv");
-  csv << "frame,coverage,regions,matched,mean_delta,max_delta,auc\n";
+  csv << "frame,coverage,regions,matched,mean_delta,max_delta,novel_share,auc\n";
   Judged j;
   JudgeIlluminationMapResult r;
   int last = 0;
@@ -321,6 +377,7 @@ JudgeIlluminationMapResult JudgeIlluminationMap(const std::string& map_in,
   r.findings.Add("frames skipped", std::to_string(r.skipped));
   r.findings.Add("ms per frame", eval::NumberText(ms));
   r.summary = cv::format("%d frames judged, %d skipped, %.1f ms a frame", r.frames, r.skipped, ms);
+  AddDecisionFindings(m.map->map(), j, r);
   const long n = long(std::count(j.positive.begin(), j.positive.end(), true));
   std::optional<eval::Roc> roc;
   if (n > 0 && n < long(j.positive.size())) {
@@ -332,7 +389,7 @@ JudgeIlluminationMapResult JudgeIlluminationMap(const std::string& map_in,
     r.summary += cv::format("; pixel AUC %.3f, TPR at FPR 1 %% %.1f %%", roc->auc,
                             100 * roc->TprAtFpr(0.01));
   }
-  WriteReport("novelty-illumination-map: " + rawlog + " against " + map_in, r.summary, roc, j, out);
+  WriteReport("novelty-illumination-map: " + rawlog + " against " + map_in, r, roc, j, out);
   r.findings.WriteCsv((out / "findings.csv").string());
   return r;
 }

@@ -10,13 +10,14 @@
 // truth's camera poses. Learning calls beginLighting() before each pass and finishAcquisition()
 // after the last, then saves the map atomically. Judging writes into its output folder:
 // novelty/FRAME.png (Δ in false colour, 0 to 2·T_Y), frames.csv (per frame: coverage, regions,
-// matched regions, mean and largest Δ; with ground truth the pixel AUC of Δ against the novelty
-// mask), findings.csv and report.html (plots of Δ, coverage and AUC per frame, the pixel ROC with
-// ground truth, a panel every `panels_every` frames). Frames that cannot be used are skipped and
-// counted.
+// matched regions, mean and largest Δ, the share of covered pixels above the map's decision
+// threshold; with ground truth the pixel AUC of Δ against the novelty mask), findings.csv and
+// report.html (plots of Δ, coverage and AUC per frame, the pixel ROC with ground truth, a panel
+// every `panels_every` frames). Frames that cannot be used are skipped and counted.
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -63,7 +64,11 @@ struct JudgeIlluminationMapResult {
   eval::FindingsTable findings;  ///< as findings.csv holds them
   std::string summary;           ///< one line: frames, skipped, ms a frame, AUC with ground truth
   int frames = 0, skipped = 0;
-  double auc = -1.0;         ///< pixel AUC of Δ over all frames' covered pixels; -1 without truth
+  double auc = -1.0;  ///< pixel AUC of Δ over all frames' covered pixels; -1 without truth
+  /// Share of all frames' covered pixels above the map's decision threshold (NaN: it has none).
+  double novel_share = std::numeric_limits<double>::quiet_NaN();
+  /// With ground truth, the share of its unchanged covered pixels above the threshold.
+  double false_alarm_rate = std::numeric_limits<double>::quiet_NaN();
   bool ended_early = false;  ///< the rawlog ended, or ended before the last frame asked
 };
 

@@ -436,8 +436,12 @@ IlluminationMapResult IlluminationMap::Detect(const core::Frame& frame) const {
   interpolated.covered = covered;
   out.viewpoint =
       MakeViewpoint(interpolated, std::move(model), options_.novelty.min_region_pixels, &zernike_);
-  if (out.coverage > 0.0)
-    out.novelty = DetectIlluminationNovelty(frame.rgb, out.viewpoint, zernike_, options_.novelty);
+  if (out.coverage == 0.0) return out;
+  out.novelty = DetectIlluminationNovelty(frame.rgb, out.viewpoint, zernike_, options_.novelty);
+  if (!std::isnan(decision_threshold_)) {
+    out.novel = (out.novelty.novelty > decision_threshold_) & covered;
+    out.novel_share = cv::countNonZero(out.novel) / double(cv::countNonZero(covered));
+  }
   return out;
 }
 

@@ -81,6 +81,12 @@ struct IlluminationMapResult {
   IlluminationNovelty novelty;      ///< 6.3 against it (empty when nothing covers the frame)
   std::vector<int> viewpoints;      ///< the viewpoints used
   double coverage = 0.0;            ///< share of the frame's pixels the interpolation covers
+  /// The decision: CV_8UC1, 255 at covered pixels with Δ above the map's decision_threshold();
+  /// empty when the map has none or nothing covers the frame.
+  cv::Mat novel;
+  /// Share of the covered pixels in `novel` (NaN when it is empty): with nothing new in view, the
+  /// false-alarm rate.
+  double novel_share = std::numeric_limits<double>::quiet_NaN();
 };
 
 class IlluminationMap {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -73,6 +74,9 @@ TEST_F(FourLightings, LearnsSavesAndFindsTheBoxPutDown) {
   EXPECT_EQ(r.skipped, 0);
   EXPECT_FALSE(r.ended_early);
   EXPECT_GE(r.auc, 0.95);
+  // The threshold learnt from the four lightings alone (default 1 %) on the test pass's
+  // unchanged pixels, with room for the box's own shadow and one short pass.
+  EXPECT_LE(r.false_alarm_rate, 0.03);
   int pictures = 0;
   for (const auto& e : fs::directory_iterator(out / "novelty")) pictures += e.is_regular_file();
   EXPECT_EQ(pictures, 10);
@@ -82,6 +86,26 @@ TEST_F(FourLightings, LearnsSavesAndFindsTheBoxPutDown) {
   EXPECT_EQ(lines, 11) << "a header and one row per frame";
   for (const char* file : {"findings.csv", "report.html", "panels/000058.png", "panels/000063.png"})
     EXPECT_TRUE(fs::exists(out / file)) << file << ": a panel every 5 frames from the first";
+}
+
+// A pass with nothing new under a lighting the map never saw: no ROC, but its false-alarm rate at
+// the map's threshold, near the 1 % it was learnt for.
+TEST_F(FourLightings, NothingNewGivesTheFalseAlarmRate) {
+  const std::string map = (dir_ / "three.illumination_invariant").string();
+  LearnIlluminationMap({rawlog_ + ":L1", rawlog_ + ":L2", rawlog_ + ":L3"}, "", map, Options());
+  const fs::path out = dir_ / "unseen";
+  fs::create_directories(out);
+  const JudgeIlluminationMapResult r =
+      JudgeIlluminationMap(map, rawlog_ + ":L4", out.string(), 0, Options());
+  std::printf("%s\n", r.summary.c_str());
+  EXPECT_EQ(r.auc, -1.0) << "no novelty in the pass: no ROC";
+  ASSERT_TRUE(std::isfinite(r.novel_share));
+  EXPECT_LE(r.novel_share, 0.03);
+  EXPECT_EQ(r.novel_share, r.false_alarm_rate) << "with nothing new, every pixel above is one";
+  std::ifstream csv(out / "frames.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_NE(header.find("novel_share"), std::string::npos) << header;
 }
 
 TEST_F(FourLightings, PassesAreRangesOrPhases) {

@@ -250,6 +250,10 @@ TEST(IlluminationMap, TheThresholdFromTrainingLightingsHoldsOnUnseenOnes) {
     const IlluminationMapResult r = map.Detect(Render(0.07 + 0.05 * k, unseen[k], 4000 + int(k)));
     alarms += cv::countNonZero((r.novelty.novelty > tau) & r.viewpoint.covered);
     judged += cv::countNonZero(r.viewpoint.covered);
+    // Detect's own decision is the same pixels.
+    EXPECT_EQ(cv::countNonZero(r.novel != ((r.novelty.novelty > tau) & r.viewpoint.covered)), 0);
+    EXPECT_NEAR(r.novel_share,
+                cv::countNonZero(r.novel) / double(cv::countNonZero(r.viewpoint.covered)), 1e-12);
   }
   EXPECT_LE(double(alarms) / double(judged), 0.02) << alarms << " of " << judged << ", tau " << tau;
   // A new object under an unseen lighting: most of it above τ.
@@ -270,6 +274,10 @@ TEST(IlluminationMap, NoThresholdWithoutALightingToLeaveOut) {
   }
   two.Build();
   EXPECT_TRUE(std::isnan(two.decision_threshold()));
+  const IlluminationMapResult undecided = two.Detect(Render(0.05, kLightings[2], 99));
+  EXPECT_GT(undecided.coverage, 0.5);
+  EXPECT_TRUE(undecided.novel.empty());
+  EXPECT_TRUE(std::isnan(undecided.novel_share));
   options.threshold.viewpoints = 0;
   EXPECT_TRUE(std::isnan(Learnt(options).decision_threshold()));
   options.threshold.false_alarm_rate = 0.0;
