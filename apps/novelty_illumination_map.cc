@@ -1,29 +1,21 @@
-// novelty-illumination-map: the illumination-invariant map (thesis ch. 6) from rawlogs, as a robot
-// would use it — learn it from one pass per lighting and save it, then judge new frames with it
+// novelty-illumination-map: the illumination-invariant map (thesis ch. 6) as a robot would use
+// it — learn it from one pass per lighting and save it, then judge new frames with it
 // (experiments/illumination_map_run.h).
 //
-//   novelty-illumination-map --lighting L1 --lighting L2 [...] --map-out MAP
-//       [--ini share/illumination_invariant.ini] [--poses rawlog|odometry|groundtruth]
-//       [--groundtruth DIR]
-//   novelty-illumination-map --map-in MAP --rawlog R --out OUT [--poses ...] [--groundtruth DIR]
-//       [--panels-every 10]
+//   novelty-illumination-map --lighting L1 --lighting L2 [...] --map-out MAP [--ini INI]
+//       [--poses rawlog|odometry|groundtruth] [--groundtruth DIR]
+//   novelty-illumination-map --lighting PHOTOS_DIR --map-out MAP [--include GLOB] [--exclude GLOB]
+//   novelty-illumination-map --map-in MAP --rawlog R|DIR --out OUT [--panels-every 10]
 //
-// A lighting, and the rawlog to judge, is a rawlog path, optionally with ":FIRST-LAST" (its
-// frames FIRST…LAST, 1-based over its camera frames) or ":PHASE" (a phase of --groundtruth,
-// novelty-sim's folder), so that one rawlog holding several passes serves too. Frames are played
-// into a CMultiMetricMap holding one CIlluminationInvariantMap (the .ini's; default
-// share/illumination_invariant.ini), with poses from the rawlog's pose observations
-// (novelty-poses; the default), the wheel odometry or the ground truth's camera poses. Learning
-// calls beginLighting() before each lighting and finishAcquisition() after the last, then saves
-// the map atomically (--map-out replaces an earlier map, nothing else). Judging writes
-// OUT/novelty/FRAME.png (Δ in false colour), OUT/frames.csv
-// (per frame: coverage, regions, matched regions, mean and largest Δ; with --groundtruth the
-// pixel AUC of Δ against the novelty mask), OUT/findings.csv (finding,value,target,holds) and
-// OUT/report.html: plots of Δ, coverage and AUC per frame, the pixel ROC (with --groundtruth), and
-// a panel (camera, invariant image, information i_Y, Δ) every --panels-every frames; all of it into
-// OUT.partial, renamed to OUT at the end (OUT may be an earlier output, nothing else), so a failed
-// run leaves the earlier output whole. Frames that cannot be used are skipped and counted; a
-// rawlog that ends early, or before the frames asked, gives results and exit 3.
+// A lighting, and what to judge, is a rawlog, RAWLOG:FIRST-LAST (camera frames, 1-based),
+// RAWLOG:PHASE (of --groundtruth, novelty-sim's folder), or a folder of one fixed camera's images
+// (each a lighting when learning, a frame when judging; mask.png limits the pixels). Poses come
+// from the rawlog's pose observations (novelty-poses; the default), the wheel odometry or the
+// ground truth. The map learns a decision threshold from its lightings (false_alarm_rate) and is
+// saved atomically. Judging writes OUT/novelty/FRAME.png, frames.csv (coverage, regions, Δ, the
+// share above the threshold, the AUC with --groundtruth), findings.csv and report.html (plots,
+// the ROC with ground truth, panels) into OUT.partial, renamed at the end. Frames that cannot be
+// used are skipped and counted; a rawlog that ends early gives results and exit 3.
 #include <tclap/CmdLine.h>
 
 #include <cstdio>
@@ -70,13 +62,14 @@ int Judge(const std::string& map_in, const std::string& rawlog, const std::strin
 
 int Run(int argc, char** argv) {
   apps::CommandLine cmd(
-      "Learn the illumination-invariant map (thesis ch. 6) from one rawlog pass per lighting, or "
-      "judge a rawlog's frames with a learnt map",
+      "Learn the illumination-invariant map (thesis ch. 6) from one rawlog pass per lighting or a "
+      "folder of photos, or "
+      "judge a rawlog's frames or a folder's images with a learnt map",
       "0.1");
   TCLAP::MultiArg<std::string> lighting(
       "", "lighting",
       "Learning: one lighting's pass, RAWLOG[:FIRST-LAST|:PHASE] (camera frames, 1-based, "
-      "inclusive; PHASE of --groundtruth); repeat, at least twice",
+      "inclusive; PHASE of --groundtruth), repeated; or a folder of photos, each a lighting",
       false, "RAWLOG", cmd);
   TCLAP::ValueArg<std::string> map_out("", "map-out", "Learning: where to save the map", false, "",
                                        "FILE", cmd);
@@ -87,8 +80,8 @@ int Run(int argc, char** argv) {
       false, "", "FILE", cmd);
   TCLAP::ValueArg<std::string> map_in("", "map-in", "Judging: a learnt map", false, "", "FILE",
                                       cmd);
-  TCLAP::ValueArg<std::string> rawlog("", "rawlog", "Judging: RAWLOG[:FIRST-LAST|:PHASE]", false,
-                                      "", "RAWLOG", cmd);
+  TCLAP::ValueArg<std::string> rawlog("", "rawlog", "Judging: RAWLOG[:FIRST-LAST|:PHASE] or DIR",
+                                      false, "", "RAWLOG", cmd);
   TCLAP::ValueArg<std::string> out("", "out", "Judging: output folder", false, "", "DIR", cmd);
   std::vector<std::string> pose_sources = {"rawlog", "odometry", "groundtruth"};
   TCLAP::ValuesConstraint<std::string> pose_names(pose_sources);
@@ -100,6 +93,11 @@ int Run(int argc, char** argv) {
   TCLAP::ValueArg<std::string> truth_dir(
       "", "groundtruth", "novelty-sim's ground-truth folder (poses, phases, novelty masks)", false,
       "", "DIR", cmd);
+  TCLAP::MultiArg<std::string> include("", "include",
+                                       "A folder's images: only files matching GLOB (repeatable)",
+                                       false, "GLOB", cmd);
+  TCLAP::MultiArg<std::string> exclude(
+      "", "exclude", "A folder's images: not files matching GLOB (repeatable)", false, "GLOB", cmd);
   TCLAP::ValueArg<int> panels_every("", "panels-every",
                                     "Judging: a panel every K frames (default 10; 0: none)", false,
                                     10, "K", cmd);
@@ -122,6 +120,7 @@ int Run(int argc, char** argv) {
   experiments::IlluminationMapRunOptions o;
   o.poses = poses.getValue();
   o.truth = truth ? &*truth : nullptr;
+  o.fixed_camera.pick = {include.getValue(), exclude.getValue()};
   o.status = [](const std::string& line) {
     std::fprintf(stderr, "[novelty-illumination-map] %s\n", line.c_str());
   };

@@ -24,6 +24,8 @@
 #include "mrpt_plugins/c_illumination_invariant_map.h"
 #include "mrpt_plugins/multi_map_config.h"
 #include "mrpt_plugins/rawlog_map_player.h"
+#include "sensors/dataset/fixed_camera_folder.h"
+#include "sensors/rawlog/brief_message.h"
 
 namespace novelty::experiments {
 namespace {
@@ -67,26 +69,69 @@ void Open(Multimap& m, const std::string& ini) {
                                 "is saved");
 }
 
-std::unique_ptr<mrpt_plugins::RawlogMapPlayer> MakePlayer(const RawlogPass& pass,
-                                                          const IlluminationMapRunOptions& o) {
-  const mrpt_plugins::PoseSource source = mrpt_plugins::ParsePoseSource(o.poses);
-  const bool truth_poses = source == mrpt_plugins::PoseSource::kGroundTruth;
-  if (truth_poses && !o.truth)
-    throw std::invalid_argument("--poses groundtruth needs --groundtruth");
-  auto player = std::make_unique<mrpt_plugins::RawlogMapPlayer>(
-      pass.path, source, truth_poses ? o.truth->CameraPoses() : std::map<int, Eigen::Isometry3d>{});
-  if (pass.last > 0) player->SetFrameRange(pass.first, pass.last);
-  return player;
-}
+// A pass's frames into the maps: a rawlog's, or a fixed camera's folder's images, each inserted
+// with the robot at the origin; an image that cannot be used is skipped and counted.
+class PassPlayer {
+ public:
+  PassPlayer(const RawlogPass& pass, const IlluminationMapRunOptions& o) {
+    if (pass.folder) {
+      folder_.emplace(pass.path, o.fixed_camera);
+      return;
+    }
+    const mrpt_plugins::PoseSource source = mrpt_plugins::ParsePoseSource(o.poses);
+    const bool truth_poses = source == mrpt_plugins::PoseSource::kGroundTruth;
+    if (truth_poses && !o.truth)
+      throw std::invalid_argument("--poses groundtruth needs --groundtruth");
+    rawlog_ = std::make_unique<mrpt_plugins::RawlogMapPlayer>(
+        pass.path, source,
+        truth_poses ? o.truth->CameraPoses() : std::map<int, Eigen::Isometry3d>{});
+    if (pass.last > 0) rawlog_->SetFrameRange(pass.first, pass.last);
+  }
+  bool Next(mrpt::maps::CMultiMetricMap& maps, int& frame) {
+    if (rawlog_) return rawlog_->Next(maps, frame);
+    while (next_ < folder_->size()) {
+      const int k = next_++;
+      try {
+        const mrpt::obs::CObservation3DRangeScan obs = folder_->Observation(k);
+        if (before_insert_) before_insert_(k + 1);
+        if (maps.insertObservation(obs, mrpt::poses::CPose3D())) {
+          frame = k + 1;
+          return true;
+        }
+        skips_.push_back(folder_->name(k) + ": no map used it");
+      } catch (const std::exception& e) {  // unreadable, another size than the map's, ...
+        skips_.push_back(folder_->name(k) + ": " + sensors::BriefMessage(e));
+      }
+    }
+    return false;
+  }
+  /// Called with a frame's number just before it goes into the maps.
+  void SetBeforeInsert(std::function<void(int)> hook) {
+    if (rawlog_) rawlog_->SetBeforeInsert(hook);
+    before_insert_ = std::move(hook);
+  }
+  int skipped() const { return int(skip_reasons().size()); }
+  const std::vector<std::string>& skip_reasons() const {
+    return rawlog_ ? rawlog_->skip_reasons() : skips_;
+  }
+  std::string stopped_by() const { return rawlog_ ? rawlog_->stopped_by() : std::string(); }
+  /// Frames the pass holds (0: unknown).
+  int length(const RawlogPass& pass) const {
+    return folder_ ? folder_->size() : pass.last > 0 ? pass.last - pass.first + 1 : 0;
+  }
 
-int PassLength(const RawlogPass& pass) {
-  return pass.last > 0 ? pass.last - pass.first + 1 : 0;
-}
+ private:
+  std::unique_ptr<mrpt_plugins::RawlogMapPlayer> rawlog_;
+  std::optional<sensors::FixedCameraFolder> folder_;
+  int next_ = 0;
+  std::vector<std::string> skips_;
+  std::function<void(int)> before_insert_;
+};
 
 // Reports the frames a player skipped (one line), an early end and a range cut short; returns
 // whether the pass ended before what was asked.
-bool ReportEnd(const mrpt_plugins::RawlogMapPlayer& player, const RawlogPass& pass, int frames,
-               int last, const IlluminationMapRunOptions& o) {
+bool ReportEnd(const PassPlayer& player, const RawlogPass& pass, int frames, int last,
+               const IlluminationMapRunOptions& o) {
   if (player.skipped())
     Say(o, pass.spec + ": " +
                eval::SkippedFramesSummary(frames + player.skipped(), player.skip_reasons()));
@@ -98,15 +143,15 @@ bool ReportEnd(const mrpt_plugins::RawlogMapPlayer& player, const RawlogPass& pa
   return short_range || !player.stopped_by().empty();
 }
 
-[[noreturn]] void NoFrame(const std::string& what, const RawlogPass& pass,
-                          const mrpt_plugins::RawlogMapPlayer& player, const std::string& poses) {
+[[noreturn]] void NoFrame(const std::string& what, const RawlogPass& pass, const PassPlayer& player,
+                          const std::string& poses) {
   const std::string why = !player.stopped_by().empty() ? " (" + player.stopped_by() + ")"
                           : player.skipped()           ? " (" + player.skip_reasons().front() + ")"
                           : pass.last > 0 ? " (no camera frame in " + std::to_string(pass.first) +
                                                 "-" + std::to_string(pass.last) + ")"
                                           : " (no camera frame in it)";
   throw std::invalid_argument(what + " (" + pass.spec + "): no frame could be used" + why +
-                              NoFrameHint(poses));
+                              (pass.folder ? "" : NoFrameHint(poses)));
 }
 
 // Per frame, what the report plots and the ROC scores.
@@ -274,6 +319,10 @@ RawlogPass ParseRawlogPass(const std::string& spec, const sim::GroundTruthReader
   static const std::regex range(R"((.*):(\d+)-(\d+))"), named(R"((.*):([A-Za-z_][\w-]*))");
   std::smatch m;
   RawlogPass pass{spec, spec, 1, 0};
+  if (fs::is_directory(spec)) {
+    pass.folder = true;
+    return pass;
+  }
   if (fs::is_regular_file(spec)) {
     pass.path = spec;
   } else if (std::regex_match(spec, m, range)) {
@@ -301,39 +350,54 @@ RawlogPass ParseRawlogPass(const std::string& spec, const sim::GroundTruthReader
   if (!fs::is_regular_file(pass.path))
     throw std::invalid_argument(spec + (fs::exists(pass.path)
                                             ? ": " + pass.path + " is not a file"
-                                            : ": no such rawlog (RAWLOG, RAWLOG:FIRST-LAST or "
-                                              "RAWLOG:PHASE)"));
+                                            : ": no such rawlog or folder (DIR, RAWLOG, "
+                                              "RAWLOG:FIRST-LAST or RAWLOG:PHASE)"));
   return pass;
 }
 
 LearnIlluminationMapResult LearnIlluminationMap(const std::vector<std::string>& lightings,
                                                 const std::string& ini, const std::string& map_out,
                                                 const IlluminationMapRunOptions& o) {
-  if (lightings.size() < 2)
-    throw std::invalid_argument(
-        "learning needs at least two --lighting passes (the median of one lighting is not "
-        "invariant)");
   std::vector<RawlogPass> passes;
-  for (const std::string& spec : lightings) passes.push_back(ParseRawlogPass(spec, o.truth));
+  std::size_t count = 0;  // lightings: a folder gives one per image
+  for (const std::string& spec : lightings) {
+    passes.push_back(ParseRawlogPass(spec, o.truth));
+    count += passes.back().folder ? std::size_t(PassPlayer(passes.back(), o).length({})) : 1;
+  }
+  if (count < 2)
+    throw std::invalid_argument(
+        "learning needs at least two lightings: two --lighting passes, or a folder of two images "
+        "or more (the median of one lighting is not invariant)");
   Multimap m;
   Open(m, ini);
   const auto start = Clock::now();
   LearnIlluminationMapResult r;
   for (std::size_t k = 0; k < passes.size(); ++k) {
+    const RawlogPass& pass = passes[k];
     const std::string what =
-        "lighting " + std::to_string(k + 1) + "/" + std::to_string(passes.size());
-    m.map->beginLighting();
-    const auto player = MakePlayer(passes[k], o);
+        pass.folder ? "lightings of " + pass.spec
+                    : "lighting " + std::to_string(k + 1) + "/" + std::to_string(passes.size());
+    PassPlayer player(pass, o);
     int frames = 0, last = 0;
-    for (int frame = 0; player->Next(m.maps, frame); last = frame) {
+    // A rawlog pass is one lighting; each image of a folder is one of its own, begun just before
+    // the image goes in (an image the maps refuse leaves it open for the next).
+    bool open = false;
+    if (!pass.folder) m.map->beginLighting();
+    if (pass.folder)
+      player.SetBeforeInsert([&](int) {
+        if (!open) m.map->beginLighting(), open = true;
+      });
+    for (int frame = 0; player.Next(m.maps, frame); last = frame) {
+      open = false;
       ++frames;
-      if (o.progress) o.progress(what, frames, PassLength(passes[k]));
+      if (o.progress) o.progress(what, frames, player.length(pass));
     }
-    if (frames == 0) NoFrame(what, passes[k], *player, o.poses);
-    Say(o, what + ": " + std::to_string(frames) + " frames from " + passes[k].spec);
-    ReportEnd(*player, passes[k], frames, last, o);
+    if (frames == 0) NoFrame(what, pass, player, o.poses);
+    Say(o, what + ": " + std::to_string(frames) + (pass.folder ? " images" : " frames") + " from " +
+               pass.spec);
+    ReportEnd(player, pass, frames, last, o);
     r.frames += frames;
-    r.skipped += player->skipped();
+    r.skipped += player.skipped();
   }
   Say(o, "invariant images at the viewpoints ...");
   m.map->finishAcquisition();
@@ -352,7 +416,7 @@ JudgeIlluminationMapResult JudgeIlluminationMap(const std::string& map_in,
   Multimap m;
   Open(m, "");
   m.map->LoadFromFile(map_in);
-  const auto player = MakePlayer(pass, o);
+  PassPlayer player(pass, o);
   const fs::path out(out_dir);
   fs::create_directories(out / "novelty");
   fs::create_directories(out / "panels");
@@ -364,14 +428,14 @@ JudgeIlluminationMapResult JudgeIlluminationMap(const std::string& map_in,
   double seconds = 0.0;
   for (int frame = 0;; last = frame) {
     const auto t0 = Clock::now();
-    if (!player->Next(m.maps, frame)) break;
+    if (!player.Next(m.maps, frame)) break;
     seconds += SecondsSince(t0);
     RecordFrame(*m.map, frame, ++r.frames, panels_every, o, out, csv, j);
-    if (o.progress) o.progress("judging", r.frames, PassLength(pass));
+    if (o.progress) o.progress("judging", r.frames, player.length(pass));
   }
-  if (r.frames == 0) NoFrame("judging", pass, *player, o.poses);
-  r.skipped = player->skipped();
-  r.ended_early = ReportEnd(*player, pass, r.frames, last, o);
+  if (r.frames == 0) NoFrame("judging", pass, player, o.poses);
+  r.skipped = player.skipped();
+  r.ended_early = ReportEnd(player, pass, r.frames, last, o);
   const double ms = 1000 * seconds / r.frames;
   r.findings.Add("frames judged", std::to_string(r.frames));
   r.findings.Add("frames skipped", std::to_string(r.skipped));

@@ -4,15 +4,16 @@
 //
 // A pass (a lighting, or the frames to judge) is a rawlog path, optionally with ":FIRST-LAST" (its
 // camera frames FIRST…LAST, 1-based) or ":PHASE" (a phase of the ground truth, novelty-sim's
-// folder), so that one rawlog holding several passes serves too. Frames are played into a
-// CMultiMetricMap holding one CIlluminationInvariantMap (the .ini's, or one at its defaults), with
-// poses from the rawlog's pose observations (novelty-poses), the wheel odometry or the ground
-// truth's camera poses. Learning calls beginLighting() before each pass and finishAcquisition()
-// after the last, then saves the map atomically. Judging writes into its output folder:
-// novelty/FRAME.png (Δ in false colour, 0 to 2·T_Y), frames.csv (per frame: coverage, regions,
-// matched regions, mean and largest Δ, the share of covered pixels above the map's decision
-// threshold; with ground truth the pixel AUC of Δ against the novelty mask), findings.csv and
-// report.html (plots of Δ, coverage and AUC per frame, the pixel ROC with ground truth, a panel
+// folder), so that one rawlog holding several passes serves too; or a folder of images from one
+// fixed camera (photos: each a lighting when learning, a frame when judging). Frames are played
+// into a CMultiMetricMap holding one CIlluminationInvariantMap (the .ini's, or one at its
+// defaults), with poses from the rawlog's pose observations (novelty-poses), the wheel odometry or
+// the ground truth's camera poses. Learning calls beginLighting() before each pass and
+// finishAcquisition() after the last, then saves the map atomically. Judging writes into its output
+// folder: novelty/FRAME.png (Δ in false colour, 0 to 2·T_Y), frames.csv (per frame: coverage,
+// regions, matched regions, mean and largest Δ, the share of covered pixels above the map's
+// decision threshold; with ground truth the pixel AUC of Δ against the novelty mask), findings.csv
+// and report.html (plots of Δ, coverage and AUC per frame, the pixel ROC with ground truth, a panel
 // every `panels_every` frames). Frames that cannot be used are skipped and counted.
 #pragma once
 
@@ -22,25 +23,31 @@
 #include <vector>
 
 #include "eval/findings_table.h"
+#include "sensors/dataset/fixed_camera_folder.h"
 #include "sim/output/ground_truth_reader.h"
 
 namespace novelty::experiments {
 
-/// A rawlog and the camera frames of it to play.
+/// A rawlog and the camera frames of it to play, or a fixed camera's folder of images.
 struct RawlogPass {
   std::string spec;  ///< as given, for messages
   std::string path;
   int first = 1, last = 0;  ///< 1-based, inclusive; last 0: to the end
+  /// `path` is a folder of images from one fixed camera (sensors/dataset/fixed_camera_folder.h):
+  /// learning takes each image as a lighting of its own, judging each as a frame.
+  bool folder = false;
 };
 
-/// Parses RAWLOG, RAWLOG:FIRST-LAST or RAWLOG:PHASE (`truth` needed for a phase); the rawlog
-/// must be a file. Throws std::invalid_argument naming `spec`.
+/// Parses DIR, RAWLOG, RAWLOG:FIRST-LAST or RAWLOG:PHASE (`truth` needed for a phase); the
+/// rawlog must be a file. Throws std::invalid_argument naming `spec`.
 RawlogPass ParseRawlogPass(const std::string& spec, const sim::GroundTruthReader* truth);
 
 struct IlluminationMapRunOptions {
   /// "rawlog" (pose observations), "odometry" or "groundtruth" (needs `truth`).
   std::string poses = "rawlog";
   const sim::GroundTruthReader* truth = nullptr;  ///< not owned; may be null
+  /// A folder pass's images: which files (include/exclude), the plane's depth, the size limit.
+  sensors::FixedCameraOptions fixed_camera;
   /// Told a line of what happens (none: nothing is said).
   std::function<void(const std::string& line)> status;
   /// Told frames played of a stage ("lighting 1/4", "judging"); total 0 when unknown.
@@ -53,9 +60,10 @@ struct LearnIlluminationMapResult {
   double seconds = 0.0;
 };
 
-/// Learns the map from `lightings` (at least two passes: the median of one lighting is not
-/// invariant) with the maps of `ini` (empty: one CIlluminationInvariantMap at its defaults) and
-/// saves it to `map_out`. Everything a typo can break is checked before the first frame.
+/// Learns the map from `lightings` (at least two lightings: the median of one is not invariant;
+/// a folder pass gives one per image) with the maps of `ini` (empty: one CIlluminationInvariantMap
+/// at its defaults) and saves it to `map_out`. Everything a typo can break is checked before the
+/// first frame.
 LearnIlluminationMapResult LearnIlluminationMap(const std::vector<std::string>& lightings,
                                                 const std::string& ini, const std::string& map_out,
                                                 const IlluminationMapRunOptions& options);

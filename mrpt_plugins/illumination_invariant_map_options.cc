@@ -17,7 +17,8 @@ const OptionTable<IlluminationInvariantMapConfig>& IlluminationInvariantMapConfi
             "deg, ... or turned this much from it")
         .Add(
             "min_viewpoint_coverage", [](C & c) -> auto& { return c.map.min_viewpoint_coverage; },
-            "share of a viewpoint's pixels with an invariant value to keep it (chosen)")
+            "share of the pixels a viewpoint's depth knows with an invariant value, to keep it "
+            "(chosen)")
         .AddChoice(
             "colour", [](C & c) -> auto& { return c.map.invariant.colour; },
             {"per-channel", "luminance-chromaticity"},

@@ -271,7 +271,14 @@ void IlluminationMap::Build() {
       const InvariantImage inv =
           ComputeInvariantImage(images[std::size_t(v)], masks[std::size_t(v)], options_.invariant);
       const double coverage = cv::countNonZero(inv.covered) / double(inv.covered.total());
-      if (coverage < options_.min_viewpoint_coverage || coverage == 0.0) {
+      // Of the pixels the viewpoint's depth knows: elsewhere no lighting can cover it (a fixed
+      // camera's mask, the sky).
+      const int known = cv::countNonZero(view.depth > 0.0f);  // NaN compares false
+      const double share = known ? cv::countNonZero(inv.covered) / double(known) : 0.0;
+      if (share < options_.min_viewpoint_coverage || coverage == 0.0) {
+        if (first_error.empty())
+          first_error = "viewpoint " + std::to_string(v) + ": " + std::to_string(int(100 * share)) +
+                        " % of its known pixels covered, " + "below min_viewpoint_coverage";
         ++dropped;
         continue;
       }

@@ -56,8 +56,9 @@ struct IlluminationMapOptions {
   views::ViewSelectionOptions selection;
   /// The warp and blend of both (ch. 3 defaults).
   views::SynthesisOptions synthesis;
-  /// A viewpoint is kept only if at least this share of its pixels has an invariant value
-  /// (covered by min_lightings virtual images): a viewpoint the lightings hardly saw is noise.
+  /// A viewpoint is kept only if at least this share of the pixels its depth knows has an
+  /// invariant value (covered by min_lightings virtual images): a viewpoint the lightings hardly
+  /// saw is noise.
   double min_viewpoint_coverage = 0.5;
   InvariantImageOptions invariant;
   /// κ = 0.5: the Lambertian default (eq. 6.18).

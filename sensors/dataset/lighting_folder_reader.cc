@@ -57,33 +57,52 @@ std::string Describe(const cv::Mat& m) {
 
 }  // namespace
 
-LightingFolder ReadLightingFolder(const std::string& folder, const LightingFolderOptions& o) {
-  if (!fs::is_directory(folder)) throw std::runtime_error(folder + ": no such folder of lightings");
-  std::vector<fs::path> lightings;
-  LightingFolder out;
+ImageFolderListing ListImageFolder(const std::string& folder, const LightingFolderOptions& o) {
+  if (!fs::is_directory(folder)) throw std::runtime_error(folder + ": no such folder of images");
+  ImageFolderListing out;
   for (const auto& entry : fs::directory_iterator(folder)) {
     const fs::path p = entry.path();
     if (!entry.is_regular_file() || !IsImage(p) || p.filename().string().front() == '.') continue;
-    const std::string stem = Lower(p.stem().string());
-    if (stem == "mask") {
-      cv::Mat m = ReadImage(p);
-      if (m.channels() == 3) cv::cvtColor(m, m, cv::COLOR_RGB2GRAY);
-      out.mask = m > 0;
-    } else if (stem == "reflectance") {
-      out.reflectance = core::ToFloat255(ReadImage(p));
-    } else if (stem == "shading") {
-      out.shading = core::ToFloat255(ReadImage(p));
-    } else if (stem == "diffuse") {
-      out.diffuse = core::ToFloat255(ReadImage(p));
-    } else if ((o.include.empty() || MatchesAny(o.include, p.filename().string())) &&
-               !MatchesAny(o.exclude, p.filename().string())) {
-      lightings.push_back(p);
-    } else {
-      out.left_out.push_back(p.filename().string());
-    }
+    const std::string stem = Lower(p.stem().string()), name = p.filename().string();
+    if (stem == "mask")
+      out.mask = p.string();
+    else if (stem == "reflectance")
+      out.reflectance = p.string();
+    else if (stem == "shading")
+      out.shading = p.string();
+    else if (stem == "diffuse")
+      out.diffuse = p.string();
+    else if ((o.include.empty() || MatchesAny(o.include, name)) && !MatchesAny(o.exclude, name))
+      out.images.push_back(p.string());
+    else
+      out.left_out.push_back(name);
   }
-  std::sort(lightings.begin(), lightings.end());
+  std::sort(out.images.begin(), out.images.end());
   std::sort(out.left_out.begin(), out.left_out.end());
+  return out;
+}
+
+cv::Mat ReadFolderImage(const std::string& path) {
+  return ReadImage(path);
+}
+
+cv::Mat ReadFolderMask(const std::string& path) {
+  cv::Mat m = ReadImage(path);
+  if (m.channels() == 3) cv::cvtColor(m, m, cv::COLOR_RGB2GRAY);
+  return m > 0;
+}
+
+LightingFolder ReadLightingFolder(const std::string& folder, const LightingFolderOptions& o) {
+  if (!fs::is_directory(folder)) throw std::runtime_error(folder + ": no such folder of lightings");
+  const ImageFolderListing listing = ListImageFolder(folder, o);
+  LightingFolder out;
+  out.left_out = listing.left_out;
+  if (!listing.mask.empty()) out.mask = ReadFolderMask(listing.mask);
+  if (!listing.reflectance.empty())
+    out.reflectance = core::ToFloat255(ReadImage(listing.reflectance));
+  if (!listing.shading.empty()) out.shading = core::ToFloat255(ReadImage(listing.shading));
+  if (!listing.diffuse.empty()) out.diffuse = core::ToFloat255(ReadImage(listing.diffuse));
+  const std::vector<fs::path> lightings(listing.images.begin(), listing.images.end());
   if (lightings.size() < 2)
     throw std::runtime_error(
         folder + ": " + std::to_string(lightings.size()) + " image(s) of lightings" +

@@ -28,6 +28,25 @@ struct LightingFolderOptions {
   std::vector<std::string> exclude;  ///< … and none of these, e.g. "*_Ambient*", "depth*"
 };
 
+/// A folder's image files by role, paths in name order, nothing decoded.
+struct ImageFolderListing {
+  std::vector<std::string> images;  ///< what the patterns pick (lightings, or frames to judge)
+  std::string mask, reflectance, shading, diffuse;  ///< paths, empty when absent
+  std::vector<std::string> left_out;                ///< file names the patterns left out
+};
+
+/// Lists `folder` as ReadLightingFolder reads it; throws std::runtime_error naming a folder that
+/// does not exist.
+ImageFolderListing ListImageFolder(const std::string& folder,
+                                   const LightingFolderOptions& options = {});
+
+/// One image file as ReadLightingFolder keeps it (R G B or grey, 8 or 16 bits as stored); throws
+/// std::runtime_error naming the file.
+cv::Mat ReadFolderImage(const std::string& path);
+
+/// A mask file: CV_8UC1, 255 where it is non-zero (any channel layout read as grey).
+cv::Mat ReadFolderMask(const std::string& path);
+
 /// Throws std::runtime_error naming the folder or file: a folder that does not exist, fewer than
 /// two lightings (after the patterns; the message names how many they left out) (one image is a
 /// single lighting: no invariant image), a file that cannot be read, or images whose size or

@@ -8,7 +8,7 @@
 namespace novelty::sensors {
 namespace {
 
-struct Keyframe {
+struct RelocalizerKeyframe {
   std::vector<cv::Point3f> world;
   cv::Mat descriptors;  // ORB, one row per world point
 };
@@ -18,7 +18,7 @@ struct Keyframe {
 struct KeyframeRelocalizer::Impl {
   KeyframeRelocalizerOptions options;
   cv::Ptr<cv::ORB> orb;
-  std::vector<Keyframe> keyframes;
+  std::vector<RelocalizerKeyframe> keyframes;
 };
 
 KeyframeRelocalizer::KeyframeRelocalizer(const KeyframeRelocalizerOptions& options)
@@ -27,7 +27,9 @@ KeyframeRelocalizer::~KeyframeRelocalizer() = default;
 KeyframeRelocalizer::KeyframeRelocalizer(KeyframeRelocalizer&&) noexcept = default;
 KeyframeRelocalizer& KeyframeRelocalizer::operator=(KeyframeRelocalizer&&) noexcept = default;
 
-size_t KeyframeRelocalizer::size() const { return impl_->keyframes.size(); }
+size_t KeyframeRelocalizer::size() const {
+  return impl_->keyframes.size();
+}
 
 bool KeyframeRelocalizer::Add(const StereoPair& pair, const cv::Mat& reference_grey,
                               const cv::Mat& other_grey,
@@ -39,7 +41,7 @@ bool KeyframeRelocalizer::Add(const StereoPair& pair, const cv::Mat& reference_g
   for (const cv::KeyPoint& k : keypoints) px.push_back(k.pt);
   const auto points =
       TriangulateFeatures(pair, reference_grey, other_grey, px, impl_->options.stereo);
-  Keyframe k;
+  RelocalizerKeyframe k;
   for (size_t i = 0; i < points.size(); ++i) {
     if (!points[i]) continue;
     const Eigen::Vector3d w = world_from_camera * *points[i];
@@ -64,7 +66,7 @@ std::optional<Eigen::Isometry3d> KeyframeRelocalizer::Relocalize(const StereoPai
   std::optional<Eigen::Isometry3d> best;
   int best_inliers = o.min_inliers - 1;
   const cv::Mat k = CameraMatrix(pair.reference_camera);
-  for (const Keyframe& kf : impl_->keyframes) {
+  for (const RelocalizerKeyframe& kf : impl_->keyframes) {
     std::vector<std::vector<cv::DMatch>> knn;
     matcher.knnMatch(descriptors, kf.descriptors, knn, 2);
     std::vector<cv::Point3f> object;
@@ -77,8 +79,8 @@ std::optional<Eigen::Isometry3d> KeyframeRelocalizer::Relocalize(const StereoPai
     if (int(object.size()) < o.min_inliers) continue;
     cv::Mat rvec, tvec;
     std::vector<int> inliers;
-    if (!cv::solvePnPRansac(object, image, k, cv::noArray(), rvec, tvec, false,
-                            o.ransac_iterations, float(o.reprojection_px), 0.99, inliers))
+    if (!cv::solvePnPRansac(object, image, k, cv::noArray(), rvec, tvec, false, o.ransac_iterations,
+                            float(o.reprojection_px), 0.99, inliers))
       continue;
     if (int(inliers.size()) <= best_inliers) continue;
     best_inliers = int(inliers.size());

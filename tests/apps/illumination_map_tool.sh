@@ -41,7 +41,7 @@ expect_error() {  # expected message, arguments...
     fail "for $*: expected '$message', got '$(cat "$W/err")'"
   fi
 }
-expect_error "at least two --lighting" --lighting "$R:L1" --map-out "$W/x" "${GT[@]}"
+expect_error "at least two lightings" --lighting "$R:L1" --map-out "$W/x" "${GT[@]}"
 expect_error "no phase 'L9'" --lighting "$R:L1" --lighting "$R:L9" --map-out "$W/x" "${GT[@]}"
 test ! -e "$W/x" || fail "a map was written after an error"
 exit $status

@@ -16,7 +16,7 @@ core::PinholeCamera Camera() {
   return core::PinholeCamera::FromFov(320, 240, M_PI / 3);
 }
 
-cv::Mat Texture() {
+cv::Mat AlignmentTexture() {
   return BlurredNoise({320, 240}, CV_32F, 11, 2.0, 20, 235);
 }
 
@@ -68,7 +68,7 @@ void ExpectNear(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double m
 
 // The keyframe (the textured plane), its points, and what the camera sees after SomeMotion().
 struct MovedPlane {
-  cv::Mat image = Texture();
+  cv::Mat image = AlignmentTexture();
   Eigen::Isometry3d kf_from_cur = SomeMotion();
   GradientPyramid keyframe = GradientPyramid::Build(image, 3);
   GradientPyramid current = GradientPyramid::Build(SeenFrom(image, kf_from_cur), 3);

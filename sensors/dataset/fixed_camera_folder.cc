@@ -1,0 +1,84 @@
+#include "sensors/dataset/fixed_camera_folder.h"
+
+#include <cctype>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+#include "sensors/dataset/rgbd_importer.h"
+#include "sensors/rawlog/rgbd_observation.h"
+
+namespace novelty::sensors {
+namespace {
+
+// The image's size: from the header where ReadImageHeader knows the format (before anything is
+// decoded), else by decoding it into `decoded` (TIFF, PNM), the limit checked after the fact.
+cv::Size SizeOf(const std::string& path, long long max_pixels, cv::Mat* decoded) {
+  std::string ext = path.substr(path.find_last_of('.') + 1);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == "png" || ext == "jpg" || ext == "jpeg" || ext == "bmp")
+    return CheckImageHeader(path, max_pixels).size;
+  *decoded = ReadFolderImage(path);
+  if (decoded->total() > std::size_t(max_pixels))
+    throw std::runtime_error(path + ": " + std::to_string(decoded->total()) +
+                             " pixels, over the limit of " + std::to_string(max_pixels));
+  return decoded->size();
+}
+
+}  // namespace
+
+FixedCameraFolder::FixedCameraFolder(const std::string& folder, const FixedCameraOptions& o)
+    : folder_(folder), options_(o), listing_(ListImageFolder(folder, o.pick)) {
+  if (!(o.depth > 0.0 && o.depth < kRgbdMaxDepth))
+    throw std::invalid_argument("fixed camera: depth must be in (0, " +
+                                std::to_string(kRgbdMaxDepth) + ") m");
+  if (listing_.images.empty())
+    throw std::runtime_error(folder + ": no image" +
+                             (listing_.left_out.empty()
+                                  ? ""
+                                  : " (" + std::to_string(listing_.left_out.size()) +
+                                        " left out by the include/exclude patterns)"));
+  cv::Mat unused;
+  const cv::Size size = SizeOf(listing_.images.front(), o.max_pixels, &unused);
+  camera_.width = size.width;
+  camera_.height = size.height;
+  camera_.fx = camera_.fy = std::max(size.width, size.height);
+  camera_.cx = 0.5 * (size.width - 1);
+  camera_.cy = 0.5 * (size.height - 1);
+  depth_ = cv::Mat(size, CV_32F, cv::Scalar(o.depth));
+  if (!listing_.mask.empty()) {
+    const cv::Mat mask = ReadFolderMask(listing_.mask);
+    if (mask.size() != size)
+      throw std::runtime_error(listing_.mask + " is " + std::to_string(mask.cols) + "x" +
+                               std::to_string(mask.rows) + ", the images " +
+                               std::to_string(size.width) + "x" + std::to_string(size.height));
+    depth_.setTo(0.0f, mask == 0);
+  }
+}
+
+std::string FixedCameraFolder::name(int k) const {
+  const std::string& p = listing_.images.at(std::size_t(k));
+  return p.substr(p.find_last_of('/') + 1);
+}
+
+cv::Mat FixedCameraFolder::Rgb(int k) const {
+  const std::string& path = listing_.images.at(std::size_t(k));
+  cv::Mat image;
+  const cv::Size size = SizeOf(path, options_.max_pixels, &image);
+  if (size.width != camera_.width || size.height != camera_.height)
+    throw std::runtime_error(path + " is " + std::to_string(size.width) + "x" +
+                             std::to_string(size.height) + ", " + name(0) + " " +
+                             std::to_string(camera_.width) + "x" + std::to_string(camera_.height) +
+                             ": a fixed camera's images share one size");
+  if (image.empty()) image = ReadFolderImage(path);
+  if (image.size() != size)
+    throw std::runtime_error(path + ": decodes to another size than its header says");
+  if (image.depth() == CV_16U) image.convertTo(image, CV_8U, 1.0 / 257.0);
+  if (image.channels() == 1) cv::cvtColor(image, image, cv::COLOR_GRAY2RGB);
+  return image;
+}
+
+mrpt::obs::CObservation3DRangeScan FixedCameraFolder::Observation(int k) const {
+  return MakeRgbdObservation(double(k), Rgb(k), depth_, camera_, HandHeldMount());
+}
+
+}  // namespace novelty::sensors
