@@ -22,6 +22,7 @@
 #include "maps/illumination/illumination_model.h"
 #include "maps/illumination/illumination_novelty.h"
 #include "maps/illumination/invariant_image.h"
+#include "maps/illumination/lighting_threshold.h"
 #include "maps/illumination/spherical_color_change.h"
 #include "maps/views/view_synthesis.h"
 #include "sensors/rawlog/camera_pose_observation.h"
@@ -139,12 +140,37 @@ void Score(const TestFrame& t, Evaluation& e, eval::HtmlReport& report, const fs
 struct LearntSummary {
   std::string summary;  // for the report: what was learnt
   std::vector<std::pair<std::string, std::string>> findings;
+  double decision_threshold = NAN;  // τ from the training lightings (NaN: none)
 };
+
+// Δ at the τ the training lightings chose, as a user without ground truth would decide: the
+// share of unchanged pixels above it (against the rate it was learnt for) and of novel ones.
+void AddDecisionFindings(const Evaluation& e, double tau, double target,
+                         eval::FindingsTable& findings) {
+  if (std::isnan(tau)) {
+    findings.Add("decision threshold", "none (too few lightings to leave one out)");
+    return;
+  }
+  long negatives = 0, false_alarms = 0, positives = 0, hits = 0;
+  for (std::size_t j = 0; j < e.positive.size(); ++j) {
+    const bool above = e.methods[0].scores[j] > tau;
+    (e.positive[j] ? positives : negatives) += 1;
+    (e.positive[j] ? hits : false_alarms) += above;
+  }
+  findings.Add("decision threshold τ from the training lightings (nats)", eval::NumberText(tau),
+               "learnt at " + eval::PercentText(target) + " false alarms");
+  findings.Add("novelty at τ: FPR",
+               eval::PercentText(double(false_alarms) / std::max(1L, negatives)),
+               "(reported; learnt for " + eval::PercentText(target) + ")");
+  findings.Add("novelty at τ: TPR", eval::PercentText(double(hits) / std::max(1L, positives)),
+               "(reported)");
+}
 
 // Writes roc.csv, findings.csv and report.html; returns what they say.
 IlluminationExperimentResult Finish(const Evaluation& e, const LearntSummary& learnt,
-                                    const std::string& lightings_name, double learn_seconds,
-                                    const fs::path& dir, eval::HtmlReport& report) {
+                                    double false_alarm_rate, const std::string& lightings_name,
+                                    double learn_seconds, const fs::path& dir,
+                                    eval::HtmlReport& report) {
   std::vector<eval::Roc> rocs;
   for (const Method& m : e.methods) rocs.push_back(eval::ComputeRoc(m.scores, e.positive));
   IlluminationExperimentResult result;
@@ -192,6 +218,7 @@ IlluminationExperimentResult Finish(const Evaluation& e, const LearntSummary& le
   findings.Add("evaluated pixels", std::to_string(e.positive.size()));
   findings.Add("evaluated share of the test frames' pixels", eval::PercentText(scored_share));
   findings.Add("object pixels", std::to_string(rocs[0].positives));
+  AddDecisionFindings(e, learnt.decision_threshold, false_alarm_rate, findings);
   for (const auto& [name, value] : learnt.findings) findings.Add(name, value);
   findings.Add("learning seconds", eval::NumberText(learn_seconds));
   findings.Add("detection ms per frame", eval::NumberText(1000.0 * e.detect_seconds / e.tested));
@@ -313,6 +340,14 @@ double RunStatic(const std::string& rawlog, const sim::GroundTruthReader& truth,
   const illumination::ViewpointIllumination viewpoint = illumination::MakeViewpoint(
       invariant, illumination::LearnIlluminationModel(invariant, {}, o.map.model),
       o.map.novelty.min_region_pixels, &zernike);
+  // τ as the map learns it (illumination_map.h), for the one viewpoint.
+  const illumination::LightingThresholdOptions& to = o.map.threshold;
+  if (to.viewpoints > 0 && int(training.size()) - 1 >= std::max(2, o.map.invariant.min_lightings))
+    learnt.decision_threshold = illumination::ThresholdAtFalseAlarmRate(
+        illumination::HeldOutLightingNovelty(training, {}, o.map.invariant, o.map.model,
+                                             o.map.novelty, zernike)
+            .values,
+        to.false_alarm_rate);
   const double learn_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Status(o, cv::format("learnt from %zu frames: T_Y %.2f, %zu stored shapes", training.size(),
@@ -457,6 +492,7 @@ double RunMoving(const std::string& rawlog, const sim::GroundTruthReader& truth,
   learnt.summary =
       cv::format("%zu lightings, %d viewpoints (%d dropped), mean viewpoint coverage %.1f %%",
                  train.size(), map.size(), map.dropped_viewpoints(), 100 * coverage);
+  learnt.decision_threshold = map.decision_threshold();
   learnt.findings = {{"lightings", std::to_string(train.size())},
                      {"viewpoints", std::to_string(map.size())},
                      {"viewpoints dropped", std::to_string(map.dropped_viewpoints())},
@@ -498,8 +534,10 @@ IlluminationExperimentResult RunIlluminationExperiment(const IlluminationExperim
         "phase '" + test.name + "': " + std::to_string(e.positive.size()) + " scored pixels, " +
         std::to_string(positives) +
         " of them changed; a ROC needs both (the map or the references cover too little, or "
-        "nothing changed)");
-  return Finish(e, learnt, moving ? "lightings" : "training frames", learn_seconds, dir, report);
+        "nothing changed: novelty-illumination-map gives a pass without novelty its false-alarm "
+        "rate)");
+  return Finish(e, learnt, o.map.threshold.false_alarm_rate,
+                moving ? "lightings" : "training frames", learn_seconds, dir, report);
 }
 
 }  // namespace novelty::experiments
