@@ -148,7 +148,9 @@ struct LearntSummary {
 void AddDecisionFindings(const Evaluation& e, double tau, double target,
                          eval::FindingsTable& findings) {
   if (std::isnan(tau)) {
-    findings.Add("decision threshold", "none (too few lightings to leave one out)");
+    findings.Add("decision threshold",
+                 "none (needs min_lightings + 1 lightings, threshold_viewpoints > 0 and a "
+                 "held-out lighting with an invariant image)");
     return;
   }
   long negatives = 0, false_alarms = 0, positives = 0, hits = 0;
@@ -342,12 +344,17 @@ double RunStatic(const std::string& rawlog, const sim::GroundTruthReader& truth,
       o.map.novelty.min_region_pixels, &zernike);
   // τ as the map learns it (illumination_map.h), for the one viewpoint.
   const illumination::LightingThresholdOptions& to = o.map.threshold;
-  if (to.viewpoints > 0 && int(training.size()) - 1 >= std::max(2, o.map.invariant.min_lightings))
-    learnt.decision_threshold = illumination::ThresholdAtFalseAlarmRate(
-        illumination::HeldOutLightingNovelty(training, {}, o.map.invariant, o.map.model,
-                                             o.map.novelty, zernike)
-            .values,
-        to.false_alarm_rate);
+  if (to.viewpoints > 0 && int(training.size()) - 1 >= std::max(2, o.map.invariant.min_lightings)) {
+    try {
+      learnt.decision_threshold = illumination::ThresholdAtFalseAlarmRate(
+          illumination::HeldOutLightingNovelty(training, {}, o.map.invariant, o.map.model,
+                                               o.map.novelty, zernike)
+              .values,
+          to.false_alarm_rate);
+    } catch (const std::invalid_argument& error) {  // too little left once one is out: no τ
+      Status(o, std::string("no decision threshold: ") + error.what());
+    }
+  }
   const double learn_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Status(o, cv::format("learnt from %zu frames: T_Y %.2f, %zu stored shapes", training.size(),

@@ -20,6 +20,7 @@
 #include "eval/roc_plot.h"
 #include "eval/side_by_side.h"
 #include "eval/skipped_frames.h"
+#include "maps/illumination/illumination_map.h"
 #include "maps/illumination/invariant_image.h"
 #include "mrpt_plugins/c_illumination_invariant_map.h"
 #include "mrpt_plugins/multi_map_config.h"
@@ -91,15 +92,21 @@ class PassPlayer {
     if (rawlog_) return rawlog_->Next(maps, frame);
     while (next_ < folder_->size()) {
       const int k = next_++;
+      mrpt::obs::CObservation3DRangeScan obs;
       try {
-        const mrpt::obs::CObservation3DRangeScan obs = folder_->Observation(k);
-        if (before_insert_) before_insert_(k + 1);
+        obs = folder_->Observation(k);
+      } catch (const std::runtime_error& e) {  // unreadable, another size
+        skips_.push_back(sensors::BriefMessage(e));
+        continue;
+      }
+      if (before_insert_) before_insert_(k + 1);  // the map's errors are not the image's
+      try {
         if (maps.insertObservation(obs, mrpt::poses::CPose3D())) {
           frame = k + 1;
           return true;
         }
         skips_.push_back(folder_->name(k) + ": no map used it");
-      } catch (const std::exception& e) {  // unreadable, another size than the map's, ...
+      } catch (const std::exception& e) {  // another size than the map's, ...
         skips_.push_back(folder_->name(k) + ": " + sensors::BriefMessage(e));
       }
     }
@@ -241,7 +248,7 @@ void RecordFrame(const mrpt_plugins::CIlluminationInvariantMap& map, int frame, 
   };
   csv << frame << ',' << r.coverage << ',' << r.novelty.region_count << ','
       << r.novelty.matched_count << ',' << mean_delta << ',' << max_delta << ','
-      << blank_if_nan(r.novel_share) << ',' << blank_if_nan(auc) << '\n';
+      << blank_if_nan(auc) << ',' << blank_if_nan(r.novel_share) << '\n';
   if (covered) WritePictures(map, frame, judged, panels_every, out, j);
 }
 
@@ -253,11 +260,12 @@ void AddDecisionFindings(const illumination::IlluminationMap& map, const Judged&
   const double tau = map.decision_threshold(), target = map.options().threshold.false_alarm_rate;
   if (std::isnan(tau)) {
     r.findings.Add("decision threshold",
-                   "none (the map file has none: rebuild it with 3 or more "
-                   "lightings)");
+                   "none (the map has none: it needs min_lightings + 1 lightings and "
+                   "threshold_viewpoints > 0; maps saved before format 2 have none)");
     return;
   }
-  r.novel_share = j.covered_pixels ? double(j.novel_pixels) / double(j.covered_pixels) : NAN;
+  if (j.covered_pixels == 0) return;  // no frame covered: nothing was decided
+  r.novel_share = double(j.novel_pixels) / double(j.covered_pixels);
   r.findings.Add("decision threshold τ (nats)", eval::NumberText(tau),
                  "learnt at " + eval::PercentText(target) + " false alarms");
   r.findings.Add("covered pixels above τ", eval::PercentText(r.novel_share),
@@ -364,6 +372,10 @@ LearnIlluminationMapResult LearnIlluminationMap(const std::vector<std::string>& 
     passes.push_back(ParseRawlogPass(spec, o.truth));
     count += passes.back().folder ? std::size_t(PassPlayer(passes.back(), o).length({})) : 1;
   }
+  if (count > std::size_t(illumination::kMaxLightings))
+    throw std::invalid_argument(std::to_string(count) + " lightings; a map holds at most " +
+                                std::to_string(illumination::kMaxLightings) +
+                                " (pick fewer with --include/--exclude)");
   if (count < 2)
     throw std::invalid_argument(
         "learning needs at least two lightings: two --lighting passes, or a folder of two images "
@@ -421,7 +433,7 @@ JudgeIlluminationMapResult JudgeIlluminationMap(const std::string& map_in,
   fs::create_directories(out / "novelty");
   fs::create_directories(out / "panels");
   std::ofstream csv(out / "frames.csv");
-  csv << "frame,coverage,regions,matched,mean_delta,max_delta,novel_share,auc\n";
+  csv << "frame,coverage,regions,matched,mean_delta,max_delta,auc,novel_share\n";
   Judged j;
   JudgeIlluminationMapResult r;
   int last = 0;

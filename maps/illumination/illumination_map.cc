@@ -273,8 +273,10 @@ void IlluminationMap::Build() {
       const double coverage = cv::countNonZero(inv.covered) / double(inv.covered.total());
       // Of the pixels the viewpoint's depth knows: elsewhere no lighting can cover it (a fixed
       // camera's mask, the sky).
-      const int known = cv::countNonZero(view.depth > 0.0f);  // NaN compares false
-      const double share = known ? cv::countNonZero(inv.covered) / double(known) : 0.0;
+      const cv::Mat known = view.depth > 0.0f;  // NaN compares false
+      const int known_pixels = cv::countNonZero(known);
+      const double share =
+          known_pixels ? cv::countNonZero(inv.covered & known) / double(known_pixels) : 0.0;
       if (share < options_.min_viewpoint_coverage || coverage == 0.0) {
         if (first_error.empty())
           first_error = "viewpoint " + std::to_string(v) + ": " + std::to_string(int(100 * share)) +

@@ -19,6 +19,9 @@ HeldOutNovelty HeldOutLightingNovelty(const std::vector<cv::Mat>& images,
         "leave one lighting out: " + std::to_string(m_count) + " lightings leave " +
         std::to_string(m_count - 1) + ", fewer than min_lightings " +
         std::to_string(std::max(2, invariant.min_lightings)) + " (acquire one lighting more)");
+  if (!coverage.empty() && coverage.size() != images.size())
+    throw std::invalid_argument("leave one lighting out: " + std::to_string(coverage.size()) +
+                                " coverage masks for " + std::to_string(m_count) + " lightings");
   HeldOutNovelty out;
   for (int held = 0; held < m_count; ++held) {
     std::vector<cv::Mat> rest, rest_coverage;
@@ -27,14 +30,16 @@ HeldOutNovelty HeldOutLightingNovelty(const std::vector<cv::Mat>& images,
       rest.push_back(images[std::size_t(m)]);
       if (!coverage.empty()) rest_coverage.push_back(coverage[std::size_t(m)]);
     }
-    const InvariantImage inv = ComputeInvariantImage(rest, rest_coverage, invariant);
+    InvariantImage inv = ComputeInvariantImage(rest, rest_coverage, invariant);
+    IlluminationModel learnt = LearnIlluminationModel(inv, rest_coverage, model);
+    // Judged only where the held-out lighting has an image: elsewhere its black would make
+    // regions of its own and move ê for the rest (a frame is judged where the map covers it).
+    if (!coverage.empty()) inv.covered &= coverage[std::size_t(held)] != 0;
     const ViewpointIllumination viewpoint =
-        MakeViewpoint(inv, LearnIlluminationModel(inv, rest_coverage, model),
-                      novelty.min_region_pixels, &zernike);
+        MakeViewpoint(inv, std::move(learnt), novelty.min_region_pixels, &zernike);
     const IlluminationNovelty n =
         DetectIlluminationNovelty(images[std::size_t(held)], viewpoint, zernike, novelty);
-    cv::Mat judged = inv.covered.clone();
-    if (!coverage.empty()) judged &= coverage[std::size_t(held)] != 0;
+    const cv::Mat& judged = viewpoint.covered;
     std::vector<float>& mine = out.per_lighting.emplace_back();
     for (int y = 0; y < judged.rows; ++y)
       for (int x = 0; x < judged.cols; ++x)

@@ -28,9 +28,11 @@ bool IsImage(const fs::path& p) {
   return kExtensions.count(Lower(p.extension().string())) > 0;
 }
 
-// R G B (or grey) as stored; throws naming the file.
+// R G B (or grey) as stored, EXIF orientation ignored (the header's size: every image of one
+// camera shares it); throws naming the file.
 cv::Mat ReadImage(const fs::path& path) {
-  const cv::Mat raw = cv::imread(path.string(), cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR);
+  const cv::Mat raw = cv::imread(
+      path.string(), cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR | cv::IMREAD_IGNORE_ORIENTATION);
   if (raw.empty()) throw std::runtime_error(path.string() + ": cannot be read as an image");
   if (raw.depth() != CV_8U && raw.depth() != CV_16U)
     throw std::runtime_error(path.string() + ": only 8- and 16-bit images are supported");

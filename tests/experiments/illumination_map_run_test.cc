@@ -148,12 +148,12 @@ std::vector<std::pair<double, double>> MitFrameShares(const fs::path& csv_path) 
   std::ifstream csv(csv_path);
   std::vector<std::pair<double, double>> rows;
   std::string line;
-  std::getline(csv, line);  // frame,coverage,regions,matched,mean_delta,max_delta,novel_share,auc
+  std::getline(csv, line);  // frame,coverage,regions,matched,mean_delta,max_delta,auc,novel_share
   while (std::getline(csv, line)) {
     std::vector<std::string> f;
     std::stringstream fields(line);
     for (std::string v; std::getline(fields, v, ',');) f.push_back(v);
-    rows.emplace_back(std::stod(f.at(1)), std::stod(f.at(6)));
+    rows.emplace_back(std::stod(f.at(1)), std::stod(f.at(7)));
   }
   return rows;
 }

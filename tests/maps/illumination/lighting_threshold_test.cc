@@ -103,6 +103,34 @@ TEST(LightingThreshold, NewLightingsAlarmAtAboutTheRateAndANewObjectAlarms) {
   EXPECT_GE(found, 0.5);
 }
 
+// A moving camera's lighting that missed part of a viewpoint: its virtual image is black there
+// and its coverage 0. Held out, it is judged only where it has an image, and the black part
+// makes no regions of its own that would damp the rest: τ stays the one of full coverage.
+TEST(LightingThreshold, AHeldOutLightingIsJudgedOnlyWhereItHasAnImage) {
+  const LitScene scene = MakeLitScene();
+  std::vector<cv::Mat> training;
+  for (int m = 0; m < 8; ++m) training.push_back(scene.Lit(m));
+  const cv::Mat full(scene.reflectance.size(), CV_8U, cv::Scalar(255));
+  std::vector<cv::Mat> coverage(training.size(), full);
+  const ZernikeMoments zernike{ZernikeOptions{}};
+  const double tau_full = ThresholdAtFalseAlarmRate(
+      HeldOutLightingNovelty(training, coverage, {}, {}, {}, zernike).values, 0.01);
+  const cv::Rect missed(0, 0, full.cols / 3, full.rows);
+  coverage[0] = full.clone();
+  coverage[0](missed).setTo(0);
+  training[0] = training[0].clone();
+  training[0](missed).setTo(cv::Scalar::all(0));
+  const HeldOutNovelty held = HeldOutLightingNovelty(training, coverage, {}, {}, {}, zernike);
+  EXPECT_EQ(long(held.per_lighting[0].size()), long(cv::countNonZero(coverage[0])));
+  EXPECT_EQ(held.per_lighting[1].size(), full.total());
+  const double tau = ThresholdAtFalseAlarmRate(held.values, 0.01);
+  std::cout << "tau " << tau << " nats, with full coverage " << tau_full << "\n";
+  EXPECT_NEAR(tau, tau_full, 0.1 * tau_full);
+  coverage.pop_back();
+  EXPECT_THROW(HeldOutLightingNovelty(training, coverage, {}, {}, {}, zernike),
+               std::invalid_argument);
+}
+
 TEST(LightingThreshold, TooFewLightingsToLeaveOneOutIsAnError) {
   const LitScene scene = MakeLitScene();
   const ZernikeMoments zernike{ZernikeOptions{}};
