@@ -30,6 +30,20 @@ double Roc::FprAtTpr(double min_tpr) const {
   return best;
 }
 
+RocPoint OperatingPoint(const std::vector<double>& scores, const std::vector<bool>& positive,
+                        double threshold) {
+  if (scores.size() != positive.size())
+    throw std::invalid_argument("OperatingPoint: scores and labels differ in size");
+  long negatives = 0, false_alarms = 0, positives = 0, hits = 0;
+  for (std::size_t k = 0; k < scores.size(); ++k) {
+    const bool above = scores[k] > threshold;
+    (positive[k] ? positives : negatives) += 1;
+    (positive[k] ? hits : false_alarms) += above;
+  }
+  return {threshold, negatives ? double(false_alarms) / double(negatives) : 0.0,
+          positives ? double(hits) / double(positives) : 0.0};
+}
+
 Roc ComputeRoc(const std::vector<double>& scores, const std::vector<bool>& positive) {
   if (scores.size() != positive.size())
     throw std::invalid_argument("ComputeRoc: " + std::to_string(scores.size()) + " scores, " +

@@ -33,6 +33,12 @@ struct Roc {
 /// Throws std::invalid_argument if the sizes differ, a score is NaN, or either class is empty.
 Roc ComputeRoc(const std::vector<double>& scores, const std::vector<bool>& positive);
 
+/// The operating point of deciding "positive" where score > `threshold` (a learnt threshold's
+/// rates): fpr and tpr are 0 for a class without samples. Throws std::invalid_argument if the
+/// sizes differ.
+RocPoint OperatingPoint(const std::vector<double>& scores, const std::vector<bool>& positive,
+                        double threshold);
+
 /// Dominance up to an FPR (the thesis's "above the baselines at every FPR up to …"): the first
 /// FPR of k / divisions, k = 1, 2, … up to max_fpr, at which `a`'s TprAtFpr is not above every
 /// one of `others`' (equal at TPR 1 counts as above: nothing is left to find); none if `a` is

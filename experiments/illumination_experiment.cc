@@ -153,19 +153,12 @@ void AddDecisionFindings(const Evaluation& e, double tau, double target,
                  "held-out lighting with an invariant image)");
     return;
   }
-  long negatives = 0, false_alarms = 0, positives = 0, hits = 0;
-  for (std::size_t j = 0; j < e.positive.size(); ++j) {
-    const bool above = e.methods[0].scores[j] > tau;
-    (e.positive[j] ? positives : negatives) += 1;
-    (e.positive[j] ? hits : false_alarms) += above;
-  }
+  const eval::RocPoint at = eval::OperatingPoint(e.methods[0].scores, e.positive, tau);
   findings.Add("decision threshold τ from the training lightings (nats)", eval::NumberText(tau),
                "learnt at " + eval::PercentText(target) + " false alarms");
-  findings.Add("novelty at τ: FPR",
-               eval::PercentText(double(false_alarms) / std::max(1L, negatives)),
+  findings.Add("novelty at τ: FPR", eval::PercentText(at.fpr),
                "(reported; learnt for " + eval::PercentText(target) + ")");
-  findings.Add("novelty at τ: TPR", eval::PercentText(double(hits) / std::max(1L, positives)),
-               "(reported)");
+  findings.Add("novelty at τ: TPR", eval::PercentText(at.tpr), "(reported)");
 }
 
 // Writes roc.csv, findings.csv and report.html; returns what they say.

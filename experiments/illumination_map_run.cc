@@ -272,21 +272,16 @@ void AddDecisionFindings(const illumination::IlluminationMap& map, const Judged&
                  "(with nothing new: ≈ " + eval::PercentText(target) + ")");
   r.summary += "; " + eval::PercentText(r.novel_share) +
                " of the covered pixels above τ = " + eval::NumberText(tau);
-  long negatives = 0, false_alarms = 0, positives = 0, hits = 0;
-  for (std::size_t k = 0; k < j.scores.size(); ++k) {
-    const bool above = j.scores[k] > tau;
-    (j.positive[k] ? positives : negatives) += 1;
-    (j.positive[k] ? hits : false_alarms) += above;
-  }
-  if (negatives > 0) {
-    r.false_alarm_rate = double(false_alarms) / double(negatives);
+  const long positives = long(std::count(j.positive.begin(), j.positive.end(), true));
+  const eval::RocPoint at = eval::OperatingPoint(j.scores, j.positive, tau);
+  if (long(j.positive.size()) > positives) {
+    r.false_alarm_rate = at.fpr;
     r.summary += " (false alarms " + eval::PercentText(r.false_alarm_rate) + ")";
     r.findings.Add("false-alarm rate at τ (ground truth)", eval::PercentText(r.false_alarm_rate),
                    "(reported; the map's target " + eval::PercentText(target) + ")");
   }
   if (positives > 0)
-    r.findings.Add("TPR at τ (ground truth)", eval::PercentText(double(hits) / double(positives)),
-                   "(reported)");
+    r.findings.Add("TPR at τ (ground truth)", eval::PercentText(at.tpr), "(reported)");
 }
 
 void WriteReport(const std::string& title, const JudgeIlluminationMapResult& r,

@@ -118,5 +118,16 @@ TEST(FirstFprNotAbove, TheFirstGridFprWhereAnotherCurveCatchesUp) {
   EXPECT_FALSE(FirstFprNotAbove(perfect, {&perfect}, 0.1).has_value());
 }
 
+// Deciding score > 2: of the negatives {1, 2, 3} one is above (2 is not), of the positives
+// {2.5, 4} both.
+TEST(OperatingPoint, CountsStrictlyAboveTheThreshold) {
+  const RocPoint p =
+      OperatingPoint({1.0, 2.0, 3.0, 2.5, 4.0}, {false, false, false, true, true}, 2.0);
+  EXPECT_DOUBLE_EQ(p.fpr, 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(p.tpr, 1.0);
+  EXPECT_EQ(OperatingPoint({1.0}, {false}, 0.0).tpr, 0.0);  // no positives: 0
+  EXPECT_THROW(OperatingPoint({1.0}, {}, 0.0), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace novelty::eval
