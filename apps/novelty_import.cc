@@ -1,18 +1,21 @@
-// novelty-import: a recorded RGB-D sequence into an MRPT rawlog the maps read
-// (sensors/dataset/rgbd_sequence.h, rgbd_importer.h).
+// novelty-import: a recorded RGB-D sequence, or a fixed camera's folder of images, into an MRPT
+// rawlog the maps read (sensors/dataset/rgbd_sequence.h, rgbd_importer.h, fixed_camera_folder.h).
 //
-//   novelty-import DIR --out OUT.rawlog [--layout auto|tum|icl-nuim|7scenes]
+//   novelty-import DIR --out OUT.rawlog [--layout auto|tum|icl-nuim|7scenes|fixed-camera]
 //       [--camera fr1|fr2|fr3|icl-nuim|7scenes | --camera-file FILE | --fx FX --fy FY --cx CX
 //        --cy CY]
 //       [--depth-scale S] [--max-time-difference 0.02] [--first N] [--last N] [--every K]
-//       [--max-pixels N]
+//       [--max-pixels N] [--include GLOB ...] [--exclude GLOB ...]
 //
 // DIR is a TUM RGB-D sequence (rgb.txt, depth.txt, groundtruth.txt), an ICL-NUIM folder (color/,
-// depth/, pose.txt) or a 7-Scenes sequence (frame-NNNNNN.{color,depth}.png, .pose.txt). OUT gets
-// one CObservation3DRangeScan per frame with external images in OUT_Images/, and a
-// CObservationRobotPose "POSE_DATASET" before each frame the dataset gives a pose for:
-// `novelty-run --rawlog OUT --poses rawlog` plays it, rawlog-edit and RawLogViewer open it.
-// Nothing is written when the import fails.
+// depth/, pose.txt), a 7-Scenes sequence (frame-NNNNNN.{color,depth}.png, .pose.txt), or with
+// --layout fixed-camera a folder of images from one camera that does not move (a static camera's
+// frames, or the lightings of one viewpoint; mask.png limits the pixels, --include/--exclude pick
+// the files). OUT gets one CObservation3DRangeScan per frame with external images in OUT_Images/,
+// and a CObservationRobotPose "POSE_DATASET" before each frame the dataset gives a pose for (a
+// fixed camera: the origin, its depth a plane): `novelty-run --rawlog OUT` plays it,
+// `novelty-illumination-map --lighting OUT:each` learns a lighting per frame, rawlog-edit and
+// RawLogViewer open it. Nothing is written when the import fails.
 #include <tclap/CmdLine.h>
 
 #include <algorithm>
@@ -27,6 +30,7 @@
 #include "apps/shell/program.h"
 #include "apps/shell/progress.h"
 #include "sensors/dataset/camera_file.h"
+#include "sensors/dataset/fixed_camera_folder.h"
 #include "sensors/dataset/rgbd_importer.h"
 #include "sensors/rawlog/rawlog_input.h"
 #include "sensors/rawlog/rgbd_observation.h"
@@ -95,92 +99,134 @@ void CheckOutput(const std::string& out, const std::string& in) {
                              " would be written into the input " + in);
 }
 
-int Run(int argc, char** argv) {
-  apps::CommandLine cmd(
-      "Imports a recorded RGB-D sequence (TUM RGB-D, ICL-NUIM, 7-Scenes) into "
-      "an MRPT rawlog",
-      "0.1");
-  TCLAP::UnlabeledValueArg<std::string> in("folder", "The sequence's folder", true, "", "DIR", cmd);
-  TCLAP::ValueArg<std::string> out("o", "out", "Output rawlog", true, "", "OUT.rawlog", cmd);
-  const sensors::RgbdSequenceOptions defaults;
-  TCLAP::ValueArg<std::string> layout("", "layout", "auto, tum, icl-nuim or 7scenes", false,
-                                      defaults.layout, "NAME", cmd);
-  TCLAP::ValueArg<std::string> camera(
-      "", "camera",
-      "Intrinsics by name: fr1, fr2, fr3 (TUM), icl-nuim, 7scenes (default: the layout's, or "
-      "TUM's from the folder name)",
-      false, "", "NAME", cmd);
-  TCLAP::ValueArg<std::string> camera_file(
-      "", "camera-file",
-      "Intrinsics from a ROS camera_info YAML (.yaml) or an MRPT camera .ini ([CAMERA_PARAMS]); "
-      "no distortion",
-      false, "", "FILE", cmd);
-  TCLAP::ValueArg<double> fx("", "fx", "Focal length x (px); with --fy --cx --cy", false, 0, "FX",
-                             cmd);
-  TCLAP::ValueArg<double> fy("", "fy", "Focal length y (px, negative if y points up)", false, 0,
-                             "FY", cmd);
-  TCLAP::ValueArg<double> cx("", "cx", "Principal point x (px)", false, 0, "CX", cmd);
-  TCLAP::ValueArg<double> cy("", "cy", "Principal point y (px)", false, 0, "CY", cmd);
-  TCLAP::ValueArg<double> scale("", "depth-scale",
-                                "Depth image units per metre (default: the layout's, 5000 TUM "
-                                "and ICL-NUIM, 1000 7-Scenes)",
-                                false, 0, "S", cmd);
-  TCLAP::ValueArg<double> max_dt("", "max-time-difference",
-                                 "TUM: seconds between associated colour, depth and pose lines",
-                                 false, defaults.max_time_difference, "SECONDS", cmd);
-  const sensors::RgbdImportOptions import_defaults;
-  TCLAP::ValueArg<int> first("", "first", "First frame (1-based)", false, 1, "N", cmd);
-  TCLAP::ValueArg<int> last("", "last", "Last frame (0: to the end)", false, 0, "N", cmd);
-  TCLAP::ValueArg<int> every("", "every", "Every K-th frame", false, 1, "K", cmd);
-  TCLAP::ValueArg<long long> max_pixels("", "max-pixels",
-                                        "Largest image accepted (pixels, read from the header)",
-                                        false, import_defaults.max_pixels, "N", cmd);
-  cmd.Parse(argc, argv);
-  // Every flag is checked before anything is read: a bad value is a usage error naming it.
-  CheckFlag(every.getValue() >= 1, "--every must be >= 1");
-  CheckFlag(first.getValue() >= 1, "--first must be >= 1");
-  CheckFlag(last.getValue() == 0 || last.getValue() >= first.getValue(),
-            "--last must be 0 (to the end) or >= --first");
-  CheckFlag(max_pixels.getValue() >= 1, "--max-pixels must be >= 1");
-  CheckFlag(max_dt.getValue() >= 0 && max_dt.getValue() <= 1,
-            "--max-time-difference must be in [0, 1] s");
-  CheckFlag(!scale.isSet() || (scale.getValue() >= 1 && scale.getValue() <= 1e6),
-            "--depth-scale must be in [1, 1e6] units per metre");
-  CheckFlag(layout.getValue() == "auto" || layout.getValue() == "tum" ||
-                layout.getValue() == "icl-nuim" || layout.getValue() == "7scenes",
-            "--layout must be auto, tum, icl-nuim or 7scenes");
-  sensors::RgbdSequenceOptions o;
-  o.layout = layout.getValue();
-  o.max_time_difference = max_dt.getValue();
-  o.depth_scale = scale.getValue();
-  SetCamera(camera, camera_file, {&fx, &fy, &cx, &cy}, o);
-  CheckOutput(out.getValue(), in.getValue());
+// The command line, one member a flag.
+struct Flags {
+  explicit Flags(TCLAP::CmdLine& cmd)
+      : in("folder", "The sequence's folder", true, "", "DIR", cmd),
+        out("o", "out", "Output rawlog", true, "", "OUT.rawlog", cmd),
+        layout("", "layout", "auto, tum, icl-nuim, 7scenes or fixed-camera", false,
+               sensors::RgbdSequenceOptions().layout, "NAME", cmd),
+        camera("", "camera",
+               "Intrinsics by name: fr1, fr2, fr3 (TUM), icl-nuim, 7scenes (default: the "
+               "layout's, or TUM's from the folder name)",
+               false, "", "NAME", cmd),
+        camera_file("", "camera-file",
+                    "Intrinsics from a ROS camera_info YAML (.yaml) or an MRPT camera .ini "
+                    "([CAMERA_PARAMS]); no distortion",
+                    false, "", "FILE", cmd),
+        fx("", "fx", "Focal length x (px); with --fy --cx --cy", false, 0, "FX", cmd),
+        fy("", "fy", "Focal length y (px, negative if y points up)", false, 0, "FY", cmd),
+        cx("", "cx", "Principal point x (px)", false, 0, "CX", cmd),
+        cy("", "cy", "Principal point y (px)", false, 0, "CY", cmd),
+        scale("", "depth-scale",
+              "Depth image units per metre (default: the layout's, 5000 TUM and ICL-NUIM, 1000 "
+              "7-Scenes)",
+              false, 0, "S", cmd),
+        max_dt("", "max-time-difference",
+               "TUM: seconds between associated colour, depth and pose lines", false,
+               sensors::RgbdSequenceOptions().max_time_difference, "SECONDS", cmd),
+        first("", "first", "First frame (1-based)", false, 1, "N", cmd),
+        last("", "last", "Last frame (0: to the end)", false, 0, "N", cmd),
+        every("", "every", "Every K-th frame", false, 1, "K", cmd),
+        max_pixels("", "max-pixels", "Largest image accepted (pixels, read from the header)", false,
+                   sensors::RgbdImportOptions().max_pixels, "N", cmd),
+        include("", "include", "fixed-camera: only images matching GLOB", false, "GLOB", cmd),
+        exclude("", "exclude", "fixed-camera: not images matching GLOB", false, "GLOB", cmd) {}
+  TCLAP::UnlabeledValueArg<std::string> in;
+  TCLAP::ValueArg<std::string> out, layout, camera, camera_file;
+  TCLAP::ValueArg<double> fx, fy, cx, cy, scale, max_dt;
+  TCLAP::ValueArg<int> first, last, every;
+  TCLAP::ValueArg<long long> max_pixels;
+  TCLAP::MultiArg<std::string> include, exclude;
+};
 
-  const sensors::RgbdSequence s = sensors::ReadRgbdSequence(in.getValue(), o);
-  if (camera_file.isSet() &&
+// Every flag is checked before anything is read: a bad value is a usage error naming it.
+void CheckFlags(const Flags& f) {
+  CheckFlag(f.every.getValue() >= 1, "--every must be >= 1");
+  CheckFlag(f.first.getValue() >= 1, "--first must be >= 1");
+  CheckFlag(f.last.getValue() == 0 || f.last.getValue() >= f.first.getValue(),
+            "--last must be 0 (to the end) or >= --first");
+  CheckFlag(f.max_pixels.getValue() >= 1, "--max-pixels must be >= 1");
+  CheckFlag(f.max_dt.getValue() >= 0 && f.max_dt.getValue() <= 1,
+            "--max-time-difference must be in [0, 1] s");
+  CheckFlag(!f.scale.isSet() || (f.scale.getValue() >= 1 && f.scale.getValue() <= 1e6),
+            "--depth-scale must be in [1, 1e6] units per metre");
+  const std::string l = f.layout.getValue();
+  CheckFlag(l == "auto" || l == "tum" || l == "icl-nuim" || l == "7scenes" || l == "fixed-camera",
+            "--layout must be auto, tum, icl-nuim, 7scenes or fixed-camera");
+  CheckFlag(l == "fixed-camera" || !(f.include.isSet() || f.exclude.isSet()),
+            "--include and --exclude pick the images of --layout fixed-camera");
+  CheckFlag(l != "fixed-camera" ||
+                !(f.camera.isSet() || f.camera_file.isSet() || f.fx.isSet() || f.scale.isSet()),
+            "a fixed camera's intrinsics are nominal and its depth a plane: no --camera, "
+            "--camera-file, --fx or --depth-scale");
+}
+
+// --layout fixed-camera: the folder's images at one pose, a plane as depth.
+void ImportFixedCamera(const Flags& f, const sensors::RgbdImportOptions& io) {
+  sensors::FixedCameraOptions fo;
+  fo.pick = {f.include.getValue(), f.exclude.getValue()};
+  fo.max_pixels = io.max_pixels;
+  const sensors::FixedCameraFolder folder(f.in.getValue(), fo);
+  const sensors::RgbdImportResult r =
+      sensors::ImportFixedCameraFolder(folder, f.out.getValue(), io);
+  std::printf("%s: %d images of one fixed camera (%dx%d, %zu left out by the patterns%s) → %s\n",
+              f.in.getValue().c_str(), r.frames, folder.camera().width, folder.camera().height,
+              folder.listing().left_out.size(), folder.listing().mask.empty() ? "" : ", masked",
+              f.out.getValue().c_str());
+}
+
+// The RGB-D layouts.
+void ImportSequence(const Flags& f, const sensors::RgbdImportOptions& io) {
+  sensors::RgbdSequenceOptions o;
+  o.layout = f.layout.getValue();
+  o.max_time_difference = f.max_dt.getValue();
+  o.depth_scale = f.scale.getValue();
+  SetCamera(f.camera, f.camera_file, {&f.fx, &f.fy, &f.cx, &f.cy}, o);
+  const sensors::RgbdSequence s = sensors::ReadRgbdSequence(f.in.getValue(), o);
+  if (f.camera_file.isSet() &&
       (s.camera.width != o.camera->width || s.camera.height != o.camera->height))
     throw std::runtime_error(
-        camera_file.getValue() + ": calibrated at " + std::to_string(o.camera->width) + "x" +
+        f.camera_file.getValue() + ": calibrated at " + std::to_string(o.camera->width) + "x" +
         std::to_string(o.camera->height) + ", the images are " + std::to_string(s.camera.width) +
         "x" + std::to_string(s.camera.height));
-  sensors::RgbdImportOptions io;
-  io.first = first.getValue(), io.last = last.getValue(), io.every = every.getValue();
-  io.max_pixels = max_pixels.getValue();
-  std::optional<apps::Progress> progress;
-  io.progress = [&](int done, int total) {
-    if (!progress) progress.emplace("[novelty-import] frames", total);
-    progress->Update(done);
-  };
-  const sensors::RgbdImportResult r = sensors::ImportRgbdSequence(s, out.getValue(), io);
-  if (progress) progress->Finish();
+  const sensors::RgbdImportResult r = sensors::ImportRgbdSequence(s, f.out.getValue(), io);
   std::printf(
       "%s: %zu frames (%s layout, %dx%d, fx %.1f from %s), %d colour images without depth, %d "
       "frames without a pose\n%d RGB-D frames, %d with a pose, depth known at %.1f %% of the "
       "pixels (%lld beyond the rawlog's %.1f m, stored as unknown) → %s\n",
-      in.getValue().c_str(), s.frames.size(), s.layout.c_str(), s.camera.width, s.camera.height,
+      f.in.getValue().c_str(), s.frames.size(), s.layout.c_str(), s.camera.width, s.camera.height,
       s.camera.fx, s.camera_source.c_str(), s.unmatched_rgb, s.unposed, r.frames, r.posed,
       100 * r.depth_coverage, r.beyond_range, double(sensors::kRgbdMaxDepth),
-      out.getValue().c_str());
+      f.out.getValue().c_str());
+}
+
+int Run(int argc, char** argv) {
+  apps::CommandLine cmd(
+      "Imports a recorded RGB-D sequence (TUM RGB-D, ICL-NUIM, 7-Scenes) or a fixed camera's "
+      "images into an MRPT rawlog",
+      "0.1");
+  const Flags f(cmd);
+  cmd.Parse(argc, argv);
+  CheckFlags(f);
+  if (f.layout.getValue() != "fixed-camera") {  // the camera flags' combinations
+    sensors::RgbdSequenceOptions probe;
+    SetCamera(f.camera, f.camera_file, {&f.fx, &f.fy, &f.cx, &f.cy}, probe);
+  }
+  CheckOutput(f.out.getValue(), f.in.getValue());
+  sensors::RgbdImportOptions io;
+  io.first = f.first.getValue(), io.last = f.last.getValue(), io.every = f.every.getValue();
+  io.max_pixels = f.max_pixels.getValue();
+  std::optional<apps::Progress> progress;
+  io.progress = [&](int done, int total) {
+    if (!progress) progress.emplace("[novelty-import] frames", total);
+    progress->Update(done);
+    if (done == total) progress->Finish();
+  };
+  if (f.layout.getValue() == "fixed-camera")
+    ImportFixedCamera(f, io);
+  else
+    ImportSequence(f, io);
   return apps::kExitOk;
 }
 

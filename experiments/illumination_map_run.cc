@@ -320,10 +320,19 @@ void WriteReport(const std::string& title, const JudgeIlluminationMapResult& r,
 
 RawlogPass ParseRawlogPass(const std::string& spec, const sim::GroundTruthReader* truth) {
   static const std::regex range(R"((.*):(\d+)-(\d+))"), named(R"((.*):([A-Za-z_][\w-]*))");
+  static const std::string each = ":each";
   std::smatch m;
   RawlogPass pass{spec, spec, 1, 0};
   if (fs::is_directory(spec)) {
-    pass.folder = true;
+    pass.folder = pass.each = true;
+    return pass;
+  }
+  if (!fs::exists(spec) && spec.size() > each.size() &&
+      spec.compare(spec.size() - each.size(), each.size(), each) == 0) {
+    pass = ParseRawlogPass(spec.substr(0, spec.size() - each.size()), truth);
+    if (pass.folder) throw std::invalid_argument(spec + ": ':each' is for a rawlog");
+    pass.spec = spec;
+    pass.each = true;
     return pass;
   }
   if (fs::is_regular_file(spec)) {
@@ -365,7 +374,10 @@ LearnIlluminationMapResult LearnIlluminationMap(const std::vector<std::string>& 
   std::size_t count = 0;  // lightings: a folder gives one per image
   for (const std::string& spec : lightings) {
     passes.push_back(ParseRawlogPass(spec, o.truth));
-    count += passes.back().folder ? std::size_t(PassPlayer(passes.back(), o).length({})) : 1;
+    // A rawlog pass of one lighting per frame whose length is unknown counts as two here: the
+    // map refuses too few or too many lightings when they are played.
+    const int length = PassPlayer(passes.back(), o).length(passes.back());
+    count += !passes.back().each ? 1 : length > 0 ? std::size_t(length) : 2;
   }
   if (count > std::size_t(illumination::kMaxLightings))
     throw std::invalid_argument(std::to_string(count) + " lightings; a map holds at most " +
@@ -382,15 +394,16 @@ LearnIlluminationMapResult LearnIlluminationMap(const std::vector<std::string>& 
   for (std::size_t k = 0; k < passes.size(); ++k) {
     const RawlogPass& pass = passes[k];
     const std::string what =
-        pass.folder ? "lightings of " + pass.spec
-                    : "lighting " + std::to_string(k + 1) + "/" + std::to_string(passes.size());
+        pass.each ? "lightings of " + pass.spec
+                  : "lighting " + std::to_string(k + 1) + "/" + std::to_string(passes.size());
     PassPlayer player(pass, o);
     int frames = 0, last = 0;
-    // A rawlog pass is one lighting; each image of a folder is one of its own, begun just before
-    // the image goes in (an image the maps refuse leaves it open for the next).
+    // A rawlog pass is one lighting; each image of a folder (or frame of an ":each" pass) is one
+    // of its own, begun just before the frame goes in (a frame the maps refuse leaves it open for
+    // the next).
     bool open = false;
-    if (!pass.folder) m.map->beginLighting();
-    if (pass.folder)
+    if (!pass.each) m.map->beginLighting();
+    if (pass.each)
       player.SetBeforeInsert([&](int) {
         if (!open) m.map->beginLighting(), open = true;
       });

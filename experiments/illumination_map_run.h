@@ -4,8 +4,9 @@
 //
 // A pass (a lighting, or the frames to judge) is a rawlog path, optionally with ":FIRST-LAST" (its
 // camera frames FIRST…LAST, 1-based) or ":PHASE" (a phase of the ground truth, novelty-sim's
-// folder), so that one rawlog holding several passes serves too; or a folder of images from one
-// fixed camera (photos: each a lighting when learning, a frame when judging). Frames are played
+// folder), so that one rawlog holding several passes serves too, and ":each" when each of its
+// frames is a lighting of its own; or a folder of images from one fixed camera (photos: each a
+// lighting when learning, a frame when judging). Frames are played
 // into a CMultiMetricMap holding one CIlluminationInvariantMap (the .ini's, or one at its
 // defaults), with poses from the rawlog's pose observations (novelty-poses), the wheel odometry or
 // the ground truth's camera poses. Learning calls beginLighting() before each pass and
@@ -36,10 +37,14 @@ struct RawlogPass {
   /// `path` is a folder of images from one fixed camera (sensors/dataset/fixed_camera_folder.h):
   /// learning takes each image as a lighting of its own, judging each as a frame.
   bool folder = false;
+  /// Learning takes each frame as a lighting of its own (a folder, or a rawlog pass given with
+  /// ":each", such as novelty-import's of a lighting folder); else the pass is one lighting.
+  bool each = false;
 };
 
-/// Parses DIR, RAWLOG, RAWLOG:FIRST-LAST or RAWLOG:PHASE (`truth` needed for a phase); the
-/// rawlog must be a file. Throws std::invalid_argument naming `spec`.
+/// Parses DIR, or RAWLOG, RAWLOG:FIRST-LAST or RAWLOG:PHASE (`truth` needed for a phase), each
+/// optionally followed by ":each"; the rawlog must be a file. Throws std::invalid_argument naming
+/// `spec`.
 RawlogPass ParseRawlogPass(const std::string& spec, const sim::GroundTruthReader* truth);
 
 struct IlluminationMapRunOptions {

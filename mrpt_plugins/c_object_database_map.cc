@@ -40,6 +40,32 @@ Eigen::Vector3d ReadVector(mrpt::serialization::CArchive& in) {
   return p;
 }
 
+// An object's name and outline (map format 2): the name as its length and bytes, so that a
+// corrupt length is refused before anything is allocated.
+void WriteInfo(mrpt::serialization::CArchive& out, const objects::ObjectInfo& info) {
+  out << uint32_t(info.name.size());
+  if (!info.name.empty()) out.WriteBuffer(info.name.data(), info.name.size());
+  out << uint32_t(info.outline.size());
+  for (const Eigen::Vector2d& p : info.outline) out << p.x() << p.y();
+}
+
+objects::ObjectInfo ReadInfo(mrpt::serialization::CArchive& in) {
+  objects::ObjectInfo info;
+  uint32_t length = 0, points = 0;
+  in >> length;
+  if (length > objects::FeatureDatabase::kMaxNameLength)
+    ThrowMapFileError("an object name of " + std::to_string(length) + " characters");
+  info.name.resize(length);
+  if (length > 0 && in.ReadBuffer(info.name.data(), length) != length)
+    ThrowMapFileError("the file ends inside an object name");
+  in >> points;
+  if (points > objects::FeatureDatabase::kMaxOutline)
+    ThrowMapFileError("an object outline of " + std::to_string(points) + " points");
+  info.outline.resize(points);
+  for (Eigen::Vector2d& p : info.outline) in >> p.x() >> p.y();
+  return info;
+}
+
 // A colour per object, well apart for neighbouring indices (golden-ratio hues).
 mrpt::img::TColorf ObjectColour(int k) {
   const double h = std::fmod(0.61803398875 * k, 1.0) * 6.0;
@@ -165,7 +191,7 @@ void CObjectDatabaseMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) co
   for (int k = 0; k < db.objects(); ++k) {
     if (placed[std::size_t(k)] == 0) continue;
     const Eigen::Vector3d c = sum[std::size_t(k)] / placed[std::size_t(k)];
-    auto label = mrpt::opengl::CText::Create("object " + std::to_string(k));
+    auto label = mrpt::opengl::CText::Create(db.DisplayName(k));
     label->setLocation(c.x(), c.y(), c.z() + 0.05);
     label->setColor(ObjectColour(k));
     o.insert(label);
@@ -194,7 +220,8 @@ void CObjectDatabaseMap::saveMetricMapRepresentationToFile(const std::string& pr
 
 // Map file: every option by key (option_table.h); the object count; the descriptors (rows, width,
 // floats); per feature its counts (object, n) and its 3-D place; per object where it was learnt;
-// per feature its learnt keypoint's orientation and metric size (NaN unknown). Older versions:
+// per feature its learnt keypoint's orientation and metric size (NaN unknown); per object its name
+// and outline (objects::ObjectInfo). Older versions:
 // map_formats.h.
 uint8_t CObjectDatabaseMap::serializeGetVersion() const {
   return CurrentMapFormat("CObjectDatabaseMap");
@@ -214,6 +241,7 @@ void CObjectDatabaseMap::serializeTo(mrpt::serialization::CArchive& out) const {
   for (int h = 0; h < d.rows; ++h) WriteVector(out, db.Position(h));
   for (const Eigen::Vector3d& at : learntAt()) WriteVector(out, at);
   for (int h = 0; h < d.rows; ++h) out << db.Keypoint(h).angle_deg << db.Keypoint(h).size_m;
+  for (int k = 0; k < db.objects(); ++k) WriteInfo(out, db.Info(k));
 }
 
 void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
@@ -257,10 +285,12 @@ void CObjectDatabaseMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_
     keypoints.emplace_back();
     in >> keypoints.back().angle_deg >> keypoints.back().size_m;
   }
+  std::vector<objects::ObjectInfo> info;
+  for (int k = 0; format.object_info && k < objects; ++k) info.push_back(ReadInfo(in));
   auto acquisition = std::make_unique<objects::ObjectAcquisition>(config.map);
   try {
     acquisition->learner().database() =
-        objects::FeatureDatabase::FromParts(objects, d, counts, positions, keypoints);
+        objects::FeatureDatabase::FromParts(objects, d, counts, positions, keypoints, info);
   } catch (const std::invalid_argument& e) {  // the content, not the archive, is wrong
     ThrowMapFileError(e.what());
   }

@@ -18,7 +18,8 @@ struct ClassFormats {
 // Versions of the view maps: 0 and 1 stored options positionally and planes raw, 2 options by
 // key, 3 planes encoded (shuffled), 4 encoded with prediction. The others: version 1 added
 // the object database's keypoints and the illumination map's texture tails, the illumination
-// map's version 2 its decision threshold.
+// map's version 2 its decision threshold, the object database's version 2 its objects' names and
+// outlines.
 const std::vector<ClassFormats>& Classes() {
   static const std::vector<ClassFormats> classes = {
       {"CAppearanceMap",
@@ -31,7 +32,7 @@ const std::vector<ClassFormats>& Classes() {
        4,
        {"new_view_distance", "new_view_angle_deg", "max_relative_depth_jump", "depth_tolerance"},
        {"angle_power", "weight_by_rays"}},
-      {"CObjectDatabaseMap", 1, {}, {}},
+      {"CObjectDatabaseMap", 2, {}, {}},
       {"CIlluminationInvariantMap", 2, {}, {}},
   };
   return classes;
@@ -71,6 +72,7 @@ MapFormat MapFormatOf(const std::string& map_class, uint8_t version) {
   } else {
     f.learnt_keypoints = f.texture_tails = version >= 1;
     f.decision_threshold = c.map_class != std::string("CIlluminationInvariantMap") || version >= 2;
+    f.object_info = c.map_class != std::string("CObjectDatabaseMap") || version >= 2;
   }
   return f;
 }

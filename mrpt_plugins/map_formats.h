@@ -24,6 +24,8 @@ struct MapFormat {
   views::PlaneEncoding encoding = views::PlaneEncoding::kPredicted;
   /// CObjectDatabaseMap: each feature's learnt keypoint (orientation, metric size).
   bool learnt_keypoints = true;
+  /// CObjectDatabaseMap: each object's name and photo outline (objects::ObjectInfo).
+  bool object_info = true;
   /// CIlluminationInvariantMap: each viewpoint's missing-texture tail table.
   bool texture_tails = true;
   /// CIlluminationInvariantMap: the decision threshold on Δ learnt from the training lightings.

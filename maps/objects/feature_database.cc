@@ -18,7 +18,40 @@ bool Valid(const LearntKeypoint& k) {
   return (std::isnan(k.angle_deg) || (k.angle_deg >= 0.0 && k.angle_deg < 360.0)) &&
          (std::isnan(k.size_m) || (std::isfinite(k.size_m) && k.size_m > 0.0));
 }
+// Why `info` cannot be an object's: a name that would break a CSV row or a terminal line, or an
+// outline that is no polygon; empty if it can.
+std::string InfoError(const ObjectInfo& info) {
+  if (info.name.size() > FeatureDatabase::kMaxNameLength)
+    return "a name of " + std::to_string(info.name.size()) + " characters";
+  for (const char c : info.name)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "a name with a control character";
+  if (info.outline.size() > FeatureDatabase::kMaxOutline ||
+      (!info.outline.empty() && info.outline.size() < 3))
+    return "an outline of " + std::to_string(info.outline.size()) + " points";
+  for (const Eigen::Vector2d& p : info.outline)
+    if (!p.allFinite()) return "an outline point that is not finite";
+  return "";
+}
 }  // namespace
+
+int FeatureDatabase::AddObject(ObjectInfo info) {
+  const std::string error = InfoError(info);
+  if (!error.empty()) throw std::invalid_argument("FeatureDatabase::AddObject: " + error);
+  info_.push_back(std::move(info));
+  return objects_++;
+}
+
+const ObjectInfo& FeatureDatabase::Info(int k) const {
+  if (k < 0 || k >= objects_)
+    throw std::out_of_range("FeatureDatabase: object " + std::to_string(k) + " of " +
+                            std::to_string(objects_));
+  return info_[std::size_t(k)];
+}
+
+std::string FeatureDatabase::DisplayName(int k) const {
+  const std::string& name = Info(k).name;
+  return name.empty() ? "object " + std::to_string(k) : name;
+}
 
 void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
                                   const std::vector<Eigen::Vector3d>& positions,
@@ -29,12 +62,13 @@ void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
   if (descriptors.empty()) return;
   if (descriptors.type() != CV_32FC1 ||
       (!descriptors_.empty() && descriptors.cols != descriptors_.cols))
-    throw std::invalid_argument("FeatureDatabase::AddFeatures: descriptors must be CV_32F rows of "
-                                "the database's width");
+    throw std::invalid_argument(
+        "FeatureDatabase::AddFeatures: descriptors must be CV_32F rows of "
+        "the database's width");
   if (!positions.empty() && int(positions.size()) != descriptors.rows)
-    throw std::invalid_argument("FeatureDatabase::AddFeatures: " +
-                                std::to_string(positions.size()) + " positions for " +
-                                std::to_string(descriptors.rows) + " descriptors");
+    throw std::invalid_argument(
+        "FeatureDatabase::AddFeatures: " + std::to_string(positions.size()) + " positions for " +
+        std::to_string(descriptors.rows) + " descriptors");
   if (!std::all_of(keypoints.begin(), keypoints.end(), Valid))
     throw std::invalid_argument(
         "FeatureDatabase::AddFeatures: a keypoint angle outside [0, 360) "
@@ -46,9 +80,9 @@ void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
   descriptors_.push_back(descriptors);
   for (int i = 0; i < descriptors.rows; ++i) {
     n_.push_back({{object, 1}});  // eq. 5.6, 5.7
-    positions_.push_back(positions.empty() ? Eigen::Vector3d::Constant(
-                                                 std::numeric_limits<double>::quiet_NaN())
-                                           : positions[std::size_t(i)]);
+    positions_.push_back(positions.empty()
+                             ? Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN())
+                             : positions[std::size_t(i)]);
     keypoints_.push_back(keypoints.empty() ? LearntKeypoint() : keypoints[std::size_t(i)]);
   }
 }
@@ -56,7 +90,8 @@ void FeatureDatabase::AddFeatures(const cv::Mat& descriptors, int object,
 FeatureDatabase FeatureDatabase::FromParts(int objects, const cv::Mat& descriptors,
                                            const Counts& counts,
                                            const std::vector<Eigen::Vector3d>& positions,
-                                           const std::vector<LearntKeypoint>& keypoints) {
+                                           const std::vector<LearntKeypoint>& keypoints,
+                                           const std::vector<ObjectInfo>& info) {
   const auto fail = [](const std::string& what) {
     throw std::invalid_argument("feature database: " + what);
   };
@@ -86,7 +121,13 @@ FeatureDatabase FeatureDatabase::FromParts(int objects, const cv::Mat& descripto
              std::to_string(object) + " of " + std::to_string(objects));
   }
   if (!descriptors.empty() && !cv::checkRange(descriptors)) fail("a descriptor is not finite");
+  if (!info.empty() && info.size() != std::size_t(objects))
+    fail(std::to_string(objects) + " objects, " + std::to_string(info.size()) + " names");
+  for (std::size_t k = 0; k < info.size(); ++k)
+    if (const std::string error = InfoError(info[k]); !error.empty())
+      fail("object " + std::to_string(k) + ": " + error);
   FeatureDatabase db;
+  db.info_ = info.empty() ? std::vector<ObjectInfo>(std::size_t(objects)) : info;
   db.objects_ = objects;
   db.descriptors_ = descriptors.clone();
   db.n_ = counts;

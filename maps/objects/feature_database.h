@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,6 +24,16 @@
 #include "maps/objects/ratio_matches.h"
 
 namespace novelty::objects {
+
+/// What the database knows of an object besides its features (beyond the thesis, whose objects
+/// are numbers): a name, and for an object learnt from a photo the outline of its pixels in the
+/// photo's plane — its features then lie in that plane (z = 0, metres), and a recognition is
+/// verified by a homography (planar_object_verification.h) that maps the outline into the image.
+struct ObjectInfo {
+  std::string name;                      ///< empty: unnamed (DisplayName gives "object k")
+  std::vector<Eigen::Vector2d> outline;  ///< empty: learnt in the world, features at 3-D places
+  bool planar() const { return !outline.empty(); }
+};
 
 class FeatureDatabase {
  public:
@@ -36,8 +47,14 @@ class FeatureDatabase {
   int features() const { return descriptors_.rows; }
   const cv::Mat& descriptors() const { return descriptors_; }
 
-  /// A new object class v (eq. 5.5 decided that one is needed); returns its index.
-  int AddObject() { return objects_++; }
+  /// A new object class v (eq. 5.5 decided that one is needed); returns its index. Throws
+  /// std::invalid_argument for a name with a control character or longer than kMaxNameLength,
+  /// or an outline of fewer than 3 or more than kMaxOutline points or with a non-finite one.
+  int AddObject(ObjectInfo info = {});
+  static constexpr std::size_t kMaxNameLength = 200, kMaxOutline = 64;
+  const ObjectInfo& Info(int k) const;
+  /// The name, or "object k" for an unnamed object.
+  std::string DisplayName(int k) const;
   /// Adds the rows of `descriptors` (CV_32F, the database's width) as features learnt on
   /// `object` (eq. 5.6, 5.7), with their 3-D positions (world frame, where the object stood when
   /// they were learnt; NaN or none given: unknown) and their keypoints' orientation and metric
@@ -77,20 +94,23 @@ class FeatureDatabase {
   using Counts = std::vector<std::vector<std::pair<int, int>>>;
   const Counts& counts() const { return n_; }
   /// A database from what a saved one held (`keypoints` empty: all unknown, as in files written
-  /// before they were kept). Throws std::invalid_argument naming what is inconsistent (widths,
-  /// counts per feature, objects out of range, counts < 1, a keypoint count that is not the
-  /// feature count, keypoints as AddFeatures refuses).
+  /// before they were kept; `info` empty: every object unnamed). Throws std::invalid_argument
+  /// naming what is inconsistent (widths, counts per feature, objects out of range, counts < 1, a
+  /// keypoint or info count that is not the feature or object count, keypoints as AddFeatures
+  /// refuses, info as AddObject refuses).
   static FeatureDatabase FromParts(int objects, const cv::Mat& descriptors, const Counts& counts,
                                    const std::vector<Eigen::Vector3d>& positions,
-                                   const std::vector<LearntKeypoint>& keypoints = {});
+                                   const std::vector<LearntKeypoint>& keypoints = {},
+                                   const std::vector<ObjectInfo>& info = {});
 
  private:
   void CheckFeature(int h) const;
 
-  cv::Mat descriptors_;                               // DF, one row per feature
-  Counts n_;                                          // per feature: (object, n_{h,k} > 0)
-  std::vector<Eigen::Vector3d> positions_;            // per feature, NaN unknown
-  std::vector<LearntKeypoint> keypoints_;             // per feature, NaN unknown
+  cv::Mat descriptors_;                     // DF, one row per feature
+  Counts n_;                                // per feature: (object, n_{h,k} > 0)
+  std::vector<Eigen::Vector3d> positions_;  // per feature, NaN unknown
+  std::vector<LearntKeypoint> keypoints_;   // per feature, NaN unknown
+  std::vector<ObjectInfo> info_;            // per object
   int objects_ = 0;
 };
 

@@ -35,8 +35,12 @@ struct VerifiedPose {
   /// that agrees with more; `inliers` is their number. Empty otherwise.
   std::vector<int> inlier_pairs;
   /// The object's frame in the camera's (maps object points into camera coordinates); identity
-  /// unless verified.
+  /// unless verified. For an object learnt from a photo, from the homography and the camera's
+  /// intrinsics, at the scale its photo was learnt at.
   Eigen::Isometry3d T_cam_object = Eigen::Isometry3d::Identity();
+  /// An object learnt from a photo (planar_object_verification.h): its plane (x, y, 1) → the
+  /// image's pixels; zero for other objects or unless a homography was found.
+  Eigen::Matrix3d image_from_plane = Eigen::Matrix3d::Zero();
 };
 
 /// Pairs: `points_object[i]` (its 3-D place; NaN: unknown, left out) seen at `pixels[i]` by

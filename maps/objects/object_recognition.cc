@@ -1,9 +1,14 @@
 #include "maps/objects/object_recognition.h"
 
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core/eigen.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "maps/objects/planar_object_verification.h"
 
 namespace novelty::objects {
 
@@ -34,6 +39,63 @@ int DistinctPlaces(const std::vector<RatioMatch>& matches, const std::vector<int
   return int(counted.size());
 }
 
+// The pose of a verified planar object in the camera, from its inlier pairs (OpenCV's IPPE, made
+// for points on a plane): the photo's plane is the object's frame, z = 0.
+Eigen::Isometry3d PlanarPose(const std::vector<Eigen::Vector2d>& plane,
+                             const std::vector<cv::Point2f>& pixels,
+                             const std::vector<int>& inliers, const core::PinholeCamera& camera) {
+  std::vector<cv::Point3f> points;
+  std::vector<cv::Point2f> image;
+  for (int i : inliers) {
+    points.emplace_back(float(plane[std::size_t(i)].x()), float(plane[std::size_t(i)].y()), 0.f);
+    image.push_back(pixels[std::size_t(i)]);
+  }
+  const cv::Matx33d k(camera.fx, 0, camera.cx, 0, camera.fy, camera.cy, 0, 0, 1);
+  cv::Mat rvec, tvec;
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  if (!cv::solvePnP(points, image, k, cv::noArray(), rvec, tvec, false, cv::SOLVEPNP_IPPE))
+    return t;
+  cv::Mat r;
+  cv::Rodrigues(rvec, r);
+  Eigen::Matrix3d re;
+  Eigen::Vector3d te;
+  cv::cv2eigen(r, re);
+  cv::cv2eigen(tvec, te);
+  t.linear() = re;
+  t.translation() = te;
+  return t;
+}
+
+// VerifyObjectMatches for an object learnt from a photo: a homography instead of a 3-D pose.
+VerifiedPose VerifyPlanarMatches(const FeatureDatabase& database,
+                                 const std::vector<RatioMatch>& matches,
+                                 const std::vector<cv::KeyPoint>& keypoints, int object,
+                                 const core::PinholeCamera& camera,
+                                 const PoseVerificationOptions& options) {
+  std::vector<Eigen::Vector2d> plane;
+  std::vector<cv::Point2f> pixels;
+  std::vector<int> used;
+  for (std::size_t i = 0; i < matches.size(); ++i) {
+    const RatioMatch& m = matches[i];
+    if (database.MostProbableObject(m.reference) != object) continue;
+    plane.push_back(database.Position(m.reference).head<2>());
+    pixels.push_back(keypoints.at(std::size_t(m.candidate)).pt);
+    used.push_back(int(i));
+  }
+  const VerifiedHomography h =
+      VerifyPlanarObject(plane, pixels, database.Info(object).outline, options);
+  VerifiedPose pose;
+  pose.pairs = h.pairs;
+  pose.inliers = h.inliers;
+  pose.image_from_plane = h.image_from_plane;
+  for (int i : h.inlier_pairs) pose.inlier_pairs.push_back(used[std::size_t(i)]);
+  if (!h.verified) return pose;
+  pose.inliers = DistinctPlaces(matches, pose.inlier_pairs, keypoints, options.reprojection_px);
+  pose.verified = pose.inliers >= options.min_inliers;
+  if (pose.verified) pose.T_cam_object = PlanarPose(plane, pixels, h.inlier_pairs, camera);
+  return pose;
+}
+
 }  // namespace
 
 VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
@@ -41,6 +103,8 @@ VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
                                  const std::vector<cv::KeyPoint>& keypoints, int object,
                                  const core::PinholeCamera& camera,
                                  const PoseVerificationOptions& options) {
+  if (database.Info(object).planar())
+    return VerifyPlanarMatches(database, matches, keypoints, object, camera, options);
   std::vector<Eigen::Vector3d> places;
   std::vector<cv::Point2f> pixels;
   std::vector<int> used;  // per pair, its index in `matches`

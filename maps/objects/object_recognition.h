@@ -35,7 +35,8 @@ struct FrameRecognition {
 /// counts the agreeing pairs that are separate evidence: each database feature once, and
 /// keypoints more than 2·reprojection_px apart (nearer, two could be the image of one projected
 /// point); the object is verified only if that count reaches min_inliers. `inlier_pairs` index
-/// `matches`.
+/// `matches`. An object learnt from a photo (ObjectInfo::planar) is verified by a homography
+/// instead (planar_object_verification.h), and its pose then comes from the homography's inliers.
 VerifiedPose VerifyObjectMatches(const FeatureDatabase& database,
                                  const std::vector<RatioMatch>& matches,
                                  const std::vector<cv::KeyPoint>& keypoints, int object,

@@ -4,7 +4,10 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "core/frame_stem.h"
 #include "sensors/dataset/rgbd_importer.h"
+#include "sensors/rawlog/camera_pose_observation.h"
+#include "sensors/rawlog/rawlog_output.h"
 #include "sensors/rawlog/rgbd_observation.h"
 
 namespace novelty::sensors {
@@ -60,15 +63,11 @@ std::string FixedCameraFolder::name(int k) const {
   return p.substr(p.find_last_of('/') + 1);
 }
 
-cv::Mat FixedCameraFolder::Rgb(int k) const {
-  const std::string& path = listing_.images.at(std::size_t(k));
+cv::Mat ReadImageRgb8(const std::string& path, long long max_pixels,
+                      const std::function<void(const cv::Size&)>& check_size) {
   cv::Mat image;
-  const cv::Size size = SizeOf(path, options_.max_pixels, &image);
-  if (size.width != camera_.width || size.height != camera_.height)
-    throw std::runtime_error(path + " is " + std::to_string(size.width) + "x" +
-                             std::to_string(size.height) + ", " + name(0) + " " +
-                             std::to_string(camera_.width) + "x" + std::to_string(camera_.height) +
-                             ": a fixed camera's images share one size");
+  const cv::Size size = SizeOf(path, max_pixels, &image);
+  if (check_size) check_size(size);
   if (image.empty()) image = ReadFolderImage(path);
   if (image.size() != size)
     throw std::runtime_error(path + ": decodes to another size than its header says");
@@ -77,8 +76,42 @@ cv::Mat FixedCameraFolder::Rgb(int k) const {
   return image;
 }
 
+cv::Mat FixedCameraFolder::Rgb(int k) const {
+  const std::string& path = listing_.images.at(std::size_t(k));
+  return ReadImageRgb8(path, options_.max_pixels, [&](const cv::Size& size) {
+    if (size.width != camera_.width || size.height != camera_.height)
+      throw std::runtime_error(
+          path + " is " + std::to_string(size.width) + "x" + std::to_string(size.height) + ", " +
+          name(0) + " " + std::to_string(camera_.width) + "x" + std::to_string(camera_.height) +
+          ": a fixed camera's images share one size");
+  });
+}
+
 mrpt::obs::CObservation3DRangeScan FixedCameraFolder::Observation(int k) const {
   return MakeRgbdObservation(double(k), Rgb(k), depth_, camera_, HandHeldMount());
+}
+
+RgbdImportResult ImportFixedCameraFolder(const FixedCameraFolder& folder, const std::string& path,
+                                         const RgbdImportOptions& o) {
+  const int last = LastImportedFrame(o, folder.size());
+  const int total = (last - o.first) / o.every + 1;
+  RawlogOutput out(path);
+  RgbdImportResult r;
+  const Eigen::Isometry3d mount = HandHeldMount();
+  const double known =
+      double(cv::countNonZero(folder.depth() > 0)) / double(folder.depth().total());
+  for (int k = o.first; k <= last; k += o.every) {
+    const double time = double(k);
+    out.Write(MakeCameraPoseObservation(time, Eigen::Isometry3d::Identity(), mount, "POSE_DATASET",
+                                        0.0, 0.0));
+    out.WriteRgbd(time, folder.Rgb(k - 1), folder.depth(), folder.camera(), mount,
+                  core::FrameStem(k));
+    ++r.frames, ++r.posed;
+    if (o.progress) o.progress(r.frames, total);
+  }
+  out.Close();
+  r.depth_coverage = known;
+  return r;
 }
 
 }  // namespace novelty::sensors

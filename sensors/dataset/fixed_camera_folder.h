@@ -14,6 +14,7 @@
 
 #include <mrpt/obs/CObservation3DRangeScan.h>
 
+#include <functional>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -21,8 +22,16 @@
 #include "core/pinhole_camera.h"
 #include "sensors/dataset/image_header.h"
 #include "sensors/dataset/lighting_folder_reader.h"
+#include "sensors/dataset/rgbd_importer.h"
 
 namespace novelty::sensors {
+
+/// One image file as 8-bit R G B (16 bits ÷ 257, grey repeated), its size checked against
+/// `max_pixels` from the header before decoding where the format allows (PNG, JPEG, BMP) and
+/// handed to `check_size` (if given) before it is decoded. Throws std::runtime_error naming the
+/// file.
+cv::Mat ReadImageRgb8(const std::string& path, long long max_pixels = kDefaultMaxImagePixels,
+                      const std::function<void(const cv::Size&)>& check_size = {});
 
 struct FixedCameraOptions {
   LightingFolderOptions pick;  ///< which image files are frames
@@ -60,5 +69,14 @@ class FixedCameraFolder {
   core::PinholeCamera camera_;
   cv::Mat depth_;
 };
+
+/// Writes `folder`'s images (options.first…last, every k-th; their max_pixels is the folder's) to
+/// `rawlog` as rgbd_importer.h writes a sequence: per image a CObservationRobotPose
+/// "POSE_DATASET" at the origin and a CObservation3DRangeScan with the plane as depth, so that
+/// novelty-run, novelty-illumination-map (a lighting per frame: RAWLOG:each) and MRPT's tools take
+/// it. Nothing is published when an image cannot be read. Throws std::runtime_error naming the
+/// file, std::invalid_argument for a bad option.
+RgbdImportResult ImportFixedCameraFolder(const FixedCameraFolder& folder, const std::string& rawlog,
+                                         const RgbdImportOptions& options = {});
 
 }  // namespace novelty::sensors

@@ -61,16 +61,19 @@ Eigen::Isometry3d HandHeldMount() {
   return m;
 }
 
-RgbdImportResult ImportRgbdSequence(const RgbdSequence& s, const std::string& path,
-                                    const RgbdImportOptions& o) {
-  const int n = int(s.frames.size());
+int LastImportedFrame(const RgbdImportOptions& o, int n) {
   core::CheckInRange(o.first, 1, n, "first frame");
   core::CheckInRange(o.last, 0, n, "last frame");
   core::CheckInRange(o.every, 1, 1000000, "every");
+  if (o.last && o.last < o.first) throw std::invalid_argument("last frame is before the first");
+  return o.last ? o.last : n;
+}
+
+RgbdImportResult ImportRgbdSequence(const RgbdSequence& s, const std::string& path,
+                                    const RgbdImportOptions& o) {
+  const int last = LastImportedFrame(o, int(s.frames.size()));
   core::CheckInRange(o.max_pixels, 1, 1LL << 40, "max_pixels");
   core::CheckInRange(s.depth_scale, 1.0, 1e6, "depth_scale");
-  if (o.last && o.last < o.first) throw std::invalid_argument("last frame is before the first");
-  const int last = o.last ? o.last : n;
   const int total = (last - o.first) / o.every + 1;
   RawlogOutput out(path);
   RgbdImportResult r;

@@ -38,6 +38,10 @@ struct RgbdImportResult {
   long long beyond_range = 0;
 };
 
+/// The last frame `o` selects of `frames` (1-based), its first, last and every checked; throws
+/// std::invalid_argument naming the bad option.
+int LastImportedFrame(const RgbdImportOptions& o, int frames);
+
 /// The camera's mounting written with every frame: optical axis along the robot's x.
 Eigen::Isometry3d HandHeldMount();
 

@@ -12,6 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "mrpt_plugins/c_illumination_invariant_map.h"
+#include "sensors/dataset/fixed_camera_folder.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/scenario_runner.h"
 
@@ -202,6 +204,44 @@ TEST(IlluminationMapOnPhotos, TheMitBoxUnderNewLightsAlarmsNearTheRateAndFindsAS
               100 * square_share, 100 * (rows[2].second - rows[0].second));
   EXPECT_GE(rows[2].second - rows[0].second, 0.5 * square_share)
       << "the square is " << 100 * square_share << " % of the covered pixels";
+  fs::remove_all(dir);
+}
+
+// A lighting folder imported into a rawlog (novelty-import --layout fixed-camera) and learnt
+// with ":each" is the folder learnt directly: the same lightings, the same threshold.
+TEST(IlluminationMapOnPhotos, AnImportedLightingFolderLearntEachFrameIsTheFolder) {
+  const char* shared = std::getenv("NOVELTY_SHARED_DATA");
+  const fs::path box = fs::path(shared ? shared : "") / "mit-intrinsic" / "box";
+  if (!shared || !fs::exists(box)) GTEST_SKIP() << "mit-intrinsic/ of the shared data is absent";
+  const fs::path dir = fs::temp_directory_path() / ("mit_each_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "lamps");
+  for (const char* name :
+       {"light01.png", "light03.png", "light05.png", "light07.png", "mask.png"}) {
+    cv::Mat img = cv::imread((box / name).string(), cv::IMREAD_UNCHANGED), half;
+    cv::resize(img, half, {}, 0.5, 0.5,
+               std::string(name) == "mask.png" ? cv::INTER_NEAREST : cv::INTER_AREA);
+    ASSERT_TRUE(cv::imwrite((dir / "lamps" / name).string(), half));
+  }
+  const sensors::FixedCameraFolder folder((dir / "lamps").string());
+  EXPECT_EQ(sensors::ImportFixedCameraFolder(folder, (dir / "lamps.rawlog").string()).frames, 4);
+  IlluminationMapRunOptions o;
+  const auto tau = [&](const std::string& lightings, const std::string& map) {
+    const LearnIlluminationMapResult r = LearnIlluminationMap({lightings}, "", map, o);
+    EXPECT_EQ(r.frames, 4) << lightings;
+    mrpt_plugins::CIlluminationInvariantMap m;
+    m.LoadFromFile(map);
+    return m.map().decision_threshold();
+  };
+  const double from_folder = tau((dir / "lamps").string(), (dir / "a.map").string());
+  const double from_rawlog = tau((dir / "lamps.rawlog:each").string(), (dir / "b.map").string());
+  EXPECT_GT(from_folder, 0.0);
+  EXPECT_NEAR(from_rawlog, from_folder, 1e-3 * from_folder)
+      << "the rawlog's images are the folder's, stored as 8-bit PNGs";
+  EXPECT_TRUE(ParseRawlogPass((dir / "lamps.rawlog:2-3:each").string(), nullptr).each);
+  EXPECT_EQ(ParseRawlogPass((dir / "lamps.rawlog:2-3:each").string(), nullptr).first, 2);
+  EXPECT_FALSE(ParseRawlogPass((dir / "lamps.rawlog").string(), nullptr).each);
+  EXPECT_THROW(ParseRawlogPass((dir / "lamps").string() + ":each", nullptr), std::invalid_argument);
   fs::remove_all(dir);
 }
 

@@ -328,6 +328,52 @@ TEST(CObjectDatabaseMap, AVersionOneFileKeepsTheLearntKeypoints) {
   EXPECT_TRUE(std::isnan(reader.database().Keypoint(1).size_m));
 }
 
+// Version 2 keeps each object's name and photo outline; a version-1 file reads unnamed.
+TEST(CObjectDatabaseMap, AVersionTwoFileKeepsNamesAndOutlines) {
+  FileReader writer(MSurf());
+  writer.database().AddObject({"cereal box", {{0, 0}, {0.19, 0}, {0.19, 0.28}}});
+  writer.database().AddObject();
+  mrpt::io::CMemoryStream buffer;
+  auto out = mrpt::serialization::archiveFrom(buffer);
+  writer.serializeTo(out);
+  buffer.Seek(0);
+  auto in = mrpt::serialization::archiveFrom(buffer);
+  FileReader reader;
+  reader.serializeFrom(in, 2);
+  ASSERT_EQ(reader.database().objects(), 2);
+  EXPECT_EQ(reader.database().DisplayName(0), "cereal box");
+  EXPECT_EQ(reader.database().DisplayName(1), "object 1");
+  ASSERT_EQ(reader.database().Info(0).outline.size(), 3u);
+  EXPECT_EQ(reader.database().Info(0).outline[2].y(), 0.28);
+  EXPECT_FALSE(reader.database().Info(1).planar());
+  buffer.Seek(0);
+  auto in1 = mrpt::serialization::archiveFrom(buffer);
+  FileReader old;
+  old.serializeFrom(in1, 1);
+  EXPECT_EQ(old.database().DisplayName(0), "object 0");
+}
+
+// A name claiming more bytes than any name may hold is refused before it is allocated.
+TEST(CObjectDatabaseMap, ACorruptNameLengthIsAMapFileError) {
+  mrpt::io::CMemoryStream buffer;
+  auto out = mrpt::serialization::archiveFrom(buffer);
+  ObjectDatabaseMapConfig::Table().Write(out, MSurf());
+  out << int32_t(1) << int32_t(0) << int32_t(0);  // one object, no features
+  for (double v : {0.0, 0.0, 0.7}) out << v;      // where it was learnt
+  out << uint32_t(4000000000u);                   // its name's length
+  buffer.Seek(0);
+  auto in = mrpt::serialization::archiveFrom(buffer);
+  FileReader reader;
+  try {
+    reader.serializeFrom(in, 2);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("an object name of 4000000000 characters"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // A map saved before extraction_margin existed learnt on the whole frame: read, it goes on so;
 // a map saved now keeps its margin.
 TEST(CObjectDatabaseMap, AFileWithoutTheMarginGoesOnExtractingOnTheWholeFrame) {

@@ -46,7 +46,8 @@ TEST(MapFormats, TheCurrentVersionIsTheFullLayout) {
     EXPECT_TRUE(f.positional_keys.empty()) << c;
     EXPECT_FALSE(f.raw_planes) << c;
     EXPECT_EQ(f.encoding, full.encoding) << c;
-    EXPECT_TRUE(f.learnt_keypoints && f.texture_tails && f.decision_threshold) << c;
+    EXPECT_TRUE(f.learnt_keypoints && f.texture_tails && f.decision_threshold && f.object_info)
+        << c;
   }
 }
 
@@ -61,6 +62,8 @@ TEST(MapFormats, OlderViewMapsDifferAsDocumented) {
   EXPECT_FALSE(MapFormatOf("CAppearanceMap", 3).raw_planes);
   EXPECT_EQ(MapFormatOf("CAppearanceMap", 3).encoding, views::PlaneEncoding::kShuffled);
   EXPECT_FALSE(MapFormatOf("CObjectDatabaseMap", 0).learnt_keypoints);
+  EXPECT_FALSE(MapFormatOf("CObjectDatabaseMap", 1).object_info);
+  EXPECT_TRUE(MapFormatOf("CObjectDatabaseMap", 1).learnt_keypoints);
   EXPECT_FALSE(MapFormatOf("CIlluminationInvariantMap", 0).texture_tails);
   EXPECT_TRUE(MapFormatOf("CIlluminationInvariantMap", 1).texture_tails);
   EXPECT_FALSE(MapFormatOf("CIlluminationInvariantMap", 1).decision_threshold);
@@ -92,7 +95,7 @@ TEST(MapFormats, ANewerVersionIsAnErrorNamingBoth) {
     MapFormatOf("CObjectDatabaseMap", 7);
     FAIL();
   } catch (const std::runtime_error& e) {
-    EXPECT_STREQ(e.what(), "map file: format version 7, newer than this program's (1)");
+    EXPECT_STREQ(e.what(), "map file: format version 7, newer than this program's (2)");
   }
   EXPECT_THROW(MapFormatOf("COccupancyGridMap2D", 0), std::logic_error);
 }
