@@ -5,7 +5,7 @@
 //       [--camera fr1|fr2|fr3|icl-nuim|7scenes | --camera-file FILE | --fx FX --fy FY --cx CX
 //        --cy CY]
 //       [--depth-scale S] [--max-time-difference 0.02] [--first N] [--last N] [--every K]
-//       [--max-pixels N] [--include GLOB ...] [--exclude GLOB ...]
+//       [--max-pixels N] [--poses auto|dataset|visual] [--include GLOB ...] [--exclude GLOB ...]
 //
 // DIR is a TUM RGB-D sequence (rgb.txt, depth.txt, groundtruth.txt), an ICL-NUIM folder (color/,
 // depth/, pose.txt), a 7-Scenes sequence (frame-NNNNNN.{color,depth}.png, .pose.txt), or with
@@ -13,12 +13,15 @@
 // frames, or the lightings of one viewpoint; mask.png limits the pixels, --include/--exclude pick
 // the files). OUT gets one CObservation3DRangeScan per frame with external images in OUT_Images/,
 // and a CObservationRobotPose "POSE_DATASET" before each frame the dataset gives a pose for (a
-// fixed camera: the origin, its depth a plane): `novelty-run --rawlog OUT` plays it,
+// fixed camera: the origin, its depth a plane), or "POSE_VO" from visual odometry
+// (sensors/localization/rgbd_odometry.h) for a sequence without poses or with --poses visual:
+// `novelty-run --rawlog OUT` plays it,
 // `novelty-illumination-map --lighting OUT:each` learns a lighting per frame, rawlog-edit and
 // RawLogViewer open it. Nothing is written when the import fails.
 #include <tclap/CmdLine.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -130,6 +133,10 @@ struct Flags {
         every("", "every", "Every K-th frame", false, 1, "K", cmd),
         max_pixels("", "max-pixels", "Largest image accepted (pixels, read from the header)", false,
                    sensors::RgbdImportOptions().max_pixels, "N", cmd),
+        poses("", "poses",
+              "auto (the dataset's; visual odometry for a sequence without any), dataset or "
+              "visual (OpenCV's RGB-D odometry)",
+              false, "auto", "SOURCE", cmd),
         include("", "include", "fixed-camera: only images matching GLOB", false, "GLOB", cmd),
         exclude("", "exclude", "fixed-camera: not images matching GLOB", false, "GLOB", cmd) {}
   TCLAP::UnlabeledValueArg<std::string> in;
@@ -137,6 +144,7 @@ struct Flags {
   TCLAP::ValueArg<double> fx, fy, cx, cy, scale, max_dt;
   TCLAP::ValueArg<int> first, last, every;
   TCLAP::ValueArg<long long> max_pixels;
+  TCLAP::ValueArg<std::string> poses;
   TCLAP::MultiArg<std::string> include, exclude;
 };
 
@@ -154,6 +162,11 @@ void CheckFlags(const Flags& f) {
   const std::string l = f.layout.getValue();
   CheckFlag(l == "auto" || l == "tum" || l == "icl-nuim" || l == "7scenes" || l == "fixed-camera",
             "--layout must be auto, tum, icl-nuim, 7scenes or fixed-camera");
+  const std::string p = f.poses.getValue();
+  CheckFlag(p == "auto" || p == "dataset" || p == "visual",
+            "--poses must be auto, dataset or visual");
+  CheckFlag(l != "fixed-camera" || !f.poses.isSet(),
+            "a fixed camera stays at the origin: no --poses");
   CheckFlag(l == "fixed-camera" || !(f.include.isSet() || f.exclude.isSet()),
             "--include and --exclude pick the images of --layout fixed-camera");
   CheckFlag(l != "fixed-camera" ||
@@ -199,6 +212,14 @@ void ImportSequence(const Flags& f, const sensors::RgbdImportOptions& io) {
       s.camera.fx, s.camera_source.c_str(), s.unmatched_rgb, s.unposed, r.frames, r.posed,
       100 * r.depth_coverage, r.beyond_range, double(sensors::kRgbdMaxDepth),
       f.out.getValue().c_str());
+  if (r.visual_odometry)
+    std::printf("poses from visual odometry (POSE_VO): %d frames placed, %d lost%s\n", r.posed,
+                r.odometry_lost,
+                std::isnan(r.odometry_rms_error)
+                    ? ""
+                    : (", " + std::to_string(int(std::lround(1000 * r.odometry_rms_error))) +
+                       " mm RMS from the dataset's")
+                          .c_str());
 }
 
 int Run(int argc, char** argv) {
@@ -217,6 +238,9 @@ int Run(int argc, char** argv) {
   sensors::RgbdImportOptions io;
   io.first = f.first.getValue(), io.last = f.last.getValue(), io.every = f.every.getValue();
   io.max_pixels = f.max_pixels.getValue();
+  io.poses = f.poses.getValue() == "visual"    ? sensors::ImportPoses::kVisual
+             : f.poses.getValue() == "dataset" ? sensors::ImportPoses::kDataset
+                                               : sensors::ImportPoses::kAuto;
   std::optional<apps::Progress> progress;
   io.progress = [&](int done, int total) {
     if (!progress) progress.emplace("[novelty-import] frames", total);

@@ -1,7 +1,10 @@
 #include "sensors/dataset/rgbd_importer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <stdexcept>
 
 #include "core/frame_stem.h"
@@ -53,6 +56,13 @@ int DropDepthBeyondRange(cv::Mat& depth) {
   return n;
 }
 
+// Visual odometry when asked, or for a sequence that gives no pose at all.
+bool UseOdometry(const RgbdSequence& s, const RgbdImportOptions& o) {
+  if (o.poses != ImportPoses::kAuto) return o.poses == ImportPoses::kVisual;
+  return std::none_of(s.frames.begin(), s.frames.end(),
+                      [](const RgbdSequenceFrame& f) { return f.T_world_cam.has_value(); });
+}
+
 }  // namespace
 
 Eigen::Isometry3d HandHeldMount() {
@@ -77,16 +87,32 @@ RgbdImportResult ImportRgbdSequence(const RgbdSequence& s, const std::string& pa
   const int total = (last - o.first) / o.every + 1;
   RawlogOutput out(path);
   RgbdImportResult r;
-  double known = 0.0, pixels = 0.0;
+  double known = 0.0, pixels = 0.0, squared_error = 0.0;
+  int compared = 0;
   const Eigen::Isometry3d mount = HandHeldMount();
+  std::optional<RgbdOdometry> odometry;
+  r.visual_odometry = UseOdometry(s, o);
+  if (r.visual_odometry)
+    odometry.emplace(
+        s.camera, o.odometry,
+        s.frames[std::size_t(o.first - 1)].T_world_cam.value_or(Eigen::Isometry3d::Identity()));
   for (int k = o.first; k <= last; k += o.every) {
     const RgbdSequenceFrame& f = s.frames[std::size_t(k - 1)];
     cv::Mat rgb, depth;
     ReadFrame(s, f, o.max_pixels, rgb, depth);
     r.beyond_range += DropDepthBeyondRange(depth);
-    if (f.T_world_cam) {
-      out.Write(
-          MakeCameraPoseObservation(f.time, *f.T_world_cam, mount, "POSE_DATASET", 0.001, 0.002));
+    std::optional<Eigen::Isometry3d> pose = f.T_world_cam;
+    if (odometry) {
+      pose = odometry->Track(rgb, depth, nullptr);
+      r.odometry_lost += !pose;
+      if (pose && f.T_world_cam) {
+        squared_error += (pose->translation() - f.T_world_cam->translation()).squaredNorm();
+        ++compared;
+      }
+    }
+    if (pose) {
+      out.Write(MakeCameraPoseObservation(f.time, *pose, mount,
+                                          odometry ? "POSE_VO" : "POSE_DATASET", 0.001, 0.002));
       ++r.posed;
     }
     out.WriteRgbd(f.time, rgb, depth, s.camera, mount, core::FrameStem(k));
@@ -97,6 +123,7 @@ RgbdImportResult ImportRgbdSequence(const RgbdSequence& s, const std::string& pa
   }
   out.Close();
   r.depth_coverage = pixels > 0 ? known / pixels : 0.0;
+  r.odometry_rms_error = compared ? std::sqrt(squared_error / compared) : std::nan("");
   return r;
 }
 

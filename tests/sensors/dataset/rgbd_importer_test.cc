@@ -114,3 +114,64 @@ TEST(RgbdImporter, AFrameOfAnotherSizeIsNamedAndNothingIsPublished) {
 
 }  // namespace
 }  // namespace novelty::sensors
+
+namespace novelty::sensors {
+namespace {
+
+// A real sequence without its poses file (the first 8 keyframes of TUM fr3/cabinet, linked into a
+// folder of rgb.txt and depth.txt only): the importer places the frames by visual odometry
+// ("POSE_VO"), from the origin. With the poses file and ImportPoses::kVisual it starts at the
+// first true pose, and its positions stay within 5 cm RMS of motion capture over 1.2 m of path —
+// the appearance map's depth tolerance.
+TEST(RgbdImporter, ASequenceWithoutPosesIsPlacedByVisualOdometry) {
+  const char* shared = std::getenv("NOVELTY_SHARED_DATA");
+  const fs::path data = fs::path(shared ? shared : "") / "tum-fr3-cabinet";
+  if (!shared || !fs::exists(data)) GTEST_SKIP() << "tum-fr3-cabinet/ of the shared data is absent";
+  const fs::path dir =
+      fs::temp_directory_path() / ("novelty_vo_import_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "seq");
+  fs::create_directory_symlink(data / "rgb", dir / "seq" / "rgb");
+  fs::create_directory_symlink(data / "depth", dir / "seq" / "depth");
+  for (const char* list : {"rgb.txt", "depth.txt"}) {
+    std::ifstream in(data / list);
+    std::ofstream out(dir / "seq" / list);
+    int kept = 0;
+    for (std::string line; std::getline(in, line) && kept < 8;) {
+      out << line << '\n';
+      kept += line[0] != '#';
+    }
+  }
+  RgbdSequenceOptions so;
+  so.camera_name = "fr3";
+  const RgbdSequence poseless = ReadRgbdSequence((dir / "seq").string(), so);
+  ASSERT_EQ(poseless.frames.size(), 8u);
+  const RgbdImportResult r = ImportRgbdSequence(poseless, (dir / "vo.rawlog").string());
+  EXPECT_TRUE(r.visual_odometry);
+  EXPECT_EQ(r.posed, 8);
+  EXPECT_EQ(r.odometry_lost, 0);
+  EXPECT_TRUE(std::isnan(r.odometry_rms_error)) << "nothing to compare with";
+  RawlogFrameReader reader((dir / "vo.rawlog").string());
+  core::Frame f;
+  ASSERT_TRUE(reader.Next(f));
+  EXPECT_EQ(f.pose_source, "POSE_VO");
+  ASSERT_TRUE(f.T_world_cam);
+  EXPECT_LT((f.T_world_cam->matrix() - Eigen::Matrix4d::Identity()).norm(), 1e-6);
+
+  RgbdSequence posed = ReadRgbdSequence(data.string());
+  RgbdImportOptions o;
+  o.last = 8;
+  o.poses = ImportPoses::kVisual;
+  const RgbdImportResult v = ImportRgbdSequence(posed, (dir / "vo2.rawlog").string(), o);
+  std::printf("visual odometry over 8 keyframes: RMS %.1f cm from motion capture\n",
+              100 * v.odometry_rms_error);
+  EXPECT_EQ(v.odometry_lost, 0);
+  EXPECT_LT(v.odometry_rms_error, 0.05);
+  o.poses = ImportPoses::kAuto;
+  EXPECT_FALSE(ImportRgbdSequence(posed, (dir / "auto.rawlog").string(), o).visual_odometry)
+      << "the dataset's poses, where it has them";
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace novelty::sensors

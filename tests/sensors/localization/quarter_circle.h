@@ -22,6 +22,24 @@ class QuarterCircle {
         world_(s_) {
     s_.render.soft_shadow_samples = 1;
   }
+  struct RgbdFrame {
+    cv::Mat rgb, depth;  ///< R G B; metres (0: no surface)
+    core::PinholeCamera camera;
+    Eigen::Isometry3d T_world_cam;
+  };
+  // The reference camera's colour and depth and its true T_world_cam at frame k (0-based).
+  RgbdFrame Rgbd(int k) {
+    world_.AdvanceTo(k / s_.fps);
+    sim::RayScene scene;
+    world_.AddToScene(scene);
+    scene.Commit();
+    sim::RenderOptions o = s_.render;
+    o.frame = 2 * k;
+    const Eigen::Isometry3d head = world_.HeadPose();
+    sim::RenderedFrame f = sim::Render(scene, world_.CurrentLighting(), s_.camera, head, o);
+    return {f.rgb, f.depth, s_.camera, head};
+  }
+
   // The stereo pair and the true T_world_cam of the left (reference) camera at frame k (0-based).
   std::pair<StereoPair, Eigen::Isometry3d> Frame(int k) {
     const double t = k / s_.fps;
