@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kCommands[][2] = {
-    {"import", "a recorded RGB-D sequence (TUM RGB-D, ICL-NUIM, 7-Scenes) into an MRPT rawlog"},
+    {"import",
+     "an RGB-D sequence (TUM, ICL-NUIM, 7-Scenes) or a fixed camera's images into a rawlog"},
     {"sim", "simulate a scenario into an MRPT rawlog with ground truth"},
     {"run", "play a rawlog through the maps: surprise, panels, metrics, report"},
     {"insert", "a synthetic box drawn into a real RGB-D rawlog, scored against differencing"},
@@ -24,9 +25,11 @@ constexpr const char* kCommands[][2] = {
     {"poses", "camera poses from the LED tracker or visual odometry into a rawlog"},
     {"synth", "view synthesis from a rawlog or an RGB-D folder"},
     {"objects", "learn and recognise objects (thesis ch. 5)"},
+    {"learn-objects", "named objects from photos into an object database"},
+    {"find-objects", "the known objects in images or a rawlog: what, where, verified"},
     {"invariant", "the illumination-invariant image of one viewpoint (thesis 6.1-6.2)"},
     {"illumination", "illumination novelty against NGC and SCT (thesis 6.4)"},
-    {"illumination-map", "learn an illumination-invariant map from rawlogs, judge a rawlog"},
+    {"illumination-map", "learn an illumination-invariant map from rawlogs or photos, judge them"},
     {"soak", "a long run: memory and speed over time"},
     {"info", "versions of the libraries and a self-check"},
 };

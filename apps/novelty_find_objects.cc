@@ -17,6 +17,7 @@
 #include "apps/shell/output_folder.h"
 #include "apps/shell/program.h"
 #include "apps/shell/progress.h"
+#include "eval/skipped_frames.h"
 #include "experiments/object_finder_run.h"
 #include "sensors/dataset/camera_file.h"
 
@@ -66,13 +67,19 @@ int Run(int argc, char** argv) {
   const experiments::ObjectFinderRunResult r = experiments::RunObjectFinder(o, folder.path());
   if (progress) progress->Finish();
   folder.Commit();
+  if (r.skipped)
+    std::fprintf(stderr, "[novelty-find-objects] %s\n",
+                 eval::SkippedFramesSummary(r.frames + r.skipped, r.skip_reasons).c_str());
+  if (!r.stopped_by.empty())
+    std::fprintf(stderr, "[novelty-find-objects] %s ends early: %s\n", o.input.c_str(),
+                 r.stopped_by.c_str());
   std::printf("%d frames searched (%d skipped), %zu objects found", r.frames, r.skipped,
               r.objects.size());
   for (const auto& [name, s] : r.objects)
     std::printf("%s %s in %d (verified %d)", name == r.objects.begin()->first ? ":" : ",",
                 name.c_str(), s.frames, s.verified);
   std::printf("\n→ %s/found.csv\n", folder.final_path().c_str());
-  return apps::kExitOk;
+  return r.stopped_by.empty() ? apps::kExitOk : apps::kExitPartial;
 }
 
 }  // namespace

@@ -104,17 +104,17 @@ int Run(int argc, char** argv) {
   cmd.Parse(argc, argv);
   const bool learning = lighting.isSet(), judging = map_in.isSet();
   if (learning == judging)
-    throw std::invalid_argument("give either --lighting (learning) or --map-in (judging)");
+    throw apps::UsageError("give either --lighting (learning) or --map-in (judging)");
   if (learning && map_out.getValue().empty())
-    throw std::invalid_argument("learning needs --map-out");
+    throw apps::UsageError("learning needs --map-out");
   if (judging && (rawlog.getValue().empty() || out.getValue().empty()))
-    throw std::invalid_argument("judging needs --rawlog and --out");
+    throw apps::UsageError("judging needs --rawlog and --out");
   if (judging && (ini.isSet() || map_out.isSet()))
-    throw std::invalid_argument(
+    throw apps::UsageError(
         "--ini and --map-out are for learning; a judged map keeps the options it was learnt "
         "with");
   if (learning && (rawlog.isSet() || out.isSet()))
-    throw std::invalid_argument("--rawlog and --out are for judging (with --map-in)");
+    throw apps::UsageError("--rawlog and --out are for judging (with --map-in)");
   std::optional<sim::GroundTruthReader> truth;
   if (truth_dir.isSet()) truth.emplace(truth_dir.getValue());
   experiments::IlluminationMapRunOptions o;

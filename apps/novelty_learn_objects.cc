@@ -48,9 +48,13 @@ int Run(int argc, char** argv) {
                                                                   {{"extractor", "extractor"}});
   TCLAP::MultiArg<std::string> include(
       "", "include", "In a folder, only files matching GLOB are photos", false, "GLOB", cmd);
-  TCLAP::MultiArg<std::string> exclude("", "exclude", "In a folder, files matching GLOB are not",
-                                       false, "GLOB", cmd);
+  TCLAP::MultiArg<std::string> exclude(
+      "", "exclude", "In a folder, files matching GLOB are not photos", false, "GLOB", cmd);
   cmd.Parse(argc, argv);
+  if (add_to.isSet() && options.AnySet())
+    throw apps::UsageError(
+        "--add-to keeps its database's options: no --extractor, --set or "
+        "--options with it");
   if (!(scale.getValue() > 0 && scale.getValue() <= 1))
     throw apps::UsageError("--metres-per-pixel must be in (0, 1] m");
   experiments::ObjectPhotoLearningOptions o;
@@ -74,8 +78,9 @@ int Run(int argc, char** argv) {
   for (const auto& l : learnt)
     std::printf("  %s: %d features from %s\n", l.name.c_str(), l.features, l.photo.c_str());
   map.SaveToFile(out.getValue());
-  std::printf("%zu photos → %s (%d objects, %d features, %s)\n", learnt.size(),
-              out.getValue().c_str(), map.database().objects(), map.database().features(),
+  std::printf("%zu photo%s → %s (%d objects, %d features, %s)\n", learnt.size(),
+              learnt.size() == 1 ? "" : "s", out.getValue().c_str(), map.database().objects(),
+              map.database().features(),
               objects::FeatureExtractorName(map.config().map.extractor).c_str());
   return apps::kExitOk;
 }

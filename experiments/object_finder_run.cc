@@ -13,6 +13,7 @@
 #include "maps/objects/feature_extractor.h"
 #include "mrpt_plugins/c_object_database_map.h"
 #include "sensors/dataset/fixed_camera_folder.h"
+#include "sensors/rawlog/brief_message.h"
 #include "sensors/rawlog/rawlog_frame_reader.h"
 
 namespace novelty::experiments {
@@ -35,25 +36,45 @@ class FrameSource {
     }
   }
   int total() const { return rawlog_ ? 0 : int(images_.size()); }
-  int skipped() const { return rawlog_ ? rawlog_->skipped() : 0; }
+  std::vector<std::string> skip_reasons() const {
+    std::vector<std::string> all = rawlog_ ? rawlog_->skip_reasons() : skips_;
+    return all;
+  }
+  /// Why a rawlog ended before its end (truncated, corrupt); empty if it did not.
+  const std::string& stopped_by() const { return stopped_by_; }
 
-  // The next frame; false at the end. An image that cannot be read is an error naming it.
+  // The next frame; false at the end. An image that cannot be read, or a rawlog frame that
+  // cannot be decoded, is skipped and counted; a rawlog that cannot be read on stops the run.
   bool Next(core::Frame& f) {
-    if (rawlog_) return rawlog_->Next(f);
-    if (next_ >= images_.size()) return false;
-    const std::string& path = images_[next_++];
-    f = core::Frame();
-    f.index = int(next_);
-    f.label = fs::path(path).filename().string();
-    f.rgb = sensors::ReadImageRgb8(path, o_.max_pixels, [&](const cv::Size& size) {
-      if (o_.camera && (size.width != o_.camera->width || size.height != o_.camera->height))
-        throw std::runtime_error(path + " is " + std::to_string(size.width) + "x" +
-                                 std::to_string(size.height) + ", the given camera's " +
-                                 std::to_string(o_.camera->width) + "x" +
-                                 std::to_string(o_.camera->height));
-    });
-    f.camera = o_.camera ? *o_.camera : NominalCamera(f.rgb.size());
-    return true;
+    if (rawlog_) {
+      try {
+        return rawlog_->Next(f);
+      } catch (const std::exception& e) {
+        stopped_by_ = sensors::BriefMessage(e);
+        return false;
+      }
+    }
+    while (next_ < images_.size()) {
+      const std::string& path = images_[next_++];
+      f = core::Frame();
+      f.index = int(next_);
+      f.label = fs::path(path).filename().string();
+      try {
+        f.rgb = sensors::ReadImageRgb8(path, o_.max_pixels, [&](const cv::Size& size) {
+          if (o_.camera && (size.width != o_.camera->width || size.height != o_.camera->height))
+            throw std::runtime_error(path + " is " + std::to_string(size.width) + "x" +
+                                     std::to_string(size.height) + ", the given camera's " +
+                                     std::to_string(o_.camera->width) + "x" +
+                                     std::to_string(o_.camera->height));
+        });
+      } catch (const std::runtime_error& e) {
+        skips_.push_back(sensors::BriefMessage(e));
+        continue;
+      }
+      f.camera = o_.camera ? *o_.camera : NominalCamera(f.rgb.size());
+      return true;
+    }
+    return false;
   }
 
  private:
@@ -66,8 +87,9 @@ class FrameSource {
   }
   const ObjectFinderRunOptions& o_;
   std::unique_ptr<sensors::RawlogFrameReader> rawlog_;
-  std::vector<std::string> images_;
+  std::vector<std::string> images_, skips_;
   std::size_t next_ = 0;
+  std::string stopped_by_;
 };
 
 std::string Xyz(const Eigen::Vector3d& p) {
@@ -167,7 +189,14 @@ ObjectFinderRunResult RunObjectFinder(const ObjectFinderRunOptions& o, const std
     }
     if (o.progress) o.progress(r.frames, source.total());
   }
-  r.skipped = source.skipped();
+  r.skip_reasons = source.skip_reasons();
+  r.skipped = int(r.skip_reasons.size());
+  r.stopped_by = source.stopped_by();
+  if (r.frames == 0)
+    throw std::runtime_error(o.input + ": no frame could be used" +
+                             (!r.stopped_by.empty()     ? " (" + r.stopped_by + ")"
+                              : !r.skip_reasons.empty() ? " (" + r.skip_reasons.front() + ")"
+                                                        : " (no camera frame in it)"));
   std::ofstream summary(fs::path(out) / "objects.csv");
   summary << "object,frames_found,frames_verified,first_frame,last_frame\n";
   for (const auto& [name, s] : r.objects)

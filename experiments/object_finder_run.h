@@ -15,6 +15,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/pinhole_camera.h"
 #include "maps/objects/object_finder.h"
@@ -43,12 +44,15 @@ struct ObjectSightings {
 
 struct ObjectFinderRunResult {
   int frames = 0;   ///< frames searched
-  int skipped = 0;  ///< frames that could not be read (named on the console)
+  int skipped = 0;  ///< frames that could not be read (an image, a rawlog frame), skipped
+  std::vector<std::string> skip_reasons;  ///< one per skipped frame, naming it
+  /// Why the rawlog ended early (truncated or corrupt after its last frame read); empty if not.
+  std::string stopped_by;
   std::map<std::string, ObjectSightings> objects;  ///< per name found
 };
 
 /// Throws std::runtime_error naming the file: an unreadable database or input, a database
-/// without objects, an image of another size than given intrinsics.
+/// without objects, an input without a frame that could be used.
 ObjectFinderRunResult RunObjectFinder(const ObjectFinderRunOptions& options,
                                       const std::string& out_dir);
 

@@ -20,6 +20,7 @@ bool IsMaskFile(const fs::path& p) {
 // The photos of one object: the image, or the folder's images that are not masks.
 std::vector<std::string> PhotosOf(const ObjectPhotoSpec& spec,
                                   const sensors::LightingFolderOptions& pick) {
+  if (!fs::exists(spec.path)) throw std::runtime_error(spec.path + ": no such photo or folder");
   if (!fs::is_directory(spec.path)) return {spec.path};
   std::vector<std::string> photos;
   for (const std::string& p : sensors::ListImageFolder(spec.path, pick).images)
@@ -49,6 +50,9 @@ cv::Mat MaskOf(const std::string& photo, const cv::Size& size, const ObjectPhoto
           std::to_string(size.width) + "x" + std::to_string(size.height) + " photo");
     cv::Mat in_box(size, CV_8UC1, cv::Scalar(0));
     in_box(b).setTo(255);
+    if (!mask.empty() && cv::countNonZero(mask & in_box) == 0)
+      throw std::runtime_error(photo + ": the box and " + mask_file.string() +
+                               " select no common pixel");
     mask = mask.empty() ? in_box : (mask & in_box);
   }
   return mask;
@@ -78,8 +82,13 @@ ObjectPhotoSpec ParseObjectPhotoSpec(const std::string& text) {
     for (std::size_t start = 0, comma; (comma = box.find(',', start)) != std::string::npos;
          start = comma + 1)
       v.push_back(ParseInt(box.substr(start, comma - start), text));
-    if (v.size() != 4 || v[2] <= 0 || v[3] <= 0 || v[0] < 0 || v[1] < 0)
-      throw std::invalid_argument(text + ": the box must be X,Y,W,H with W, H > 0");
+    if (v.size() != 4)
+      throw std::invalid_argument(text + ": the box must be four numbers X,Y,W,H (pixels), got " +
+                                  std::to_string(v.size()));
+    if (v[0] < 0 || v[1] < 0)
+      throw std::invalid_argument(text + ": the box's corner X,Y must be >= 0");
+    if (v[2] <= 0 || v[3] <= 0)
+      throw std::invalid_argument(text + ": the box's width W and height H must be > 0");
     s.box = cv::Rect(v[0], v[1], v[2], v[3]);
     rest = rest.substr(0, at);
   }
@@ -94,6 +103,10 @@ ObjectPhotoSpec ParseObjectPhotoSpec(const std::string& text) {
     const fs::path p = fs::path(rest).lexically_normal();
     s.name = (p.filename().empty() ? p.parent_path() : p).stem().string();
   }
+  objects::ObjectInfo info;
+  info.name = s.name;
+  if (const std::string error = objects::FeatureDatabase::InfoError(info); !error.empty())
+    throw std::invalid_argument(text + ": " + error);
   return s;
 }
 

@@ -67,6 +67,14 @@ class TableFlags {
         false, "KEY=VALUE", cmd);
   }
 
+  /// Whether any of the flags, --set or --options was given.
+  bool AnySet() const {
+    for (std::size_t i = 0; i < flags_.size(); ++i)
+      if ((switches_[i] && switches_[i]->isSet()) || (values_[i] && values_[i]->isSet()))
+        return true;
+    return options_->isSet() || set_->isSet();
+  }
+
   /// The defaults with the flags and --set given on top, checked as the `.ini` is. Throws
   /// UsageError naming the flag and why.
   Config Values() const {

@@ -18,9 +18,10 @@ bool Valid(const LearntKeypoint& k) {
   return (std::isnan(k.angle_deg) || (k.angle_deg >= 0.0 && k.angle_deg < 360.0)) &&
          (std::isnan(k.size_m) || (std::isfinite(k.size_m) && k.size_m > 0.0));
 }
-// Why `info` cannot be an object's: a name that would break a CSV row or a terminal line, or an
-// outline that is no polygon; empty if it can.
-std::string InfoError(const ObjectInfo& info) {
+}  // namespace
+
+// A name that would break a CSV row or a terminal line, or an outline that is no polygon.
+std::string FeatureDatabase::InfoError(const ObjectInfo& info) {
   if (info.name.size() > FeatureDatabase::kMaxNameLength)
     return "a name of " + std::to_string(info.name.size()) + " characters";
   for (const char c : info.name)
@@ -32,8 +33,6 @@ std::string InfoError(const ObjectInfo& info) {
     if (!p.allFinite()) return "an outline point that is not finite";
   return "";
 }
-}  // namespace
-
 int FeatureDatabase::AddObject(ObjectInfo info) {
   const std::string error = InfoError(info);
   if (!error.empty()) throw std::invalid_argument("FeatureDatabase::AddObject: " + error);

@@ -52,6 +52,9 @@ class FeatureDatabase {
   /// or an outline of fewer than 3 or more than kMaxOutline points or with a non-finite one.
   int AddObject(ObjectInfo info = {});
   static constexpr std::size_t kMaxNameLength = 200, kMaxOutline = 64;
+  /// Why AddObject would refuse `info` (a name with a control character or too long, an outline
+  /// that is no polygon); empty if it would not.
+  static std::string InfoError(const ObjectInfo& info);
   const ObjectInfo& Info(int k) const;
   /// The name, or "object k" for an unnamed object.
   std::string DisplayName(int k) const;

@@ -76,11 +76,16 @@ std::vector<FoundObject> FindObjects(const FrameFeatures& features, const cv::Ma
   std::map<std::string, FoundObject> best;  // per name
   for (int k = 0; k < database.objects(); ++k) {
     const ObjectEvidence& e = r.per_object[std::size_t(k)];
-    if (!e.pose.verified && e.matches < options.min_matches) continue;
+    std::vector<int> of_k;
+    for (std::size_t i = 0; i < r.matches.size(); ++i)
+      if (database.MostProbableObject(r.matches[i].reference) == k) of_k.push_back(int(i));
+    const int places = DistinctPlaces(r.matches, of_k, r.keypoints,
+                                      options.recognition.verification.reprojection_px);
+    if (!e.pose.verified && places < options.min_matches) continue;
     FoundObject f;
     f.object = k;
     f.name = database.DisplayName(k);
-    f.matches = e.matches;
+    f.matches = places;
     f.verified = e.pose.verified;
     f.inliers = e.pose.verified ? e.pose.inliers : 0;
     f.T_cam_object = e.pose.T_cam_object;

@@ -22,15 +22,18 @@ struct ObjectFinderOptions {
   /// Matching and verification; verify is on (an object is listed as verified only if its
   /// matches agree on one pose or homography).
   ObjectRecognitionOptions recognition;
-  /// An object not verified is still listed, as a candidate, from this many matches: chance
-  /// matches of an absent object's features with the ratio test at 0.65 stay far fewer.
+  /// An object not verified is still listed, as a candidate, from this many matches at distinct
+  /// places: chance matches of an absent object's features with the ratio test at 0.65 stay
+  /// far fewer.
   int min_matches = 10;
 };
 
 struct FoundObject {
   int object = -1;   ///< the database class listed for its name
   std::string name;  ///< FeatureDatabase::DisplayName
-  int matches = 0;   ///< N_k of eq. 5.4
+  /// Its matches (eq. 5.4's N_k) at distinct places (DistinctPlaces): several database
+  /// features matching one keypoint, or keypoints of one blob, count once.
+  int matches = 0;
   bool verified = false;
   int inliers = 0;  ///< matches at distinct places that agree (VerifiedPose::inliers)
   /// In the image's pixels: a verified photo object's outline mapped by its homography;

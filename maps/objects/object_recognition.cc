@@ -12,13 +12,6 @@
 
 namespace novelty::objects {
 
-namespace {
-
-// The agreeing matches that are separate pieces of evidence: each database feature once, and a
-// keypoint only if farther than twice the pose check's tolerance from every one counted before —
-// nearer, both could be the image of one projected point. A detector finds one blob at
-// neighbouring scales, a feature may have several candidates there, and a pose that puts the
-// whole object far away collapses it onto one cluster of keypoints.
 int DistinctPlaces(const std::vector<RatioMatch>& matches, const std::vector<int>& agreeing,
                    const std::vector<cv::KeyPoint>& keypoints, double tolerance_px) {
   std::vector<cv::Point2f> counted;
@@ -38,6 +31,8 @@ int DistinctPlaces(const std::vector<RatioMatch>& matches, const std::vector<int
   }
   return int(counted.size());
 }
+
+namespace {
 
 // The pose of a verified planar object in the camera, from its inlier pairs (OpenCV's IPPE, made
 // for points on a plane): the photo's plane is the object's frame, z = 0.

@@ -30,6 +30,14 @@ struct FrameRecognition {
   std::vector<ObjectEvidence> per_object;  ///< one per database object
 };
 
+/// Of `matches[i]` for i in `agreeing`, those that are separate pieces of evidence: each
+/// database feature once, and a keypoint only if farther than 2·tolerance_px from every one
+/// counted before — nearer, both could be the image of one point. A detector finds one blob at
+/// neighbouring scales and orientations, a feature may have several candidates there, and a pose
+/// that puts the whole object far away collapses it onto one cluster of keypoints.
+int DistinctPlaces(const std::vector<RatioMatch>& matches, const std::vector<int>& agreeing,
+                   const std::vector<cv::KeyPoint>& keypoints, double tolerance_px);
+
 /// The matches of `object` among `matches` as 2-D–3-D pairs (the database features' learnt
 /// places and the keypoints' pixels), verified by VerifyObjectPose. When verified, `inliers`
 /// counts the agreeing pairs that are separate evidence: each database feature once, and

@@ -102,8 +102,9 @@ RgbdImportResult ImportFixedCameraFolder(const FixedCameraFolder& folder, const 
       double(cv::countNonZero(folder.depth() > 0)) / double(folder.depth().total());
   for (int k = o.first; k <= last; k += o.every) {
     const double time = double(k);
-    out.Write(MakeCameraPoseObservation(time, Eigen::Isometry3d::Identity(), mount, "POSE_DATASET",
-                                        0.0, 0.0));
+    // The camera where Observation(k) puts it when inserted with the robot at the origin, so that
+    // a map learnt from the folder judges the rawlog and the other way round.
+    out.Write(MakeCameraPoseObservation(time, mount, mount, "POSE_DATASET", 0.0, 0.0));
     out.WriteRgbd(time, folder.Rgb(k - 1), folder.depth(), folder.camera(), mount,
                   core::FrameStem(k));
     ++r.frames, ++r.posed;

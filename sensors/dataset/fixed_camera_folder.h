@@ -72,7 +72,8 @@ class FixedCameraFolder {
 
 /// Writes `folder`'s images (options.first…last, every k-th; their max_pixels is the folder's) to
 /// `rawlog` as rgbd_importer.h writes a sequence: per image a CObservationRobotPose
-/// "POSE_DATASET" at the origin and a CObservation3DRangeScan with the plane as depth, so that
+/// "POSE_DATASET" with the robot at the origin (the camera where Observation puts it) and a
+/// CObservation3DRangeScan with the plane as depth, so that
 /// novelty-run, novelty-illumination-map (a lighting per frame: RAWLOG:each) and MRPT's tools take
 /// it. Nothing is published when an image cannot be read. Throws std::runtime_error naming the
 /// file, std::invalid_argument for a bad option.

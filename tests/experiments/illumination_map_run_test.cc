@@ -238,6 +238,22 @@ TEST(IlluminationMapOnPhotos, AnImportedLightingFolderLearntEachFrameIsTheFolder
   EXPECT_GT(from_folder, 0.0);
   EXPECT_NEAR(from_rawlog, from_folder, 1e-3 * from_folder)
       << "the rawlog's images are the folder's, stored as 8-bit PNGs";
+  // Either map judges either form: the camera is where the folder puts it.
+  const auto coverage = [&](const std::string& map, const std::string& input) {
+    const fs::path out = dir / ("judged_" + std::to_string(getpid()));
+    fs::remove_all(out);
+    const JudgeIlluminationMapResult r = JudgeIlluminationMap(map, input, out.string(), 0, o);
+    EXPECT_EQ(r.frames, 4) << map << " judging " << input;
+    std::ifstream csv(out / "frames.csv");
+    std::string line;
+    std::getline(csv, line);
+    std::getline(csv, line);
+    return std::stod(line.substr(line.find(',') + 1));
+  };
+  const double same = coverage((dir / "a.map").string(), (dir / "lamps").string());
+  EXPECT_GT(same, 0.3) << "the box covers about 40 % of the image";
+  EXPECT_NEAR(coverage((dir / "b.map").string(), (dir / "lamps").string()), same, 1e-6);
+  EXPECT_NEAR(coverage((dir / "a.map").string(), (dir / "lamps.rawlog").string()), same, 1e-6);
   EXPECT_TRUE(ParseRawlogPass((dir / "lamps.rawlog:2-3:each").string(), nullptr).each);
   EXPECT_EQ(ParseRawlogPass((dir / "lamps.rawlog:2-3:each").string(), nullptr).first, 2);
   EXPECT_FALSE(ParseRawlogPass((dir / "lamps.rawlog").string(), nullptr).each);

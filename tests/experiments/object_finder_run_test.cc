@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "experiments/object_photo_learning.h"
@@ -122,6 +124,58 @@ TEST_F(ObjectFinderRun, ARawlogGivesThePlaceInTheWorld) {
   const cv::Rect2f b = cv::boundingRect(truth);
   EXPECT_GT(std::stod(f[11]), camera.Unproject(b.x, b.y, 0.8).x());
   EXPECT_LT(std::stod(f[11]), camera.Unproject(b.x + b.width, b.y, 0.8).x());
+}
+
+// An image that cannot be read is skipped and counted; the others are searched.
+TEST_F(ObjectFinderRun, AnUnreadableImageIsSkippedAndCounted) {
+  std::ofstream((dir_ / "frames" / "0.png").string()) << "not an image";
+  o_.input = (dir_ / "frames").string();
+  const ObjectFinderRunResult r = RunObjectFinder(o_, (dir_ / "out").string());
+  EXPECT_EQ(r.frames, 2);
+  ASSERT_EQ(r.skipped, 1);
+  EXPECT_NE(r.skip_reasons[0].find("0.png"), std::string::npos) << r.skip_reasons[0];
+  EXPECT_EQ(r.objects.count("tin"), 1u);
+}
+
+// A rawlog without camera frames is an error; one cut short keeps what was read before the cut.
+TEST_F(ObjectFinderRun, ARawlogWithoutFramesIsAnErrorACutOneEndsEarly) {
+  core::PinholeCamera camera;
+  cv::Mat rgb;
+  cv::cvtColor(with_tin_, rgb, cv::COLOR_GRAY2RGB);
+  {
+    sensors::RawlogOutput poses((dir_ / "poses.rawlog").string());
+    poses.Write(sensors::MakeCameraPoseObservation(1.0, Eigen::Isometry3d::Identity(),
+                                                   Eigen::Isometry3d::Identity(), "POSE", 0, 0));
+    poses.Close();
+    sensors::RawlogOutput two((dir_ / "two.rawlog").string());
+    for (int k = 1; k <= 2; ++k)
+      two.WriteRgbd(k, rgb, cv::Mat(240, 320, CV_32FC1, cv::Scalar(1.0f)), camera,
+                    Eigen::Isometry3d::Identity(), "00000" + std::to_string(k));
+    two.Close();
+  }
+  o_.input = (dir_ / "poses.rawlog").string();
+  try {
+    RunObjectFinder(o_, (dir_ / "out").string());
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no frame could be used (no camera frame in it)"),
+              std::string::npos)
+        << e.what();
+  }
+  // The second frame cut in half (its images stay beside the rawlog).
+  const auto size = fs::file_size(dir_ / "two.rawlog");
+  fs::copy(dir_ / "two_Images", dir_ / "cut_Images", fs::copy_options::recursive);
+  {
+    std::ifstream in(dir_ / "two.rawlog", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream((dir_ / "cut.rawlog").string(), std::ios::binary)
+        << bytes.substr(0, std::size_t(size * 3 / 4));
+  }
+  o_.input = (dir_ / "cut.rawlog").string();
+  const ObjectFinderRunResult r = RunObjectFinder(o_, (dir_ / "out2").string());
+  EXPECT_EQ(r.frames, 1);
+  EXPECT_FALSE(r.stopped_by.empty());
+  EXPECT_EQ(r.objects.count("tin"), 1u);
 }
 
 TEST_F(ObjectFinderRun, AnEmptyDatabaseIsAnErrorNamingIt) {

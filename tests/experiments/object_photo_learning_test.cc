@@ -24,8 +24,20 @@ TEST(ParseObjectPhotoSpec, NameFileAndBox) {
   EXPECT_EQ(ParseObjectPhotoSpec("photos/mugs/").name, "mugs");
   EXPECT_EQ(ParseObjectPhotoSpec("a=b=c.png").path, "b=c.png");
   for (const char* bad : {"=x.png", "cup=", "a=b@1,2,3", "a=b@1,2,0,4", "a=b@1,2,x,4",
-                          "a=b@-1,2,3,4", "a=b@1,2,3,4,5", "a=b@"})
+                          "a=b@-1,2,3,4", "a=b@1,2,3,4,5", "a=b@", "a\tb=x.png"})
     EXPECT_THROW(ParseObjectPhotoSpec(bad), std::invalid_argument) << bad;
+  const auto message = [](const std::string& spec) {
+    try {
+      ParseObjectPhotoSpec(spec);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message("a=b@-1,2,3,4").find("corner X,Y must be >= 0"), std::string::npos);
+  EXPECT_NE(message("a=b@1,2,3").find("four numbers X,Y,W,H (pixels), got 3"), std::string::npos);
+  EXPECT_NE(message("a=b@1,2,0,4").find("width W and height H must be > 0"), std::string::npos);
+  EXPECT_NE(message("a\nb=x.png").find("a name with a control character"), std::string::npos);
 }
 
 class ObjectPhotoLearning : public ::testing::Test {
@@ -88,6 +100,15 @@ TEST_F(ObjectPhotoLearning, ErrorsNameTheFile) {
   EXPECT_NE(message((dir_ / "none.png").string()).find("none.png"), std::string::npos);
   cv::imwrite((dir_ / "box.mask.png").string(), cv::Mat(10, 10, CV_8UC1, cv::Scalar(255)));
   EXPECT_NE(message((dir_ / "box.png").string()).find("box.mask.png is 10x10"), std::string::npos);
+  EXPECT_NE(message((dir_ / "nosuch").string() + "/").find("no such photo or folder"),
+            std::string::npos);
+  cv::imwrite((dir_ / "box.mask.png").string(), [] {
+    cv::Mat m(120, 160, CV_8UC1, cv::Scalar(0));
+    m(cv::Rect(100, 80, 40, 30)).setTo(255);
+    return m;
+  }());
+  EXPECT_NE(message((dir_ / "box.png").string() + "@0,0,50,50").find("select no common pixel"),
+            std::string::npos);
   fs::create_directories(dir_ / "empty");
   EXPECT_NE(message((dir_ / "empty").string()).find("no photo of empty"), std::string::npos);
 }

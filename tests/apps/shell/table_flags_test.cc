@@ -59,6 +59,25 @@ TEST(TableFlags, AnOptionsFileComesFirstAndFlagsGoOnTop) {
   EXPECT_THROW(Parse({"--options", "/nonexistent.ini"}), std::runtime_error);
 }
 
+// AnySet: whether the command line gave any of the table's options.
+TEST(TableFlags, AnySetSaysWhetherAnOptionWasGiven) {
+  const auto any = [](std::vector<std::string> args) {
+    CommandLine cmd("test", "0");
+    TableFlags<Config> flags(cmd, {{"kappa", "kappa"}, {"missing_texture", "missing-texture"}});
+    TCLAP::ValueArg<int> other("", "other", "not an option", false, 0, "N", cmd);
+    args.insert(args.begin(), "program");
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    cmd.Parse(int(argv.size()), argv.data());
+    return flags.AnySet();
+  };
+  EXPECT_FALSE(any({}));
+  EXPECT_FALSE(any({"--other", "3"}));
+  EXPECT_TRUE(any({"--kappa", "0.3"}));
+  EXPECT_TRUE(any({"--missing-texture"}));
+  EXPECT_TRUE(any({"--set", "kappa=0.3"}));
+}
+
 TEST(TableFlags, FlagsAndSetReachTheFieldsAsTheIniDoes) {
   const Config c =
       Parse({"--kappa", "0.2", "--colour", "luminance-chromaticity", "--grid", "64",
