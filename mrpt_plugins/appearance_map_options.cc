@@ -51,6 +51,10 @@ const OptionTable<AppearanceMapConfig>& AppearanceMapConfig::Table() {
             "align_to_prior", [](C & c) -> auto& { return c.map.align_to_prior; },
             "correct the pose by the small rotation aligning frame and prior (false = thesis)", 1.0,
             0.0)
+        .Add(
+            "predictive_novelty", [](C & c) -> auto& { return c.map.predictive_novelty; },
+            "also -ln p(frame | prior), nats: how unexpected, beside surprise (costs ~0.3 ms)", 1.0,
+            0.0)
         .Include(
             ViewMapOptionTable(), [](C & c) -> auto& { return c.map.views; })
         .Include(

@@ -18,6 +18,7 @@
 #include "core/interleave.h"
 #include "core/rigid_pose.h"
 #include "maps/color/ycbcr_planes.h"
+#include "maps/stats/predictive_novelty.h"
 
 namespace novelty::appearance {
 
@@ -65,7 +66,8 @@ struct FrameRows {
   std::array<float, kChannels> initial;  // the initial prior, in Channel order
   double warp_sigma_px;                  // 0 unless the prior was warped (warp_error_floor.h)
   cv::Mat observed_y;  // learn_warp_sigma: the tiles leave their rows of the frame's Y here
-  cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau, stored_depth;
+  cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau, stored_depth,
+      predictive;
 };
 
 // Working planes of one tile, reused for the tiles one task processes; prior and posterior
@@ -74,6 +76,7 @@ struct TileWork {
   std::vector<cv::Mat> x, ab_sigma, tau, post_ab_sigma, post_tau;
   cv::Mat uncovered;
   stats::ChannelPlanes channels;
+  cv::Mat log_u, log_v, offset;  // predictive novelty's logarithms (PredictiveRows)
 };
 
 // The parameter planes of one tile in Channel order.
@@ -87,6 +90,34 @@ std::array<cv::Mat*, kChannels> InChannelOrder(std::vector<cv::Mat>& ab_sigma,
 // both threads would otherwise count up and down on the same frame images' counters.
 cv::Mat RowsOf(const cv::Mat& m, const cv::Range& r) {
   return cv::Mat(r.size(), m.cols, m.type(), const_cast<uchar*>(m.ptr(r.start)), m.step[0]);
+}
+
+// Predictive novelty of a tile (stats/predictive_novelty.h): the two logarithms' arguments a
+// pixel at a time, the logarithms a plane at a time (OpenCV's vectorised cv::log).
+void PredictiveRows(const std::array<cv::Mat*, kChannels>& p0, const std::vector<cv::Mat>& x,
+                    TileWork& t, cv::Mat& out) {
+  const std::size_t n = out.total();
+  for (cv::Mat* m : {&t.log_u, &t.log_v, &t.offset}) m->create(out.size(), CV_32FC1);
+  float *u = t.log_u.ptr<float>(), *v = t.log_v.ptr<float>(), *o = t.offset.ptr<float>();
+  const float* alpha = p0[kAlpha]->ptr<float>();
+  const float *b0 = p0[kBeta]->ptr<float>(), *b1 = p0[kBeta + 1]->ptr<float>(),
+              *b2 = p0[kBeta + 2]->ptr<float>();
+  const float *t0 = p0[kTau]->ptr<float>(), *t1 = p0[kTau + 1]->ptr<float>(),
+              *t2 = p0[kTau + 2]->ptr<float>();
+  const float *s0 = p0[kSigma]->ptr<float>(), *s1 = p0[kSigma + 1]->ptr<float>(),
+              *s2 = p0[kSigma + 2]->ptr<float>();
+  const float *x0 = x[0].ptr<float>(), *x1 = x[1].ptr<float>(), *x2 = x[2].ptr<float>();
+  for (std::size_t i = 0; i < n; ++i) {  // plain loads, so that the compiler vectorises it
+    const stats::NormalGammaT<float> p[3] = {{alpha[i], b0[i], t0[i], s0[i]},
+                                             {alpha[i], b1[i], t1[i], s1[i]},
+                                             {alpha[i], b2[i], t2[i], s2[i]}};
+    const float xs[3] = {x0[i], x1[i], x2[i]};
+    stats::PredictiveLogArguments(p, xs, 3, u[i], v[i], o[i]);
+  }
+  cv::log(t.log_u, t.log_u);
+  cv::log(t.log_v, t.log_v);
+  float* result = out.ptr<float>();
+  for (std::size_t i = 0; i < n; ++i) result[i] = 0.5f * u[i] + (alpha[i] + 0.5f) * v[i] + o[i];
 }
 
 // Rows [r0, r1): prior planes from the prediction, update and surprise (eq. 4.8-4.21; α is shared
@@ -135,6 +166,11 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   cv::Mat surprise = RowsOf(f.surprise, rows);
   surprise.setTo(0.0f);
   stats::UpdateAndAccumulateSurprise(channels, surprise.ptr<float>(), surprise.total(), options);
+  cv::Mat predictive;
+  if (!f.predictive.empty()) {
+    predictive = RowsOf(f.predictive, rows);
+    PredictiveRows(p0, t.x, t, predictive);
+  }
 
   // Products: the prior's τ in RGB, its Σβ; NaN or black where not covered.
   cv::Mat expected_rgb = RowsOf(f.expected_rgb, rows), uncertainty = RowsOf(f.uncertainty, rows);
@@ -145,6 +181,8 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
     core::FillWhere(surprise, uncovered, std::numeric_limits<float>::quiet_NaN());
     core::FillWhere(expected_rgb, uncovered, cv::Scalar::all(0));
     core::FillWhere(uncertainty, uncovered, std::numeric_limits<float>::quiet_NaN());
+    if (!predictive.empty())
+      core::FillWhere(predictive, uncovered, std::numeric_limits<float>::quiet_NaN());
   }
   // The posterior as the store keeps it.
   cv::Mat stored_ab_sigma = RowsOf(f.stored_ab_sigma, rows);
@@ -245,7 +283,8 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     cv::Mat(rows, cols, CV_32FC1),
                     cv::Mat(rows, cols, CV_MAKETYPE(options_.half_precision ? CV_16F : CV_32F, 7)),
                     cv::Mat(rows, cols, CV_32FC3),
-                    cv::Mat(rows, cols, CV_32FC1)};
+                    cv::Mat(rows, cols, CV_32FC1),
+                    options_.predictive_novelty ? cv::Mat(rows, cols, CV_32FC1) : cv::Mat()};
   const int tiles = (rows + kTileRows - 1) / kTileRows;
   // Beside the tiles, when the frame was warped, one more task: the mesh plan of the frame's
   // depth, which the view the frame becomes keeps for its next warp — a moving camera warps it
@@ -280,6 +319,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
   out.surprise = f.surprise;
   out.expected_rgb = f.expected_rgb;
   out.uncertainty = f.uncertainty;
+  out.predictive = f.predictive;
   // What this frame teaches of s serves the next frame's floor, never its own.
   if (learn) LearnWarpSigma(f.observed_y, prior.value[1]);
   // The posterior at this viewpoint goes into the map (4.3's update policy).

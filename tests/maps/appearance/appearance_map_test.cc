@@ -13,13 +13,13 @@
 #include "eval/attentional_selectivity.h"
 #include "maps/appearance/differencing_map.h"
 #include "maps/stats/normal_gamma_kl.h"
-#include "tests/maps/appearance/table_clip.h"
+#include "maps/stats/predictive_novelty.h"
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/simulate_frames.h"
+#include "tests/maps/appearance/table_clip.h"
 
 namespace novelty::appearance {
 namespace {
-
 
 using Frame = sim::SimulatedFrame;
 
@@ -276,6 +276,52 @@ TEST(AppearanceMap, ConstantInputThenOneLevelGivesFiniteSurprise) {
   EXPECT_GT(y.beta, 0.99 * y.alpha / 12) << "the floor holds β at α/12";
   std::printf("one level after 10 000 constant frames: S half %.4f, float %.4f, double %.4f\n",
               step[0], step[1], truth);
+}
+
+// Predictive novelty is −ln p of the frame under the prior (stats/predictive_novelty.h): a
+// static camera's map after 50 grey frames of (120, 128, 128) in YCbCr, judging 121 and then
+// 160, against the same recursion in double; unexpected grey levels cost more.
+TEST(AppearanceMap, PredictiveNoveltyIsTheNegativeLogDensityOfTheFrameUnderThePrior) {
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(64, 48, 1.0);
+  const cv::Mat depth(48, 64, CV_32FC1, cv::Scalar(2.0f));
+  AppearanceMapOptions full;
+  full.half_precision = false;
+  EXPECT_TRUE(AppearanceMap(full)
+                  .Insert(cv::Mat(48, 64, CV_8UC3, cv::Scalar::all(9)), depth, cam,
+                          Eigen::Isometry3d::Identity())
+                  .predictive.empty())
+      << "off by default";
+  full.predictive_novelty = true;
+  AppearanceMap map(full);
+  const auto grey = [](int v) { return cv::Mat(48, 64, CV_8UC3, cv::Scalar::all(v)); };
+  for (int n = 0; n < 50; ++n) {
+    const AppearanceProducts p = map.Insert(grey(120), depth, cam, Eigen::Isometry3d::Identity());
+    if (n == 0) {
+      EXPECT_EQ(cv::countNonZero(p.predictive == p.predictive), 0) << "no prior: NaN";
+    }
+  }
+  const stats::ForgettingUpdateOptions& u = full.surprise.update;
+  stats::NormalGamma y = stats::InitialPrior(), c = stats::InitialPrior();
+  for (int n = 0; n < 50; ++n) {
+    y = stats::UpdateWithForgetting(y, 120.0, u);
+    c = stats::UpdateWithForgetting(c, 128.0, u);
+  }
+  double got[2];
+  for (int k = 0; k < 2; ++k) {
+    const double level = k == 0 ? 121.0 : 160.0;
+    AppearanceMap judge(full);
+    for (int n = 0; n < 50; ++n) judge.Insert(grey(120), depth, cam, Eigen::Isometry3d::Identity());
+    const AppearanceProducts p =
+        judge.Insert(grey(int(level)), depth, cam, Eigen::Isometry3d::Identity());
+    double lo, hi;
+    cv::minMaxLoc(p.predictive, &lo, &hi);
+    EXPECT_NEAR(lo, hi, 1e-5 * std::abs(hi)) << "every pixel saw the same";
+    const double truth =
+        stats::PredictiveNegLogDensity(y, level) + 2.0 * stats::PredictiveNegLogDensity(c, 128.0);
+    EXPECT_NEAR(hi, truth, 1e-3 * std::abs(truth)) << "grey " << level;
+    got[k] = hi;
+  }
+  EXPECT_GT(got[1], got[0] + 10.0) << "39 levels away is far less probable than 1";
 }
 
 // The expected depth is the depth of what the map has seen: on the clip, where both are known,

@@ -58,14 +58,14 @@ LitScene MakeLitScene() {
 }
 
 // Everything but the threshold from the defaults: what IlluminationMap learns with.
-struct Learnt {
+struct LearntLightings {
   ViewpointIllumination viewpoint;
   double threshold = 0.0;
   ZernikeMoments zernike{ZernikeOptions{}};
 };
 
-Learnt Learn(const std::vector<cv::Mat>& images, const cv::Mat& mask) {
-  Learnt l;
+LearntLightings Learn(const std::vector<cv::Mat>& images, const cv::Mat& mask) {
+  LearntLightings l;
   const std::vector<cv::Mat> coverage =
       mask.empty() ? std::vector<cv::Mat>{} : std::vector<cv::Mat>(images.size(), mask);
   const HeldOutNovelty held = HeldOutLightingNovelty(images, coverage, {}, {}, {}, l.zernike);
@@ -77,7 +77,7 @@ Learnt Learn(const std::vector<cv::Mat>& images, const cv::Mat& mask) {
 }
 
 // Share of `where`'s pixels (and covered by the model) whose Δ exceeds the threshold.
-double AlarmShare(const Learnt& l, const cv::Mat& image, const cv::Mat& where) {
+double AlarmShare(const LearntLightings& l, const cv::Mat& image, const cv::Mat& where) {
   const IlluminationNovelty n = DetectIlluminationNovelty(image, l.viewpoint, l.zernike);
   const cv::Mat judged = where & l.viewpoint.covered;
   return cv::countNonZero((n.novelty > l.threshold) & judged) /
@@ -88,7 +88,7 @@ TEST(LightingThreshold, NewLightingsAlarmAtAboutTheRateAndANewObjectAlarms) {
   const LitScene scene = MakeLitScene();
   std::vector<cv::Mat> training;
   for (int m = 0; m < 8; ++m) training.push_back(scene.Lit(m));
-  const Learnt l = Learn(training, {});
+  const LearntLightings l = Learn(training, {});
   const cv::Mat all(scene.reflectance.size(), CV_8U, cv::Scalar(255));
   cv::Mat object = cv::Mat::zeros(all.size(), CV_8U);
   cv::rectangle(object, cv::Rect(60, 40, 30, 25), cv::Scalar(255), cv::FILLED);
@@ -168,7 +168,7 @@ TEST(LightingThreshold, MitObjectsUnseenLightingsAlarmNearTheRate) {
     cv::Mat mask = ReadHalf(dir + "/mask.png", cv::INTER_NEAREST);
     if (mask.channels() == 3) cv::extractChannel(mask, mask, 0);
     mask = mask > 0;
-    const Learnt l = Learn({lights.begin(), lights.begin() + 8}, mask);
+    const LearntLightings l = Learn({lights.begin(), lights.begin() + 8}, mask);
     const double unseen = (AlarmShare(l, lights[8], mask) + AlarmShare(l, lights[9], mask)) / 2;
     std::cout << object << ": threshold " << l.threshold << " nats, unseen lightings "
               << 100 * unseen << " % alarms\n";
