@@ -25,6 +25,7 @@ constexpr const char* kCommands[][2] = {
     {"poses", "camera poses from the LED tracker or visual odometry into a rawlog"},
     {"synth", "view synthesis from a rawlog or an RGB-D folder"},
     {"objects", "learn and recognise objects (thesis ch. 5)"},
+    {"foreground", "a fixed camera's foreground, scored beside OpenCV's subtractors (CDnet)"},
     {"learn-objects", "named objects from photos into an object database"},
     {"find-objects", "the known objects in images or a rawlog: what, where, verified"},
     {"invariant", "the illumination-invariant image of one viewpoint (thesis 6.1-6.2)"},

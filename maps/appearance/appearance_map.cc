@@ -65,6 +65,7 @@ struct FrameRows {
   const Prediction& prior;               // its rows hold nothing until blended (BlendRows)
   std::array<float, kChannels> initial;  // the initial prior, in Channel order
   double warp_sigma_px;                  // 0 unless the prior was warped (warp_error_floor.h)
+  double hold_above_nats;                // AppearanceMapOptions::hold_above_nats
   cv::Mat observed_y;  // learn_warp_sigma: the tiles leave their rows of the frame's Y here
   cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau, stored_depth,
       predictive;
@@ -184,6 +185,11 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
     if (!predictive.empty())
       core::FillWhere(predictive, uncovered, std::numeric_limits<float>::quiet_NaN());
   }
+  // Where the frame is foreground by the hold rule, the prior stays (AppearanceMapOptions).
+  if (!predictive.empty() && std::isfinite(f.hold_above_nats)) {
+    cv::Mat hold = predictive > f.hold_above_nats;  // NaN (uncovered) compares false
+    for (int c = 0; c < kChannels; ++c) p0[c]->copyTo(*p1[c], hold);
+  }
   // The posterior as the store keeps it.
   cv::Mat stored_ab_sigma = RowsOf(f.stored_ab_sigma, rows);
   core::MergeInto(t.post_ab_sigma, stored_ab_sigma);
@@ -219,6 +225,11 @@ AppearanceMap::~AppearanceMap() = default;
 AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
     : options_(options), map_(options.views), tile_work_(std::make_unique<TileWorkPool>()) {
   options_.surprise.update.Check();
+  if (!(options_.hold_above_nats > 0.0) ||
+      (std::isfinite(options_.hold_above_nats) && !options_.predictive_novelty))
+    throw std::invalid_argument(
+        "AppearanceMapOptions: hold_above_nats must be > 0, and finite only with "
+        "predictive_novelty");
   if (!(std::isfinite(options_.warp_sigma_px) && options_.warp_sigma_px >= 0.0)) {
     throw std::invalid_argument(
         "AppearanceMapOptions: warp_sigma_px must be finite and >= 0, got " +
@@ -277,6 +288,7 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     prior,
                     {alpha0, beta0, beta0, beta0, tau0, tau0, tau0, sigma0, sigma0, sigma0},
                     warp_sigma,
+                    options_.hold_above_nats,
                     learn ? cv::Mat(rows, cols, CV_32FC1) : cv::Mat(),
                     cv::Mat(rows, cols, CV_32FC1),
                     cv::Mat(rows, cols, CV_8UC3),

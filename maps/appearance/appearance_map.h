@@ -16,6 +16,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <limits>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <vector>
@@ -50,6 +51,11 @@ struct AppearanceMapOptions {
   /// camera's foreground mask. Off by default: on the AVX-512 host it adds about 0.3 ms to a
   /// static camera's 0.45 ms frame (then slower than MOG2) and 0.5–1 ms to seven views.
   bool predictive_novelty = false;
+  /// With predictive_novelty: where a pixel's predictive novelty exceeds this (nats), the map
+  /// keeps its prior there instead of learning the frame — a fixed camera's update policy, so
+  /// that a person standing still is not absorbed into the background at once (the map adapts
+  /// to a changed pixel within a frame otherwise, eq. 4.8). Infinite: learn everywhere (thesis).
+  double hold_above_nats = std::numeric_limits<double>::infinity();
   ViewBasedMapOptions views;
 };
 

@@ -1,0 +1,171 @@
+#include "experiments/foreground_run.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <opencv2/bgsegm.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/video/background_segm.hpp>
+#include <stdexcept>
+
+#include "core/pinhole_camera.h"
+#include "maps/appearance/appearance_map.h"
+#include "sensors/dataset/cdnet_folder.h"
+#include "sensors/dataset/fixed_camera_folder.h"
+
+namespace novelty::experiments {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// One method: a frame (R G B) in, a mask (CV_8UC1, 255 foreground) out.
+class ForegroundMethodRunner {
+ public:
+  virtual ~ForegroundMethodRunner() = default;
+  virtual cv::Mat Apply(const cv::Mat& rgb) = 0;
+};
+
+class OpenCvSubtractor : public ForegroundMethodRunner {
+ public:
+  explicit OpenCvSubtractor(cv::Ptr<cv::BackgroundSubtractor> s) : s_(std::move(s)) {}
+  cv::Mat Apply(const cv::Mat& rgb) override {
+    cv::Mat bgr, mask;
+    cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
+    s_->apply(bgr, mask);
+    return mask == 255;  // MOG2 and KNN mark shadows 127: not foreground
+  }
+
+ private:
+  cv::Ptr<cv::BackgroundSubtractor> s_;
+};
+
+// The appearance map as a static camera: a nominal camera at the origin, a plane as depth.
+class NoveltyMethod : public ForegroundMethodRunner {
+ public:
+  explicit NoveltyMethod(const ForegroundRunOptions& o) : threshold_(o.threshold_nats) {
+    appearance::AppearanceMapOptions m;
+    m.predictive_novelty = true;
+    if (o.hold_foreground) m.hold_above_nats = o.threshold_nats;
+    map_ = std::make_unique<appearance::AppearanceMap>(m);
+  }
+  cv::Mat Apply(const cv::Mat& rgb) override {
+    if (depth_.size() != rgb.size()) {
+      camera_ = core::PinholeCamera::FromFov(rgb.cols, rgb.rows, 1.0);
+      depth_ = cv::Mat(rgb.size(), CV_32FC1, cv::Scalar(1.0f));
+    }
+    const appearance::AppearanceProducts p =
+        map_->Insert(rgb, depth_, camera_, Eigen::Isometry3d::Identity());
+    return p.predictive > threshold_;  // NaN (the first frame: no background yet) is not
+  }
+
+ private:
+  double threshold_;
+  std::unique_ptr<appearance::AppearanceMap> map_;
+  core::PinholeCamera camera_;
+  cv::Mat depth_;
+};
+
+std::unique_ptr<ForegroundMethodRunner> MakeMethod(const std::string& name,
+                                                   const ForegroundRunOptions& o) {
+  if (name == "novelty") return std::make_unique<NoveltyMethod>(o);
+  if (name == "mog2")
+    return std::make_unique<OpenCvSubtractor>(cv::createBackgroundSubtractorMOG2());
+  if (name == "knn") return std::make_unique<OpenCvSubtractor>(cv::createBackgroundSubtractorKNN());
+  if (name == "gsoc")
+    return std::make_unique<OpenCvSubtractor>(cv::bgsegm::createBackgroundSubtractorGSOC());
+  if (name == "cnt")
+    return std::make_unique<OpenCvSubtractor>(cv::bgsegm::createBackgroundSubtractorCNT());
+  throw std::invalid_argument("foreground method '" + name +
+                              "': not one of novelty, mog2, knn, gsoc, cnt");
+}
+
+void AddFindings(ForegroundRunResult& r) {
+  const auto find = [&](const std::string& name) -> const ForegroundMethod* {
+    for (const ForegroundMethod& m : r.methods)
+      if (m.name == name) return &m;
+    return nullptr;
+  };
+  for (const ForegroundMethod& m : r.methods) {
+    r.findings.Add(m.name + ": F-measure", eval::NumberText(m.scores.f_measure), "(reported)");
+    r.findings.Add(m.name + ": ms per frame", eval::NumberText(m.ms_per_frame), "(reported)");
+  }
+  const ForegroundMethod *ours = find("novelty"), *knn = find("knn"), *mog2 = find("mog2");
+  if (ours && knn && r.scored > 0)
+    r.findings.Add("novelty F above KNN's", eval::NumberText(ours->scores.f_measure),
+                   "> " + eval::NumberText(knn->scores.f_measure),
+                   ours->scores.f_measure > knn->scores.f_measure);
+  if (ours && mog2)
+    r.findings.Add("novelty ms per frame no more than MOG2's", eval::NumberText(ours->ms_per_frame),
+                   "<= " + eval::NumberText(mog2->ms_per_frame),
+                   ours->ms_per_frame <= mog2->ms_per_frame);
+  r.findings.Add("frames", std::to_string(r.frames));
+  r.findings.Add("scored frames", std::to_string(r.scored));
+}
+
+void WriteScores(const ForegroundRunResult& r, const fs::path& out) {
+  std::ofstream csv(out / "scores.csv");
+  csv << "method,recall,precision,f_measure,pwc,fpr,shadow_fpr,ms_per_frame\n";
+  for (const ForegroundMethod& m : r.methods)
+    csv << m.name << ',' << m.scores.recall << ',' << m.scores.precision << ','
+        << m.scores.f_measure << ',' << m.scores.pwc << ',' << m.scores.fpr << ','
+        << m.scores.shadow_fpr << ',' << m.ms_per_frame << '\n';
+  if (!csv) throw std::runtime_error((out / "scores.csv").string() + ": cannot be written");
+}
+
+}  // namespace
+
+ForegroundRunResult RunForeground(const ForegroundRunOptions& o, const std::string& out_dir) {
+  if (!(o.threshold_nats > 0)) throw std::invalid_argument("threshold_nats must be > 0");
+  const sensors::CdnetFolder folder = sensors::ReadCdnetFolder(o.folder);
+  std::vector<std::unique_ptr<ForegroundMethodRunner>> methods;
+  ForegroundRunResult r;
+  fs::create_directories(out_dir);
+  for (const std::string& name : o.methods) {
+    methods.push_back(MakeMethod(name, o));
+    r.methods.push_back({name, {}, {}, 0});
+    if (o.write_masks) fs::create_directories(fs::path(out_dir) / name);
+  }
+  const int n = o.max_frames > 0 ? std::min<int>(o.max_frames, int(folder.inputs.size()))
+                                 : int(folder.inputs.size());
+  std::vector<double> seconds(methods.size(), 0.0);
+  cv::Size size;
+  for (int k = 0; k < n; ++k) {
+    const cv::Mat rgb = sensors::ReadImageRgb8(folder.inputs[std::size_t(k)], o.max_pixels);
+    if (k == 0) size = rgb.size();
+    if (rgb.size() != size)
+      throw std::runtime_error(folder.inputs[std::size_t(k)] + ": another size than the first");
+    const int number = folder.numbers[std::size_t(k)];
+    const std::string& truth_path = folder.truths[std::size_t(k)];
+    const bool scored = folder.scored(number) && !truth_path.empty();
+    const cv::Mat truth = scored ? sensors::ReadCdnetTruth(truth_path) : cv::Mat();
+    r.scored += scored;
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      const auto start = std::chrono::steady_clock::now();
+      const cv::Mat mask = methods[m]->Apply(rgb);
+      seconds[m] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (scored) r.methods[m].counts += eval::CountCdnetFrame(mask, truth, folder.roi);
+      if (o.write_masks) {
+        char name[32];
+        std::snprintf(name, sizeof name, "bin%06d.png", number);
+        const fs::path file = fs::path(out_dir) / r.methods[m].name / name;
+        if (!cv::imwrite(file.string(), mask))
+          throw std::runtime_error(file.string() + ": cannot be written");
+      }
+    }
+    ++r.frames;
+    if (o.progress) o.progress(r.frames, n);
+  }
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    r.methods[m].scores = eval::ScoreCdnet(r.methods[m].counts);
+    r.methods[m].ms_per_frame = r.frames ? 1000 * seconds[m] / r.frames : 0;
+  }
+  AddFindings(r);
+  WriteScores(r, out_dir);
+  r.findings.WriteCsv((fs::path(out_dir) / "findings.csv").string());
+  return r;
+}
+
+}  // namespace novelty::experiments

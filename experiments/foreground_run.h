@@ -1,0 +1,58 @@
+// A fixed camera's foreground, scored the CDnet way beside OpenCV's background subtractors (issue
+// 52): every frame of a CDnet-layout folder (sensors/dataset/cdnet_folder.h) goes through the
+// appearance map as a static camera — foreground where its predictive novelty exceeds a
+// threshold (stats/predictive_novelty.h), and no learning there (hold) — and through OpenCV's
+// MOG2 and KNN (video module) and the contrib GSOC and CNT (bgsegm), in the same run, each timed
+// per frame. Masks are written as CDnet expects them (OUT/<method>/bin000001.png, 255
+// foreground); with ground truth, scores.csv gives per method recall, precision, F, PWC, FPR, the
+// false-positive rate on shadows and ms a frame (eval/cdnet_scores.h), and findings.csv holds
+// the issue's targets: our F above KNN's at no more time than MOG2's.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "eval/cdnet_scores.h"
+#include "eval/findings_table.h"
+#include "sensors/dataset/image_header.h"
+
+namespace novelty::experiments {
+
+struct ForegroundRunOptions {
+  std::string folder;  ///< CDnet layout
+  /// Foreground where −ln p(frame | background) exceeds this (nats, summed over Y, Cb, Cr): the
+  /// Bayes decision between the background model and a uniform foreground colour over the 256³
+  /// colour cube with equal priors, 3 ln 256 = 16.6 nats.
+  double threshold_nats = 3 * std::log(256.0);
+  /// The map keeps its background where the mask is set (AppearanceMapOptions::hold_above_nats);
+  /// false: it learns every pixel, as the thesis's map does.
+  bool hold_foreground = true;
+  /// Methods to run, of "novelty", "mog2", "knn", "gsoc", "cnt".
+  std::vector<std::string> methods = {"novelty", "mog2", "knn", "gsoc", "cnt"};
+  int max_frames = 0;       ///< 0: all
+  bool write_masks = true;  ///< OUT/<method>/binNNNNNN.png
+  long long max_pixels = sensors::kDefaultMaxImagePixels;
+  std::function<void(int done, int total)> progress;
+};
+
+struct ForegroundMethod {
+  std::string name;
+  eval::CdnetCounts counts;  ///< over the scored frames
+  eval::CdnetScores scores;
+  double ms_per_frame = 0;
+};
+
+struct ForegroundRunResult {
+  int frames = 0, scored = 0;  ///< frames run; of them with ground truth in the temporal ROI
+  std::vector<ForegroundMethod> methods;
+  eval::FindingsTable findings;
+};
+
+/// Throws std::runtime_error naming the folder or file (ReadCdnetFolder, an unreadable frame or
+/// ground truth, a frame of another size), std::invalid_argument for an unknown method or a
+/// threshold that is not positive.
+ForegroundRunResult RunForeground(const ForegroundRunOptions& options, const std::string& out_dir);
+
+}  // namespace novelty::experiments
