@@ -1,7 +1,9 @@
 #include "maps/objects/object_finder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
 #include "maps/objects/planar_object_verification.h"

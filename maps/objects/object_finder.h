@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <limits>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>

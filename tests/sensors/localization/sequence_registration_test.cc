@@ -44,13 +44,13 @@ struct DriftingSequence {
   }
 };
 
-struct Errors {
+struct RegistrationErrors {
   double worst_mm = 0, worst_deg = 0;
 };
 
 template <typename QAt>
-Errors Measure(const DriftingSequence& seq, QAt q_at) {
-  Errors e;
+RegistrationErrors Measure(const DriftingSequence& seq, QAt q_at) {
+  RegistrationErrors e;
   for (int j = 0; j < DriftingSequence::kFrames; ++j) {
     const Eigen::Matrix4d s = RegisterPose(q_at(j), seq.Own(j));
     Eigen::Matrix3d r = s.block<3, 3>(0, 0);
@@ -75,10 +75,10 @@ TEST(SequenceRegistration, BothMeetTheBudgetAndTheFitStaysARotation) {
   five.push_back(seq.Support(30, rng, noise));
   five.push_back(seq.Support(90, rng, noise));
 
-  const Errors lagrange = Measure(seq, [&](int j) { return LagrangeFrameTransform(three, j); });
+  const RegistrationErrors lagrange = Measure(seq, [&](int j) { return LagrangeFrameTransform(three, j); });
   const FittedFrameTransform fit3(three), fit5(five);
-  const Errors ceres3 = Measure(seq, [&](int j) { return fit3.At(j).matrix(); });
-  const Errors ceres5 = Measure(seq, [&](int j) { return fit5.At(j).matrix(); });
+  const RegistrationErrors ceres3 = Measure(seq, [&](int j) { return fit3.At(j).matrix(); });
+  const RegistrationErrors ceres5 = Measure(seq, [&](int j) { return fit5.At(j).matrix(); });
   std::printf(
       "worst over the sequence: Lagrange (eq. 6.2) %.1f mm %.3f°, Ceres 3 views %.1f mm "
       "%.3f°, Ceres 5 views %.1f mm %.3f°\n",
@@ -104,9 +104,9 @@ TEST(SequenceRegistration, StrongRotationalDriftFavoursTheFitOnSo3) {
   std::mt19937_64 rng(3);
   const std::vector<SupportView> three = {seq.Support(0, rng, 0), seq.Support(60, rng, 0),
                                           seq.Support(119, rng, 0)};
-  const Errors lagrange = Measure(seq, [&](int j) { return LagrangeFrameTransform(three, j); });
+  const RegistrationErrors lagrange = Measure(seq, [&](int j) { return LagrangeFrameTransform(three, j); });
   const FittedFrameTransform fit(three);
-  const Errors ceres = Measure(seq, [&](int j) { return fit.At(j).matrix(); });
+  const RegistrationErrors ceres = Measure(seq, [&](int j) { return fit.At(j).matrix(); });
   std::printf("29° drift: Lagrange %.1f mm %.3f°, Ceres %.1f mm %.3f°\n", lagrange.worst_mm,
               lagrange.worst_deg, ceres.worst_mm, ceres.worst_deg);
   // Measured: Lagrange 6.1 mm 0.120°, Ceres 6.7 mm 0.000°. The translation of Q is not a
@@ -128,8 +128,8 @@ TEST(SequenceRegistration, ASupportViewFarOffPullsTheRobustFitLittle) {
   plain.robust_scale = 0;
   plain.outlier_scale = 0;
   const FittedFrameTransform robust(support), least_squares(support, plain);
-  const Errors r = Measure(seq, [&](int j) { return robust.At(j).matrix(); });
-  const Errors l = Measure(seq, [&](int j) { return least_squares.At(j).matrix(); });
+  const RegistrationErrors r = Measure(seq, [&](int j) { return robust.At(j).matrix(); });
+  const RegistrationErrors l = Measure(seq, [&](int j) { return least_squares.At(j).matrix(); });
   std::printf("one support view 32 mm off: Huber %.1f mm, least squares %.1f mm\n", r.worst_mm,
               l.worst_mm);
   EXPECT_LT(r.worst_mm, 5.0);
@@ -154,9 +154,9 @@ TEST(SequenceRegistration, SupportViewsBiasedAlikeAreOutweighedByTheCauchyRefit)
   FrameFitOptions huber_only;
   huber_only.outlier_scale = 0;
   const FittedFrameTransform refit(support), huber(support, huber_only);
-  const Errors r = Measure(seq, [&](int j) { return refit.At(j).matrix(); });
-  const Errors h = Measure(seq, [&](int j) { return huber.At(j).matrix(); });
-  const Errors u = Measure(seq, [&](int j) { return unbiased.At(j).matrix(); });
+  const RegistrationErrors r = Measure(seq, [&](int j) { return refit.At(j).matrix(); });
+  const RegistrationErrors h = Measure(seq, [&](int j) { return huber.At(j).matrix(); });
+  const RegistrationErrors u = Measure(seq, [&](int j) { return unbiased.At(j).matrix(); });
   std::printf(
       "4 of 12 support views 13 mm off alike: Cauchy refit %.1f mm, Huber %.1f mm "
       "(none off: %.1f mm)\n",
