@@ -53,7 +53,7 @@ class NoveltyMethod : public ForegroundMethodRunner {
   }
   cv::Mat Apply(const cv::Mat& rgb) override {
     if (depth_.size() != rgb.size()) {
-      camera_ = core::PinholeCamera::FromFov(rgb.cols, rgb.rows, 1.0);
+      camera_ = sensors::NominalCamera(rgb.size());
       depth_ = cv::Mat(rgb.size(), CV_32FC1, cv::Scalar(1.0f));
     }
     const appearance::AppearanceProducts p =

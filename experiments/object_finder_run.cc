@@ -36,9 +36,8 @@ class FrameSource {
     }
   }
   int total() const { return rawlog_ ? 0 : int(images_.size()); }
-  std::vector<std::string> skip_reasons() const {
-    std::vector<std::string> all = rawlog_ ? rawlog_->skip_reasons() : skips_;
-    return all;
+  const std::vector<std::string>& skip_reasons() const {
+    return rawlog_ ? rawlog_->skip_reasons() : skips_;
   }
   /// Why a rawlog ended before its end (truncated, corrupt); empty if it did not.
   const std::string& stopped_by() const { return stopped_by_; }
@@ -71,20 +70,13 @@ class FrameSource {
         skips_.push_back(sensors::BriefMessage(e));
         continue;
       }
-      f.camera = o_.camera ? *o_.camera : NominalCamera(f.rgb.size());
+      f.camera = o_.camera ? *o_.camera : sensors::NominalCamera(f.rgb.size());
       return true;
     }
     return false;
   }
 
  private:
-  static core::PinholeCamera NominalCamera(const cv::Size& size) {
-    core::PinholeCamera c;
-    c.width = size.width, c.height = size.height;
-    c.fx = c.fy = std::max(size.width, size.height);
-    c.cx = 0.5 * (size.width - 1), c.cy = 0.5 * (size.height - 1);
-    return c;
-  }
   const ObjectFinderRunOptions& o_;
   std::unique_ptr<sensors::RawlogFrameReader> rawlog_;
   std::vector<std::string> images_, skips_;

@@ -42,11 +42,7 @@ FixedCameraFolder::FixedCameraFolder(const std::string& folder, const FixedCamer
                                         " left out by the include/exclude patterns)"));
   cv::Mat unused;
   const cv::Size size = SizeOf(listing_.images.front(), o.max_pixels, &unused);
-  camera_.width = size.width;
-  camera_.height = size.height;
-  camera_.fx = camera_.fy = std::max(size.width, size.height);
-  camera_.cx = 0.5 * (size.width - 1);
-  camera_.cy = 0.5 * (size.height - 1);
+  camera_ = NominalCamera(size);
   depth_ = cv::Mat(size, CV_32F, cv::Scalar(o.depth));
   if (!listing_.mask.empty()) {
     const cv::Mat mask = ReadFolderMask(listing_.mask);
@@ -61,6 +57,14 @@ FixedCameraFolder::FixedCameraFolder(const std::string& folder, const FixedCamer
 std::string FixedCameraFolder::name(int k) const {
   const std::string& p = listing_.images.at(std::size_t(k));
   return p.substr(p.find_last_of('/') + 1);
+}
+
+core::PinholeCamera NominalCamera(const cv::Size& size) {
+  core::PinholeCamera c;
+  c.width = size.width, c.height = size.height;
+  c.fx = c.fy = std::max(size.width, size.height);
+  c.cx = 0.5 * (size.width - 1), c.cy = 0.5 * (size.height - 1);
+  return c;
 }
 
 cv::Mat ReadImageRgb8(const std::string& path, long long max_pixels,

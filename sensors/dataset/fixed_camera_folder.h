@@ -33,6 +33,10 @@ namespace novelty::sensors {
 cv::Mat ReadImageRgb8(const std::string& path, long long max_pixels = kDefaultMaxImagePixels,
                       const std::function<void(const cv::Size&)>& check_size = {});
 
+/// The intrinsics of a camera nothing is known of: focal length the image's larger side (a field
+/// of view of 53° across it), principal point the centre.
+core::PinholeCamera NominalCamera(const cv::Size& size);
+
 struct FixedCameraOptions {
   LightingFolderOptions pick;  ///< which image files are frames
   /// m, the plane every image is given as depth (any positive value serves one pose).
