@@ -71,6 +71,10 @@ std::vector<FoundObject> FindObjects(const FrameFeatures& features, const cv::Ma
   if (options.min_matches < 1)
     throw std::invalid_argument("ObjectFinderOptions: min_matches must be >= 1, got " +
                                 std::to_string(options.min_matches));
+  // The evidence of a verified object is read from its inlier pairs as indices of the ratio
+  // matches, which verify_nearest's pairs are not.
+  if (options.recognition.verify_nearest != 0)
+    throw std::invalid_argument("ObjectFinderOptions: verify_nearest must be 0");
   if (!depth.empty() &&
       (depth.type() != CV_32FC1 || depth.cols != camera.width || depth.rows != camera.height))
     throw std::invalid_argument("FindObjects: the depth image is not CV_32F of the camera's size");

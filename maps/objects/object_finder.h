@@ -21,7 +21,7 @@ namespace novelty::objects {
 struct ObjectFinderOptions {
   ObjectFinderOptions() { recognition.verify = true; }
   /// Matching and verification; verify is on (an object is listed as verified only if its
-  /// matches agree on one pose or homography).
+  /// matches agree on one pose or homography), verify_nearest must stay 0.
   ObjectRecognitionOptions recognition;
   /// An object not verified is still listed, as a candidate, from this many matches at distinct
   /// places: chance matches of an absent object's features with the ratio test at 0.65 stay
@@ -50,7 +50,8 @@ struct FoundObject {
 /// The objects of `database` found in a frame with `features` (ExtractFrameFeatures with the
 /// database's extractor) seen by `camera`, and `depth` (CV_32FC1 metres of the camera's size, 0
 /// unknown; empty: none): verified ones first, then by inliers and matches. Throws as
-/// MatchObjects, and std::invalid_argument for a depth of another size or type or min_matches < 1.
+/// MatchObjects, and std::invalid_argument for a depth of another size or type, min_matches < 1
+/// or verify_nearest other than 0.
 std::vector<FoundObject> FindObjects(const FrameFeatures& features, const cv::Mat& depth,
                                      const FeatureDatabase& database,
                                      const core::PinholeCamera& camera,

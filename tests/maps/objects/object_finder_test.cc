@@ -143,6 +143,11 @@ TEST(FindObjects, OneEntryPerName) {
   EXPECT_EQ(found[0].name, "fruits");
   EXPECT_TRUE(found[0].verified);
   ObjectFinderOptions o;
+  o.recognition.verify_nearest = 2;
+  EXPECT_THROW(
+      FindObjects(ExtractFrameFeatures(fruits, *sift), cv::Mat(), db, Camera(fruits.size()), o),
+      std::invalid_argument);
+  o.recognition.verify_nearest = 0;
   o.min_matches = 0;
   EXPECT_THROW(
       FindObjects(ExtractFrameFeatures(fruits, *sift), cv::Mat(), db, Camera(fruits.size()), o),
