@@ -37,7 +37,13 @@ int Run(int argc, char** argv) {
       "", "threshold",
       "Foreground where -ln p(frame | background) exceeds this (nats; default 3 ln 256 = 16.6, "
       "the Bayes decision against a uniform foreground colour)",
-      false, o.threshold_nats, "NATS", cmd);
+      false, o.labels.threshold_nats, "NATS", cmd);
+  TCLAP::SwitchArg no_shadows("", "no-shadow-label",
+                              "Count shadows as foreground (default: a grey, darker illumination "
+                              "image is shadow, maps/appearance/foreground_labels.h)",
+                              cmd);
+  TCLAP::ValueArg<int> min_blob("", "min-blob", "Drop foreground blobs of fewer pixels (0: keep)",
+                                false, o.labels.min_blob_pixels, "PIXELS", cmd);
   TCLAP::SwitchArg learn_foreground(
       "", "learn-foreground", "Learn foreground pixels too (the thesis's update; default: hold)",
       cmd);
@@ -51,7 +57,10 @@ int Run(int argc, char** argv) {
     throw apps::UsageError("--threshold must be in (0, 1e6) nats");
   if (frames.getValue() < 0) throw apps::UsageError("--frames must be >= 0");
   o.folder = in.getValue();
-  o.threshold_nats = threshold.getValue();
+  if (min_blob.getValue() < 0) throw apps::UsageError("--min-blob must be >= 0");
+  o.labels.threshold_nats = threshold.getValue();
+  o.labels.shadow_label = !no_shadows.getValue();
+  o.labels.min_blob_pixels = min_blob.getValue();
   o.hold_foreground = !learn_foreground.getValue();
   o.max_frames = frames.getValue();
   o.write_masks = !no_masks.getValue();

@@ -6,10 +6,14 @@
 
 namespace novelty::core {
 
-void WriteRgbImage(const std::string& path, const cv::Mat& rgb) {
+void WriteImage(const std::string& path, const cv::Mat& image, const std::vector<int>& params) {
+  if (!cv::imwrite(path, image, params)) throw std::runtime_error(path + ": cannot write image");
+}
+
+void WriteRgbImage(const std::string& path, const cv::Mat& rgb, const std::vector<int>& params) {
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-  if (!cv::imwrite(path, bgr)) throw std::runtime_error(path + ": cannot write image");
+  WriteImage(path, bgr, params);
 }
 
 }  // namespace novelty::core

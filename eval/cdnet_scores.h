@@ -11,11 +11,12 @@
 
 #include <opencv2/core.hpp>
 
+#include "core/cdnet_labels.h"
+
 namespace novelty::eval {
 
-/// CDnet's ground-truth labels.
-inline constexpr int kCdnetStatic = 0, kCdnetShadow = 50, kCdnetOutsideRoi = 85,
-                     kCdnetUnknown = 170, kCdnetMotion = 255;
+using core::kCdnetMotion, core::kCdnetOutsideRoi, core::kCdnetShadow, core::kCdnetStatic,
+    core::kCdnetUnknown;
 
 struct CdnetCounts {
   long long tp = 0, fp = 0, fn = 0, tn = 0;

@@ -10,7 +10,10 @@
 #include <opencv2/video/background_segm.hpp>
 #include <stdexcept>
 
+#include "core/frame_stem.h"
 #include "core/pinhole_camera.h"
+#include "core/write_rgb_image.h"
+#include "eval/cdnet_panel.h"
 #include "maps/appearance/appearance_map.h"
 #include "sensors/dataset/cdnet_folder.h"
 #include "sensors/dataset/fixed_camera_folder.h"
@@ -45,10 +48,10 @@ class OpenCvSubtractor : public ForegroundMethodRunner {
 // The appearance map as a static camera: a nominal camera at the origin, a plane as depth.
 class NoveltyMethod : public ForegroundMethodRunner {
  public:
-  explicit NoveltyMethod(const ForegroundRunOptions& o) : threshold_(o.threshold_nats) {
+  explicit NoveltyMethod(const ForegroundRunOptions& o) : labels_(o.labels) {
     appearance::AppearanceMapOptions m;
     m.predictive_novelty = true;
-    if (o.hold_foreground) m.hold_above_nats = o.threshold_nats;
+    if (o.hold_foreground) m.hold_above_nats = o.labels.threshold_nats;
     map_ = std::make_unique<appearance::AppearanceMap>(m);
   }
   cv::Mat Apply(const cv::Mat& rgb) override {
@@ -58,11 +61,13 @@ class NoveltyMethod : public ForegroundMethodRunner {
     }
     const appearance::AppearanceProducts p =
         map_->Insert(rgb, depth_, camera_, Eigen::Isometry3d::Identity());
-    return p.predictive > threshold_;  // NaN (the first frame: no background yet) is not
+    // NaN (the first frame: no background yet) is background.
+    return appearance::ForegroundLabels(p.predictive, rgb, p.expected_rgb, labels_) ==
+           appearance::kForegroundLabel;
   }
 
  private:
-  double threshold_;
+  appearance::ForegroundLabelOptions labels_;
   std::unique_ptr<appearance::AppearanceMap> map_;
   core::PinholeCamera camera_;
   cv::Mat depth_;
@@ -118,7 +123,7 @@ void WriteScores(const ForegroundRunResult& r, const fs::path& out) {
 }  // namespace
 
 ForegroundRunResult RunForeground(const ForegroundRunOptions& o, const std::string& out_dir) {
-  if (!(o.threshold_nats > 0)) throw std::invalid_argument("threshold_nats must be > 0");
+  if (!(o.labels.threshold_nats > 0)) throw std::invalid_argument("threshold_nats must be > 0");
   const sensors::CdnetFolder folder = sensors::ReadCdnetFolder(o.folder);
   std::vector<std::unique_ptr<ForegroundMethodRunner>> methods;
   ForegroundRunResult r;
@@ -128,6 +133,7 @@ ForegroundRunResult RunForeground(const ForegroundRunOptions& o, const std::stri
     r.methods.push_back({name, {}, {}, 0});
     if (o.write_masks) fs::create_directories(fs::path(out_dir) / name);
   }
+  if (o.panel_every > 0) fs::create_directories(fs::path(out_dir) / "panels");
   const int n = o.max_frames > 0 ? std::min<int>(o.max_frames, int(folder.inputs.size()))
                                  : int(folder.inputs.size());
   std::vector<double> seconds(methods.size(), 0.0);
@@ -142,19 +148,23 @@ ForegroundRunResult RunForeground(const ForegroundRunOptions& o, const std::stri
     const bool scored = folder.scored(number) && !truth_path.empty();
     const cv::Mat truth = scored ? sensors::ReadCdnetTruth(truth_path) : cv::Mat();
     r.scored += scored;
+    std::vector<cv::Mat> masks;
     for (std::size_t m = 0; m < methods.size(); ++m) {
       const auto start = std::chrono::steady_clock::now();
-      const cv::Mat mask = methods[m]->Apply(rgb);
+      masks.push_back(methods[m]->Apply(rgb));
       seconds[m] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (scored) r.methods[m].counts += eval::CountCdnetFrame(mask, truth, folder.roi);
-      if (o.write_masks) {
-        char name[32];
-        std::snprintf(name, sizeof name, "bin%06d.png", number);
-        const fs::path file = fs::path(out_dir) / r.methods[m].name / name;
-        if (!cv::imwrite(file.string(), mask))
-          throw std::runtime_error(file.string() + ": cannot be written");
-      }
+      if (scored) r.methods[m].counts += eval::CountCdnetFrame(masks[m], truth, folder.roi);
+      if (o.write_masks)
+        core::WriteImage(
+            (fs::path(out_dir) / r.methods[m].name / ("bin" + core::FrameStem(number) + ".png"))
+                .string(),
+            masks[m]);
     }
+    if (o.panel_every > 0 && k % o.panel_every == 0)
+      core::WriteRgbImage(
+          (fs::path(out_dir) / "panels" / (core::FrameStem(number) + ".png")).string(),
+          eval::CdnetPanel(rgb, truth, folder.roi, masks, o.methods,
+                           "frame " + std::to_string(number)));
     ++r.frames;
     if (o.progress) o.progress(r.frames, n);
   }

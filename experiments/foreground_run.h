@@ -16,23 +16,27 @@
 
 #include "eval/cdnet_scores.h"
 #include "eval/findings_table.h"
+#include "maps/appearance/foreground_labels.h"
 #include "sensors/dataset/image_header.h"
 
 namespace novelty::experiments {
 
 struct ForegroundRunOptions {
   std::string folder;  ///< CDnet layout
-  /// Foreground where −ln p(frame | background) exceeds this (nats, summed over Y, Cb, Cr): the
-  /// Bayes decision between the background model and a uniform foreground colour over the 256³
-  /// colour cube with equal priors, 3 ln 256 = 16.6 nats.
-  double threshold_nats = 3 * std::log(256.0);
-  /// The map keeps its background where the mask is set (AppearanceMapOptions::hold_above_nats);
-  /// false: it learns every pixel, as the thesis's map does.
+  /// The map's decision rule: threshold, shadow label, small blobs (foreground_labels.h). Shadow
+  /// pixels are not foreground in the masks.
+  appearance::ForegroundLabelOptions labels;
+  /// The map keeps its background where predictive novelty exceeds labels.threshold_nats
+  /// (AppearanceMapOptions::hold_above_nats; shadows too); false: it learns every pixel, as the
+  /// thesis's map does.
   bool hold_foreground = true;
   /// Methods to run, of "novelty", "mog2", "knn", "gsoc", "cnt".
   std::vector<std::string> methods = {"novelty", "mog2", "knn", "gsoc", "cnt"};
   int max_frames = 0;       ///< 0: all
   bool write_masks = true;  ///< OUT/<method>/binNNNNNN.png
+  /// Every this many frames OUT/panels/NNNNNN.png: camera | truth | each method's mask scored
+  /// against it (eval/cdnet_panel.h); 0: none.
+  int panel_every = 50;
   long long max_pixels = sensors::kDefaultMaxImagePixels;
   std::function<void(int done, int total)> progress;
 };

@@ -1,6 +1,7 @@
 #include "sim/output/ground_truth_writer.h"
 
 #include "core/frame_stem.h"
+#include "core/write_rgb_image.h"
 #include "sim/output/ground_truth_format.h"
 
 #include <algorithm>
@@ -11,14 +12,6 @@
 #include <stdexcept>
 
 namespace novelty::sim {
-
-namespace {
-
-void Write(const std::string& path, const cv::Mat& image) {
-  if (!cv::imwrite(path, image)) throw std::runtime_error(path + ": cannot write image");
-}
-
-}  // namespace
 
 GroundTruthWriter::GroundTruthWriter(const std::string& dir, const Scenario& scenario,
                                      const std::vector<Eigen::Isometry3d>& rig_offsets)
@@ -76,9 +69,9 @@ void GroundTruthWriter::WriteFrame(int frame, double t, const Eigen::Isometry3d&
   depth.convertTo(depth16, CV_16U, ground_truth::kDepthUnitsPerMetre);  // saturates at 13.1 m
   ids.convertTo(ids16, CV_16U, 1.0, ground_truth::kIdOffset);
   const std::string name = core::FrameStem(frame) + ".png";
-  Write(dir_ + "/depth/" + name, depth16);
-  Write(dir_ + "/ids/" + name, ids16);
-  Write(dir_ + "/novelty/" + name, novelty);
+  core::WriteImage(dir_ + "/depth/" + name, depth16);
+  core::WriteImage(dir_ + "/ids/" + name, ids16);
+  core::WriteImage(dir_ + "/novelty/" + name, novelty);
 }
 
 void GroundTruthWriter::WriteEvents(const std::vector<std::string>& applied) {

@@ -58,13 +58,16 @@ struct LampSpec {
 };
 
 struct EventSpec {
-  enum class Kind { kAdd, kRemove, kMove, kLampMove, kLampOn, kLampOff };
+  enum class Kind { kAdd, kRemove, kMove, kLampMove, kLampOn, kLampOff, kWalk, kSun, kExposure };
   Kind kind = Kind::kAdd;
   double time = 0.0;                  ///< seconds from the start
-  std::string target;                 ///< object or lamp name
-  Eigen::Vector3d position{0, 0, 0};  ///< move: new x y (on the same support); lamp: x y z
+  std::string target;                 ///< object or lamp name (none for sun and exposure)
+  Eigen::Vector3d position{0, 0, 0};  ///< move, walk: new x y (on the same support); lamp: x y z;
+                                      ///< sun: the daylight's new direction of travel
   double arm_duration = 0.0;  ///< > 0: a person's arm reaches in over this many seconds and the
                               ///< change happens at its midpoint
+  double duration = 0.0;      ///< walk, sun, exposure: seconds over which the change is linear
+  double value = 0.0;         ///< exposure: the new exposure
   int line = 0;
 };
 

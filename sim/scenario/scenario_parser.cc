@@ -29,13 +29,13 @@ constexpr double kDeg = M_PI / 180.0;
 struct Range {
   double lo, hi;
 };
-constexpr Range kPlace{-1000, 1000};     // positions, m
-constexpr Range kAngle{-3600, 3600};     // degrees
-constexpr Range kColour{0, 1e4};         // colours and lamp intensities
-constexpr Range kImageSide{8, 4096};     // camera width and height, pixels
-constexpr Range kCount{1, 1000000};      // frames, phase frames
-constexpr double kMaxSize = 100;         // object, room and window sizes, m
-constexpr double kMaxSeconds = 86400;    // times and durations
+constexpr Range kPlace{-1000, 1000};   // positions, m
+constexpr Range kAngle{-3600, 3600};   // degrees
+constexpr Range kColour{0, 1e4};       // colours and lamp intensities
+constexpr Range kImageSide{8, 4096};   // camera width and height, pixels
+constexpr Range kCount{1, 1000000};    // frames, phase frames
+constexpr double kMaxSize = 100;       // object, room and window sizes, m
+constexpr double kMaxSeconds = 86400;  // times and durations
 
 std::string Str(double v) {
   std::ostringstream o;
@@ -337,7 +337,8 @@ class Parser {
       const std::string file = base_dir_ + "/" + l.Word("image file");
       cv::Mat bgr = cv::imread(file, cv::IMREAD_COLOR);
       if (bgr.empty()) l.Fail("cannot read texture image '" + file + "'");
-      if (bgr.cols > 8192 || bgr.rows > 8192) l.Fail("texture image '" + file + "' is over 8192 pixels");
+      if (bgr.cols > 8192 || bgr.rows > 8192)
+        l.Fail("texture image '" + file + "' is over 8192 pixels");
       cv::cvtColor(bgr, t.image, cv::COLOR_BGR2RGB);
       t.kind = Texture::Kind::kImage;
     } else {
@@ -424,17 +425,39 @@ class Parser {
     e.line = l.number();
     e.time = l.In("event time", {0, kMaxSeconds});
     const std::string kind = l.Word("event kind");
+    if (kind == "sun") {
+      if (s_.lighting.directional.empty())
+        l.Fail("a sun event needs 'daylight' declared before it");
+      e.kind = EventSpec::Kind::kSun;
+      e.position = l.Vec3("sun direction", {-1e3, 1e3});
+      if (!(e.position.norm() > 1e-6)) l.Fail("sun direction must not be zero");
+      e.position.normalize();
+      if (l.Accept("over")) e.duration = l.Positive("over seconds", kMaxSeconds);
+      s_.events.push_back(e);
+      return;
+    }
+    if (kind == "exposure") {
+      e.kind = EventSpec::Kind::kExposure;
+      e.value = l.In("exposure", {1e-4, 1e4});
+      if (l.Accept("over")) e.duration = l.Positive("over seconds", kMaxSeconds);
+      s_.events.push_back(e);
+      return;
+    }
     e.target = l.Word("event target");
-    if (kind == "add" || kind == "remove" || kind == "move") {
+    if (kind == "add" || kind == "remove" || kind == "move" || kind == "walk") {
       e.kind = kind == "add"      ? EventSpec::Kind::kAdd
                : kind == "remove" ? EventSpec::Kind::kRemove
-                                  : EventSpec::Kind::kMove;
+               : kind == "move"   ? EventSpec::Kind::kMove
+                                  : EventSpec::Kind::kWalk;
       const ObjectSpec* o = s_.FindObject(e.target);
       if (!o) l.Fail("event on undeclared object '" + e.target + "'");
       if (o->fixed) l.Fail("object '" + e.target + "' is fixed furniture and cannot change");
-      if (e.kind == EventSpec::Kind::kMove)
+      if (e.kind == EventSpec::Kind::kMove || e.kind == EventSpec::Kind::kWalk)
         e.position = {l.In("x", {-kMaxSize, kMaxSize}), l.In("y", {-kMaxSize, kMaxSize}), 0};
-      if (l.Accept("arm")) e.arm_duration = l.Positive("arm seconds", 600);
+      if (e.kind == EventSpec::Kind::kWalk)
+        e.duration = l.Positive("walk seconds", kMaxSeconds);
+      else if (l.Accept("arm"))
+        e.arm_duration = l.Positive("arm seconds", 600);
     } else if (kind == "lamp" || kind == "lamp_on" || kind == "lamp_off") {
       e.kind = kind == "lamp"      ? EventSpec::Kind::kLampMove
                : kind == "lamp_on" ? EventSpec::Kind::kLampOn
@@ -444,7 +467,8 @@ class Parser {
       if (!found) l.Fail("event on undeclared lamp '" + e.target + "'");
       if (e.kind == EventSpec::Kind::kLampMove) e.position = l.Vec3("lamp position");
     } else {
-      l.Fail("unknown event '" + kind + "' (add, remove, move, lamp, lamp_on, lamp_off)");
+      l.Fail("unknown event '" + kind +
+             "' (add, remove, move, walk, lamp, lamp_on, lamp_off, sun, exposure)");
     }
     s_.events.push_back(e);
   }

@@ -18,7 +18,11 @@
 //   arc CX CY RADIUS FROM_DEG TO_DEG SPEED      stop SECONDS      repeat N
 //   start_offset DX DY                robot placed off its trajectory's start (m)
 //   event T add|remove OBJECT [arm SECONDS] | move OBJECT X Y [arm SECONDS]
+//         | walk OBJECT X Y SECONDS       (slides there on its support at constant speed: a
+//                                          person walking; no physics while it walks)
 //         | lamp LAMP X Y Z | lamp_on LAMP | lamp_off LAMP
+//         | sun DX DY DZ [over SECONDS]   (the daylight turns to this direction, linearly)
+//         | exposure E [over SECONDS]     (the camera's exposure steps, or ramps, to E)
 //   phase NAME FIRST LAST [DESCRIPTION…]        frames, 1-based, inclusive
 //
 // Every number is range-checked (beyond the ranges ODE and Embree assert, buffers take gigabytes

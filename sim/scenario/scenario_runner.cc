@@ -3,10 +3,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "core/frame_stem.h"
 #include "core/write_rgb_image.h"
+#include "sim/output/cdnet_writer.h"
 #include "sim/output/contact_sheet.h"
 #include "sim/output/ground_truth_writer.h"
 #include "sim/output/rawlog_writer.h"
@@ -47,6 +49,32 @@ void WriteCameras(RawlogWriter& out, const Scenario& s, double t, int frame,
   }
 }
 
+// Camera `camera` of frame k: independent noise per camera and frame, the exposure of now.
+RenderOptions FrameRenderOptions(const Scenario& s, const ScenarioWorld& world, std::uint64_t seed,
+                                 int k, int camera) {
+  RenderOptions ro = s.render;
+  ro.exposure = world.CurrentExposure();
+  ro.seed = seed;
+  ro.frame = std::uint64_t(k) * 4 + std::uint64_t(camera);
+  return ro;
+}
+
+// CDnet's temporal ROI: the phases after the first, clipped to the frames written.
+std::pair<int, int> TemporalRoi(const Scenario& s, int frames) {
+  if (s.phases.size() < 2) return {1, frames};
+  return {std::min(s.phases[1].first_frame, frames), std::min(s.phases.back().last_frame, frames)};
+}
+
+// The frame's CDnet labels: the foreground's pixels against a render of its background.
+cv::Mat CdnetFrameTruth(const ScenarioWorld& world, const Scenario& s, const RenderedFrame& frame,
+                        const Lighting& lighting, const RenderOptions& ro) {
+  RayScene background;
+  world.AddBackgroundToScene(background);
+  background.Commit();
+  const RenderedFrame b = Render(background, lighting, s.camera, world.HeadPose(), ro);
+  return CdnetTruth(frame.ids, world.AddedIds(), frame.rgb, b.rgb);
+}
+
 }  // namespace
 
 RunSummary RunScenario(const Scenario& s, const RunOptions& o) {
@@ -56,8 +84,17 @@ RunSummary RunScenario(const Scenario& s, const RunOptions& o) {
     throw std::invalid_argument(s.file + ": --frames must be in 1…" + std::to_string(s.frames) +
                                 ", got " + std::to_string(frames));
   }
+  if (o.cdnet && !s.static_camera)
+    throw std::invalid_argument(s.file +
+                                ": the CDnet layout is for a fixed camera (static_camera)");
   const std::uint64_t seed = o.seed ? *o.seed : s.seed;
   std::filesystem::create_directories(o.out_dir);
+  std::optional<CdnetWriter> cdnet;
+  const std::string cdnet_dir = o.out_dir + "/" + s.name + "_cdnet";
+  if (o.cdnet) {
+    const auto [first, last] = TemporalRoi(s, frames);
+    cdnet.emplace(cdnet_dir, first, last);
+  }
 
   ScenarioWorld world(s);
   LedTracker tracker(LedTrackerSpec{}, seed ^ 0x7EA4u);
@@ -86,12 +123,16 @@ RunSummary RunScenario(const Scenario& s, const RunOptions& o) {
     const Eigen::Isometry3d head = world.HeadPose();
     std::vector<RenderedFrame> renders;
     for (std::size_t i = 0; i < offsets.size(); ++i) {
-      RenderOptions ro = s.render;
-      ro.seed = seed;
-      ro.frame = std::uint64_t(k) * 4 + i;  // independent noise per camera and frame
-      renders.push_back(Render(scene, lighting, s.camera, head * offsets[i], ro));
+      renders.push_back(Render(scene, lighting, s.camera, head * offsets[i],
+                               FrameRenderOptions(s, world, seed, k, int(i))));
     }
     WriteCameras(rawlog, s, t, k + 1, renders, world.RobotFromHead(), offsets);
+    if (cdnet) {
+      // The background is rendered with the frame's noise, so that it cancels.
+      cdnet->WriteFrame(k + 1, renders[0].rgb,
+                        CdnetFrameTruth(world, s, renders[0], lighting,
+                                        FrameRenderOptions(s, world, seed, k, 0)));
+    }
 
     RayScene reference;  // the scene with removed objects back in place (novelty masks)
     world.AddNoveltyReferenceToScene(reference);
@@ -120,6 +161,7 @@ RunSummary RunScenario(const Scenario& s, const RunOptions& o) {
   summary.observations = rawlog.observations();
   summary.rawlog = rawlog.rawlog_path();
   summary.contact_sheet = o.out_dir + "/" + s.name + "_contact_sheet.png";
+  if (o.cdnet) summary.cdnet_dir = cdnet_dir;
   core::WriteRgbImage(summary.contact_sheet, ContactSheet(tiles, 6));
   summary.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

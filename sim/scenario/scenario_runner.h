@@ -21,6 +21,11 @@ struct RunOptions {
   bool progress = true;
   /// Tiles on the contact sheet (evenly spaced frames).
   int contact_sheet_tiles = 24;
+  /// Also write the frames with foreground/shadow ground truth in CDnet's layout to
+  /// DIR/<name>_cdnet/ (sim/output/cdnet_writer.h). The temporal ROI is the frames of the
+  /// scenario's phases after the first (the first phase learns the background), or every frame
+  /// without two phases. Fixed cameras only (std::invalid_argument for a robot's).
+  bool cdnet = false;
 };
 
 struct RunSummary {
@@ -29,6 +34,7 @@ struct RunSummary {
   double seconds = 0.0;  ///< wall-clock time of the run
   std::string rawlog;
   std::string contact_sheet;
+  std::string cdnet_dir;  ///< set with RunOptions::cdnet
 };
 
 RunSummary RunScenario(const Scenario& scenario, const RunOptions& options);

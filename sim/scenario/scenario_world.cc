@@ -76,6 +76,11 @@ ScenarioWorld::ScenarioWorld(const Scenario& scenario, double settle_seconds) : 
   BuildRoom();
   BuildObjects();
   lamps_ = s_.lamps;
+  const Eigen::Vector3d sun = s_.lighting.directional.empty()
+                                  ? Eigen::Vector3d(0, 0, -1)
+                                  : s_.lighting.directional[0].direction;
+  sun_ = {sun, sun};
+  exposure_ = {s_.render.exposure, s_.render.exposure};
   event_done_.assign(s_.events.size(), false);
   if (!s_.static_camera) {
     const TrajectoryReference start = s_.trajectory.At(0.0);
@@ -178,8 +183,9 @@ void ScenarioWorld::Despawn(ObjectState& o) {
 void ScenarioWorld::BuildObjects() {
   objects_.reserve(s_.objects.size());
   for (const ObjectSpec& spec : s_.objects) {
-    ObjectState o{&spec,        MeshOf(spec), nullptr,     PlacementPose(spec, spec.xy),
-                  std::nullopt, false,        spec.present};
+    ObjectState o{&spec,        MeshOf(spec), nullptr,      PlacementPose(spec, spec.xy),
+                  std::nullopt, false,        spec.present, false,
+                  std::nullopt};
     if (spec.present) Spawn(o, o.pose);
     objects_.push_back(std::move(o));
   }
@@ -206,7 +212,8 @@ Eigen::Isometry3d ScenarioWorld::ObjectPose(const std::string& name) const {
 }
 
 void ScenarioWorld::Apply(const EventSpec& e) {
-  static const char* kNames[] = {"add", "remove", "move", "lamp", "lamp_on", "lamp_off"};
+  static const char* kNames[] = {"add",      "remove", "move", "lamp",    "lamp_on",
+                                 "lamp_off", "walk",   "sun",  "exposure"};
   applied_.push_back(std::to_string(time_) + " " + kNames[int(e.kind)] + " " + e.target);
   auto lamp = [&]() -> LampSpec& {
     for (LampSpec& l : lamps_) {
@@ -225,6 +232,7 @@ void ScenarioWorld::Apply(const EventSpec& e) {
       ObjectState& o = Object(e.target);
       if (!o.present) break;
       Despawn(o);  // leaves o.pose at the last pose
+      o.walk.reset();
       o.gone_pose = o.pose;
       break;
     }
@@ -234,6 +242,7 @@ void ScenarioWorld::Apply(const EventSpec& e) {
         Despawn(o);
         o.gone_pose = o.pose;
       }
+      o.walk.reset();
       Spawn(o, PlacementPose(*o.spec, e.position.head<2>()));
       o.moved = true;
       break;
@@ -247,6 +256,41 @@ void ScenarioWorld::Apply(const EventSpec& e) {
     case EventSpec::Kind::kLampOff:
       lamp().on = false;
       break;
+    case EventSpec::Kind::kWalk:
+      StartWalk(Object(e.target), e);
+      break;
+    case EventSpec::Kind::kSun:
+      sun_ = {sun_.At(time_), e.position, time_, e.duration};
+      break;
+    case EventSpec::Kind::kExposure:
+      exposure_ = {exposure_.At(time_), e.value, time_, e.duration};
+      break;
+  }
+}
+
+// The walker leaves physics (a person is not pushed by what it passes) and slides at its
+// support's height; an object there from the start counts as moved, its old place as removed.
+void ScenarioWorld::StartWalk(ObjectState& o, const EventSpec& e) {
+  if (!o.present) return;
+  if (o.body) {
+    o.pose = PhysicsWorld::PoseOf(o.body);
+    physics_->RemoveBody(o.body);
+    o.body = nullptr;
+  }
+  if (o.present_at_start && !o.moved) {
+    o.gone_pose = o.pose;
+    o.moved = true;
+  }
+  o.pose.translation().z() = SupportTop(o.spec->support) + Height(*o.spec) / 2;
+  o.walk = Ramp<Eigen::Vector2d>{o.pose.translation().head<2>(), e.position.head<2>(), time_,
+                                 e.duration};
+}
+
+void ScenarioWorld::StepWalks() {
+  for (ObjectState& o : objects_) {
+    if (!o.walk) continue;
+    o.pose.translation().head<2>() = o.walk->At(time_);
+    if (time_ >= o.walk->start + o.walk->duration) o.walk.reset();
   }
 }
 
@@ -294,6 +338,7 @@ void ScenarioWorld::AdvanceTo(double t) {
                                }),
                 arms_.end());
     StepOnce();
+    StepWalks();
   }
 }
 
@@ -362,8 +407,24 @@ void ScenarioWorld::AddNoveltyReferenceToScene(RayScene& scene) const {
   }
 }
 
+bool ScenarioWorld::IsForeground(const ObjectState& o) const {
+  return o.present && (!o.present_at_start || o.moved);
+}
+
+void ScenarioWorld::AddBackgroundToScene(RayScene& scene) const {
+  for (const auto& [mesh, material] : room_) {
+    scene.AddObject(mesh, Eigen::Isometry3d::Identity(), material, kRoomObjectId);
+  }
+  for (const ObjectState& o : objects_) {
+    if (!o.present || IsForeground(o)) continue;
+    const Eigen::Isometry3d pose = o.body ? PhysicsWorld::PoseOf(o.body) : o.pose;
+    scene.AddObject(o.mesh, pose, s_.materials.at(o.spec->material), o.spec->id);
+  }
+}
+
 Lighting ScenarioWorld::CurrentLighting() const {
   Lighting l = s_.lighting;
+  if (!l.directional.empty()) l.directional[0].direction = sun_.At(time_).normalized();
   for (const LampSpec& lamp : lamps_) {
     if (lamp.on) l.points.push_back(lamp.light);
   }
@@ -373,7 +434,7 @@ Lighting ScenarioWorld::CurrentLighting() const {
 std::vector<int> ScenarioWorld::AddedIds() const {
   std::vector<int> ids;
   for (const ObjectState& o : objects_) {
-    if (o.present && (!o.present_at_start || o.moved)) ids.push_back(o.spec->id);
+    if (IsForeground(o)) ids.push_back(o.spec->id);
   }
   if (!arms_.empty()) ids.push_back(kArmObjectId);
   return ids;

@@ -4,6 +4,7 @@
 // scene, now and in the reference configuration of the start (for ground-truth novelty masks).
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -49,8 +50,13 @@ class ScenarioWorld {
   /// The reference for novelty masks: the scene now without the arm, plus every removed object
   /// at the pose where it was last seen and every moved object at its old place.
   void AddNoveltyReferenceToScene(RayScene& scene) const;
-  /// Lamps as they are now.
+  /// The scene now without its foreground: no arm, no object added since the start, no moved
+  /// object at its new place (what a fixed camera's background is; shadow ground truth).
+  void AddBackgroundToScene(RayScene& scene) const;
+  /// Lamps and the daylight as they are now.
   Lighting CurrentLighting() const;
+  /// The camera's exposure now (the scenario's, changed by exposure events).
+  double CurrentExposure() const { return exposure_.At(time_); }
 
   /// Ids of changes: added (present now but not at the start, or moved, or the arm) and removed
   /// (taken away or moved since they were last seen, whenever that was).
@@ -60,6 +66,16 @@ class ScenarioWorld {
   const std::vector<std::string>& applied_events() const { return applied_; }
 
  private:
+  // A value changing linearly from `from` at `start` to `to` over `duration` seconds.
+  template <class T>
+  struct Ramp {
+    T from, to;
+    double start = 0.0, duration = 0.0;
+    T At(double t) const {
+      const double a = duration > 0 ? std::clamp((t - start) / duration, 0.0, 1.0) : 1.0;
+      return from + a * (to - from);
+    }
+  };
   struct ObjectState {
     const ObjectSpec* spec;
     TriangleMesh mesh;
@@ -69,6 +85,7 @@ class ScenarioWorld {
     bool present;
     bool present_at_start;
     bool moved = false;
+    std::optional<Ramp<Eigen::Vector2d>> walk;  // sliding on its support, no physics body
   };
   struct ArmMotion {
     const EventSpec* event;
@@ -83,6 +100,9 @@ class ScenarioWorld {
   void Despawn(ObjectState& o);
   void Apply(const EventSpec& e);
   void StepOnce();
+  void StepWalks();
+  void StartWalk(ObjectState& o, const EventSpec& e);
+  bool IsForeground(const ObjectState& o) const;
   ObjectState& Object(const std::string& name);
   const ObjectState& Object(const std::string& name) const;
   std::optional<TriangleMesh> ArmMesh() const;
@@ -96,6 +116,8 @@ class ScenarioWorld {
   std::vector<bool> event_done_;
   std::vector<ArmMotion> arms_;
   std::vector<std::string> applied_;
+  Ramp<Eigen::Vector3d> sun_;
+  Ramp<double> exposure_;
   double time_ = 0.0;
 };
 

@@ -90,6 +90,32 @@ TEST(ScenarioParser, ErrorsNameFileLineAndProblem) {
   EXPECT_EQ(ErrorOf("name x\n"), "test.scn: neither 'static_camera' nor a trajectory ('arc')");
   EXPECT_EQ(ErrorOf(base + "arc 0 0 -1 0 10 0.1\n"),
             "test.scn:3: radius must be in [0.01, 100], got -1");
+  EXPECT_EQ(ErrorOf(base + "event 1 sun 0 0 -1\n"),
+            "test.scn:3: a sun event needs 'daylight' declared before it");
+  EXPECT_EQ(ErrorOf(base + "daylight 0 0 -1 1 1 1\nevent 1 sun 0 0 0\n"),
+            "test.scn:4: sun direction must not be zero");
+  EXPECT_EQ(ErrorOf(base + "material m phong 1 1 1\nobject a box 1 1 1 m at 0 0\n"
+                           "event 1 walk a 2 2\n"),
+            "test.scn:5: missing walk seconds after '2'");
+  EXPECT_EQ(ErrorOf(base + "event 1 exposure 0\n"),
+            "test.scn:3: exposure must be in [0.0001, 10000], got 0");
+}
+
+TEST(ScenarioParser, ReadsWalkSunAndExposureEvents) {
+  const Scenario s = ParseScenarioText(
+      "name x\nstatic_camera 0 -2 1 0 0 0\nframes 100\nfps 1\ndaylight 0 0 -1 1 1 1\n"
+      "material m phong 1 1 1\nobject a box 1 1 1 m at 0 0\n"
+      "event 1 walk a 2 3 4.5\nevent 2 sun 0 3 -4 over 10\nevent 3 exposure 1.5\n");
+  ASSERT_EQ(s.events.size(), 3u);
+  EXPECT_EQ(s.events[0].kind, EventSpec::Kind::kWalk);
+  EXPECT_EQ(s.events[0].position, Eigen::Vector3d(2, 3, 0));
+  EXPECT_EQ(s.events[0].duration, 4.5);
+  EXPECT_EQ(s.events[1].kind, EventSpec::Kind::kSun);
+  EXPECT_TRUE(s.events[1].position.isApprox(Eigen::Vector3d(0, 0.6, -0.8)));  // normalised
+  EXPECT_EQ(s.events[1].duration, 10);
+  EXPECT_EQ(s.events[2].kind, EventSpec::Kind::kExposure);
+  EXPECT_EQ(s.events[2].value, 1.5);
+  EXPECT_EQ(s.events[2].duration, 0);
 }
 
 // The reproducers of the reliability issue: each was accepted and then crashed, hung, allocated

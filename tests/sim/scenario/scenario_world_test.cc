@@ -108,6 +108,50 @@ TEST(ScenarioWorld, AnObjectAddedAndLaterRemovedLeavesARemovedRegion) {
   EXPECT_EQ(cv::countNonZero(mask == 255), 0);
 }
 
+TEST(ScenarioWorld, AWalkerSlidesAtConstantSpeedAndCountsAsForeground) {
+  const Scenario s = ParseScenarioText(std::string(kTable) +
+                                       "static_camera 1.2 -1.2 1.3 0 0 0.7\n"
+                                       "object person box 0.4 0.3 1.7 wood at -2 -1 absent\n"
+                                       "event 0.5 add person\n"
+                                       "event 0.5 walk person 1 -1 2\n");
+  ScenarioWorld world(s);
+  world.AdvanceTo(1.5);  // half way: x from −2 to 1 over 2 s
+  EXPECT_NEAR(world.ObjectPose("person").translation().x(), -0.5, 0.01);
+  EXPECT_NEAR(world.ObjectPose("person").translation().y(), -1.0, 1e-9);
+  EXPECT_NEAR(world.ObjectPose("person").translation().z(), 0.85, 1e-9);  // standing on the floor
+  world.AdvanceTo(3.0);
+  EXPECT_NEAR(world.ObjectPose("person").translation().x(), 1.0, 1e-9);
+  EXPECT_EQ(world.AddedIds(), std::vector<int>{5});
+  // The background is the scene without it.
+  RayScene background;
+  world.AddBackgroundToScene(background);
+  background.Commit();
+  const cv::Mat ids = RenderIds(background, s.camera, world.HeadPose());
+  EXPECT_EQ(cv::countNonZero(ids == 5), 0);
+  EXPECT_GT(cv::countNonZero(ids == 3), 20);  // the box, there from the start
+}
+
+TEST(ScenarioWorld, SunAndExposureChangeLinearlyOverTheirDurations) {
+  const Scenario s = ParseScenarioText(std::string(kTable) +
+                                       "static_camera 1.2 -1.2 1.3 0 0 0.7\n"
+                                       "daylight 1 0 0 0.2 0.2 0.2\n"
+                                       "sensor exposure 1.0\n"
+                                       "event 1 sun 0 1 0 over 2\n"
+                                       "event 1 exposure 2 over 4\n");
+  ScenarioWorld world(s);
+  world.AdvanceTo(0.9);
+  EXPECT_NEAR(world.CurrentLighting().directional[0].direction.x(), 1.0, 1e-9);
+  EXPECT_NEAR(world.CurrentExposure(), 1.0, 1e-9);
+  world.AdvanceTo(2.0);  // half way: (0.5, 0.5, 0) normalised, exposure 1.25
+  const Eigen::Vector3d d = world.CurrentLighting().directional[0].direction;
+  EXPECT_NEAR(d.x(), std::sqrt(0.5), 1e-3);
+  EXPECT_NEAR(d.y(), std::sqrt(0.5), 1e-3);
+  EXPECT_NEAR(world.CurrentExposure(), 1.25, 1e-3);
+  world.AdvanceTo(5.5);
+  EXPECT_NEAR(world.CurrentLighting().directional[0].direction.y(), 1.0, 1e-9);
+  EXPECT_NEAR(world.CurrentExposure(), 2.0, 1e-9);
+}
+
 TEST(ScenarioWorld, CameraHeadSitsOnTheMastLookingAtTheArcCentre) {
   const Scenario s = ParseScenarioText(std::string(kTable) +
                                        "mount 0 0 1.10 90 15\n"
