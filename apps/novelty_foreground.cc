@@ -47,6 +47,9 @@ int Run(int argc, char** argv) {
   TCLAP::SwitchArg learn_foreground(
       "", "learn-foreground", "Learn foreground pixels too (the thesis's update; default: hold)",
       cmd);
+  TCLAP::ValueArg<int> max_hold("", "max-hold",
+                                "A pixel held this many frames in a row learns again (0: no limit)",
+                                false, o.max_hold_frames, "FRAMES", cmd);
   TCLAP::ValueArg<std::string> methods("", "methods",
                                        "Comma-separated, of novelty, mog2, knn, gsoc, cnt", false,
                                        "novelty,mog2,knn,gsoc,cnt", "LIST", cmd);
@@ -62,6 +65,7 @@ int Run(int argc, char** argv) {
   o.labels.shadow_label = !no_shadows.getValue();
   o.labels.min_blob_pixels = min_blob.getValue();
   o.hold_foreground = !learn_foreground.getValue();
+  o.max_hold_frames = max_hold.getValue();
   o.max_frames = frames.getValue();
   o.write_masks = !no_masks.getValue();
   o.methods.clear();

@@ -51,7 +51,10 @@ class NoveltyMethod : public ForegroundMethodRunner {
   explicit NoveltyMethod(const ForegroundRunOptions& o) : labels_(o.labels) {
     appearance::AppearanceMapOptions m;
     m.predictive_novelty = true;
-    if (o.hold_foreground) m.hold_above_nats = o.labels.threshold_nats;
+    if (o.hold_foreground) {
+      m.hold_above_nats = o.labels.threshold_nats;
+      m.max_hold_frames = o.max_hold_frames;
+    }
     map_ = std::make_unique<appearance::AppearanceMap>(m);
   }
   cv::Mat Apply(const cv::Mat& rgb) override {

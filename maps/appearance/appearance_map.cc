@@ -69,6 +69,8 @@ struct FrameRows {
   cv::Mat observed_y;  // learn_warp_sigma: the tiles leave their rows of the frame's Y here
   cv::Mat surprise, expected_rgb, uncertainty, stored_ab_sigma, stored_tau, stored_depth,
       predictive;
+  int max_hold_frames;  // AppearanceMapOptions::max_hold_frames
+  cv::Mat held_frames;  // CV_16UC1, per pixel the frames it has been held in a row (kept)
 };
 
 // Working planes of one tile, reused for the tiles one task processes; prior and posterior
@@ -188,6 +190,12 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
   // Where the frame is foreground by the hold rule, the prior stays (AppearanceMapOptions).
   if (!predictive.empty() && std::isfinite(f.hold_above_nats)) {
     cv::Mat hold = predictive > f.hold_above_nats;  // NaN (uncovered) compares false
+    if (f.max_hold_frames > 0) {                    // a pixel held that long learns again
+      cv::Mat held = RowsOf(f.held_frames, rows);
+      held.setTo(0, hold == 0);
+      cv::add(held, 1, held, hold);  // saturates at 65535
+      hold &= held <= f.max_hold_frames;
+    }
     for (int c = 0; c < kChannels; ++c) p0[c]->copyTo(*p1[c], hold);
   }
   // The posterior as the store keeps it.
@@ -222,9 +230,18 @@ struct AppearanceMap::TileWorkPool {
 
 AppearanceMap::~AppearanceMap() = default;
 
+cv::Mat AppearanceMap::HeldFrames(int rows, int cols) {
+  if (options_.max_hold_frames <= 0) return {};
+  if (held_frames_.rows != rows || held_frames_.cols != cols)
+    held_frames_ = cv::Mat::zeros(rows, cols, CV_16UC1);
+  return held_frames_;
+}
+
 AppearanceMap::AppearanceMap(const AppearanceMapOptions& options)
     : options_(options), map_(options.views), tile_work_(std::make_unique<TileWorkPool>()) {
   options_.surprise.update.Check();
+  if (options_.max_hold_frames < 0 || options_.max_hold_frames > 65000)
+    throw std::invalid_argument("AppearanceMapOptions: max_hold_frames must be in 0…65000");
   if (!(options_.hold_above_nats > 0.0) ||
       (std::isfinite(options_.hold_above_nats) && !options_.predictive_novelty))
     throw std::invalid_argument(
@@ -296,7 +313,9 @@ AppearanceProducts AppearanceMap::Insert(const cv::Mat& rgb, const cv::Mat& dept
                     cv::Mat(rows, cols, CV_MAKETYPE(options_.half_precision ? CV_16F : CV_32F, 7)),
                     cv::Mat(rows, cols, CV_32FC3),
                     cv::Mat(rows, cols, CV_32FC1),
-                    options_.predictive_novelty ? cv::Mat(rows, cols, CV_32FC1) : cv::Mat()};
+                    options_.predictive_novelty ? cv::Mat(rows, cols, CV_32FC1) : cv::Mat(),
+                    options_.max_hold_frames,
+                    HeldFrames(rows, cols)};
   const int tiles = (rows + kTileRows - 1) / kTileRows;
   // Beside the tiles, when the frame was warped, one more task: the mesh plan of the frame's
   // depth, which the view the frame becomes keeps for its next warp — a moving camera warps it

@@ -56,6 +56,10 @@ struct AppearanceMapOptions {
   /// that a person standing still is not absorbed into the background at once (the map adapts
   /// to a changed pixel within a frame otherwise, eq. 4.8). Infinite: learn everywhere (thesis).
   double hold_above_nats = std::numeric_limits<double>::infinity();
+  /// With hold_above_nats: a pixel held this many frames in a row learns again (0: held as long
+  /// as it stays novel). What stays that long is the new background — an exposure step, a
+  /// window gone to white, a parked object. Counted per image pixel, for a fixed camera.
+  int max_hold_frames = 0;
   ViewBasedMapOptions views;
 };
 
@@ -123,6 +127,9 @@ class AppearanceMap {
   // within a few frames, and a different pose source may follow.
   double learnt_warp_variance_ = 0.0;
   bool predict_depth_ = false;
+  // max_hold_frames: per pixel the frames held in a row (empty until needed; not saved).
+  cv::Mat held_frames_;
+  cv::Mat HeldFrames(int rows, int cols);
   // A frame runs in row tiles on all cores (appearance_map.cc): each tile converts its rows of
   // the frame and of the prior into small planes that stay in cache through the kernel, and
   // writes its rows of the products and of the posterior to be stored, always new images.

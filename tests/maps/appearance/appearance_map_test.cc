@@ -324,6 +324,42 @@ TEST(AppearanceMap, PredictiveNoveltyIsTheNegativeLogDensityOfTheFrameUnderThePr
   EXPECT_GT(got[1], got[0] + 10.0) << "39 levels away is far less probable than 1";
 }
 
+// The hold rule: a static camera's map after 30 frames of grey 120 sees grey 200 from then on.
+// Held, the background stays 120 and the new grey stays novel (its predictive novelty as high
+// as at first sight after 20 frames); with max_hold_frames 5 the pixels learn from the sixth
+// frame on and the new grey is background within a few frames; learning everywhere (the thesis)
+// absorbs it at once. The novelty of the first frame of 200 is the same in all three.
+TEST(AppearanceMap, HeldPixelsKeepTheirBackgroundUntilTheHoldLimit) {
+  const core::PinholeCamera cam = core::PinholeCamera::FromFov(32, 24, 1.0);
+  const cv::Mat depth(24, 32, CV_32FC1, cv::Scalar(2.0f));
+  const auto grey = [](int v) { return cv::Mat(24, 32, CV_8UC3, cv::Scalar::all(v)); };
+  const double threshold = 3 * std::log(256.0);
+  const auto run = [&](bool hold, int max_hold) {
+    AppearanceMapOptions o;
+    o.predictive_novelty = true;
+    if (hold) o.hold_above_nats = threshold;
+    o.max_hold_frames = max_hold;
+    AppearanceMap map(o);
+    for (int n = 0; n < 30; ++n) map.Insert(grey(120), depth, cam, Eigen::Isometry3d::Identity());
+    std::vector<double> novelty;
+    for (int n = 0; n < 20; ++n)
+      novelty.push_back(
+          cv::mean(map.Insert(grey(200), depth, cam, Eigen::Isometry3d::Identity()).predictive)[0]);
+    return novelty;
+  };
+  const std::vector<double> held = run(true, 0), limited = run(true, 5), learnt = run(false, 0);
+  EXPECT_GT(held[0], threshold);
+  EXPECT_NEAR(limited[0], held[0], 1e-3 * held[0]);
+  EXPECT_NEAR(learnt[0], held[0], 1e-3 * held[0]);
+  EXPECT_NEAR(held[19], held[0], 1e-3 * held[0]) << "held: still as novel";
+  for (int n = 0; n < 5; ++n) EXPECT_NEAR(limited[n], held[0], 1e-3 * held[0]) << n;
+  EXPECT_LT(limited[19], threshold) << "learnt after the limit";
+  EXPECT_LT(learnt[1], threshold) << "the thesis's update absorbs it at once";
+  AppearanceMapOptions bad;
+  bad.max_hold_frames = -1;
+  EXPECT_THROW(AppearanceMap{bad}, std::invalid_argument);
+}
+
 // The expected depth is the depth of what the map has seen: on the clip, where both are known,
 // the simulator's true depth of every frame after the first lies within 1 % of it at the median
 // pixel (depth edges and the cup's arrival are a small share), and is asked for, not given.
