@@ -1,7 +1,7 @@
 // novelty-import: a recorded RGB-D sequence, or a fixed camera's folder of images, into an MRPT
 // rawlog the maps read (sensors/dataset/rgbd_sequence.h, rgbd_importer.h, fixed_camera_folder.h).
 //
-//   novelty-import DIR --out OUT.rawlog [--layout auto|tum|icl-nuim|7scenes|fixed-camera]
+//   novelty-import DIR --out OUT.rawlog [--layout auto|tum|icl-nuim|7scenes|fixed-camera|cdnet]
 //       [--camera fr1|fr2|fr3|icl-nuim|7scenes | --camera-file FILE | --fx FX --fy FY --cx CX
 //        --cy CY]
 //       [--depth-scale S] [--max-time-difference 0.02] [--first N] [--last N] [--every K]
@@ -11,9 +11,10 @@
 // depth/, pose.txt), a 7-Scenes sequence (frame-NNNNNN.{color,depth}.png, .pose.txt), or with
 // --layout fixed-camera a folder of images from one camera that does not move (a static camera's
 // frames, or the lightings of one viewpoint; mask.png limits the pixels, --include/--exclude pick
-// the files). OUT gets one CObservation3DRangeScan per frame with external images in OUT_Images/,
-// and a CObservationRobotPose "POSE_DATASET" before each frame the dataset gives a pose for (a
-// fixed camera: the origin, its depth a plane), or "POSE_VO" from visual odometry
+// the files), or with --layout cdnet a CDnet-layout folder (input/in000001.jpg…, ROI.bmp as the
+// mask) as a fixed camera. OUT gets one CObservation3DRangeScan per frame with external images in
+// OUT_Images/, and a CObservationRobotPose "POSE_DATASET" before each frame the dataset gives a
+// pose for (a fixed camera: the origin, its depth a plane), or "POSE_VO" from visual odometry
 // (sensors/localization/rgbd_odometry.h) for a sequence without poses or with --poses visual:
 // `novelty-run --rawlog OUT` plays it,
 // `novelty-illumination-map --lighting OUT:each` learns a lighting per frame, rawlog-edit and
@@ -107,7 +108,7 @@ struct Flags {
   explicit Flags(TCLAP::CmdLine& cmd)
       : in("folder", "The sequence's folder", true, "", "DIR", cmd),
         out("o", "out", "Output rawlog", true, "", "OUT.rawlog", cmd),
-        layout("", "layout", "auto, tum, icl-nuim, 7scenes or fixed-camera", false,
+        layout("", "layout", "auto, tum, icl-nuim, 7scenes, fixed-camera or cdnet", false,
                sensors::RgbdSequenceOptions().layout, "NAME", cmd),
         camera("", "camera",
                "Intrinsics by name: fr1, fr2, fr3 (TUM), icl-nuim, 7scenes (default: the "
@@ -148,6 +149,10 @@ struct Flags {
   TCLAP::MultiArg<std::string> include, exclude;
 };
 
+bool IsFixedCamera(const std::string& layout) {
+  return layout == "fixed-camera" || layout == "cdnet";
+}
+
 // Every flag is checked before anything is read: a bad value is a usage error naming it.
 void CheckFlags(const Flags& f) {
   CheckFlag(f.every.getValue() >= 1, "--every must be >= 1");
@@ -160,27 +165,30 @@ void CheckFlags(const Flags& f) {
   CheckFlag(!f.scale.isSet() || (f.scale.getValue() >= 1 && f.scale.getValue() <= 1e6),
             "--depth-scale must be in [1, 1e6] units per metre");
   const std::string l = f.layout.getValue();
-  CheckFlag(l == "auto" || l == "tum" || l == "icl-nuim" || l == "7scenes" || l == "fixed-camera",
-            "--layout must be auto, tum, icl-nuim, 7scenes or fixed-camera");
+  CheckFlag(l == "auto" || l == "tum" || l == "icl-nuim" || l == "7scenes" || l == "fixed-camera" ||
+                l == "cdnet",
+            "--layout must be auto, tum, icl-nuim, 7scenes, fixed-camera or cdnet");
+  const bool fixed = IsFixedCamera(l);
   const std::string p = f.poses.getValue();
   CheckFlag(p == "auto" || p == "dataset" || p == "visual",
             "--poses must be auto, dataset or visual");
-  CheckFlag(l != "fixed-camera" || !f.poses.isSet(),
-            "a fixed camera stays at the origin: no --poses");
+  CheckFlag(!fixed || !f.poses.isSet(), "a fixed camera stays at the origin: no --poses");
   CheckFlag(l == "fixed-camera" || !(f.include.isSet() || f.exclude.isSet()),
             "--include and --exclude pick the images of --layout fixed-camera");
-  CheckFlag(l != "fixed-camera" ||
-                !(f.camera.isSet() || f.camera_file.isSet() || f.fx.isSet() || f.scale.isSet()),
-            "a fixed camera's intrinsics are nominal and its depth a plane: no --camera, "
-            "--camera-file, --fx or --depth-scale");
+  CheckFlag(
+      !fixed || !(f.camera.isSet() || f.camera_file.isSet() || f.fx.isSet() || f.scale.isSet()),
+      "a fixed camera's intrinsics are nominal and its depth a plane: no --camera, "
+      "--camera-file, --fx or --depth-scale");
 }
 
-// --layout fixed-camera: the folder's images at one pose, a plane as depth.
+// --layout fixed-camera or cdnet: the folder's images at one pose, a plane as depth.
 void ImportFixedCamera(const Flags& f, const sensors::RgbdImportOptions& io) {
   sensors::FixedCameraOptions fo;
   fo.pick = {f.include.getValue(), f.exclude.getValue()};
   fo.max_pixels = io.max_pixels;
-  const sensors::FixedCameraFolder folder(f.in.getValue(), fo);
+  const sensors::FixedCameraFolder folder = f.layout.getValue() == "cdnet"
+                                                ? sensors::CdnetFixedCamera(f.in.getValue(), fo)
+                                                : sensors::FixedCameraFolder(f.in.getValue(), fo);
   const sensors::RgbdImportResult r =
       sensors::ImportFixedCameraFolder(folder, f.out.getValue(), io);
   std::printf("%s: %d images of one fixed camera (%dx%d, %zu left out by the patterns%s) → %s\n",
@@ -230,7 +238,7 @@ int Run(int argc, char** argv) {
   const Flags f(cmd);
   cmd.Parse(argc, argv);
   CheckFlags(f);
-  if (f.layout.getValue() != "fixed-camera") {  // the camera flags' combinations
+  if (!IsFixedCamera(f.layout.getValue())) {  // the camera flags' combinations
     sensors::RgbdSequenceOptions probe;
     SetCamera(f.camera, f.camera_file, {&f.fx, &f.fy, &f.cx, &f.cy}, probe);
   }
@@ -247,7 +255,7 @@ int Run(int argc, char** argv) {
     progress->Update(done);
     if (done == total) progress->Finish();
   };
-  if (f.layout.getValue() == "fixed-camera")
+  if (IsFixedCamera(f.layout.getValue()))
     ImportFixedCamera(f, io);
   else
     ImportSequence(f, io);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/frame_stem.h"
+#include "sensors/dataset/cdnet_folder.h"
 #include "sensors/dataset/rgbd_importer.h"
 #include "sensors/rawlog/camera_pose_observation.h"
 #include "sensors/rawlog/rawlog_output.h"
@@ -40,6 +41,7 @@ FixedCameraFolder::FixedCameraFolder(const std::string& folder, const FixedCamer
                                   ? ""
                                   : " (" + std::to_string(listing_.left_out.size()) +
                                         " left out by the include/exclude patterns)"));
+  if (!o.mask.empty()) listing_.mask = o.mask;
   cv::Mat unused;
   const cv::Size size = SizeOf(listing_.images.front(), o.max_pixels, &unused);
   camera_ = NominalCamera(size);
@@ -52,6 +54,13 @@ FixedCameraFolder::FixedCameraFolder(const std::string& folder, const FixedCamer
                                std::to_string(size.width) + "x" + std::to_string(size.height));
     depth_.setTo(0.0f, mask == 0);
   }
+}
+
+FixedCameraFolder CdnetFixedCamera(const std::string& dir, FixedCameraOptions options) {
+  const CdnetFolder cdnet = ReadCdnetFolder(dir);  // input/ and its frame names checked
+  if (!cdnet.roi.empty()) options.mask = dir + "/ROI.bmp";
+  options.pick.include = {"in*"};
+  return FixedCameraFolder(dir + "/input", options);
 }
 
 std::string FixedCameraFolder::name(int k) const {

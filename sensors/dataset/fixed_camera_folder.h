@@ -42,6 +42,8 @@ struct FixedCameraOptions {
   /// m, the plane every image is given as depth (any positive value serves one pose).
   double depth = 1.0;
   long long max_pixels = kDefaultMaxImagePixels;  ///< per image, checked before decoding
+  /// A mask file to use instead of the folder's mask.png (CDnet's ROI.bmp lies beside input/).
+  std::string mask;
 };
 
 class FixedCameraFolder {
@@ -73,6 +75,10 @@ class FixedCameraFolder {
   core::PinholeCamera camera_;
   cv::Mat depth_;
 };
+
+/// A CDnet-layout folder (cdnet_folder.h) as a fixed camera: its input/ frames, ROI.bmp as the
+/// mask. Throws std::runtime_error naming the folder or file (ReadCdnetFolder's checks).
+FixedCameraFolder CdnetFixedCamera(const std::string& dir, FixedCameraOptions options = {});
 
 /// Writes `folder`'s images (options.first…last, every k-th; their max_pixels is the folder's) to
 /// `rawlog` as rgbd_importer.h writes a sequence: per image a CObservationRobotPose

@@ -86,5 +86,35 @@ TEST(FixedCameraFolder, BadFoldersAreErrorsNamingTheFile) {
   fs::remove_all(dir);
 }
 
+// A CDnet folder: input/in000001.jpg… as frames (groundtruth/ and a stray file left alone), its
+// ROI.bmp as the mask; a folder without input/ is an error naming it.
+TEST(FixedCameraFolder, ACdnetFolderIsAFixedCameraWithItsRoiAsMask) {
+  const fs::path dir = FixedFolder("cdnet");
+  fs::create_directories(dir / "input");
+  fs::create_directories(dir / "groundtruth");
+  for (const char* name : {"in000001.jpg", "in000002.jpg"})
+    ASSERT_TRUE(cv::imwrite((dir / "input" / name).string(), cv::Mat(6, 10, CV_8UC3)));
+  ASSERT_TRUE(cv::imwrite((dir / "groundtruth" / "gt000001.png").string(), cv::Mat(6, 10, CV_8U)));
+  cv::Mat roi = cv::Mat::zeros(6, 10, CV_8U);
+  roi.colRange(5, 10).setTo(255);
+  ASSERT_TRUE(cv::imwrite((dir / "ROI.bmp").string(), roi));
+  const FixedCameraFolder f = CdnetFixedCamera(dir.string());
+  ASSERT_EQ(f.size(), 2);
+  EXPECT_EQ(f.name(1), "in000002.jpg");
+  EXPECT_EQ(cv::countNonZero(f.depth()), 30);
+  EXPECT_EQ(f.depth().at<float>(0, 4), 0.0f);
+  EXPECT_GT(f.depth().at<float>(0, 5), 0.0f);
+  fs::remove(dir / "ROI.bmp");
+  EXPECT_EQ(cv::countNonZero(CdnetFixedCamera(dir.string()).depth()), 60);
+  fs::remove_all(dir / "input");
+  try {
+    CdnetFixedCamera(dir.string());
+    ADD_FAILURE() << "no input/ accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace novelty::sensors
