@@ -110,17 +110,63 @@ void PredictiveRows(const std::array<cv::Mat*, kChannels>& p0, const std::vector
   const float *s0 = p0[kSigma]->ptr<float>(), *s1 = p0[kSigma + 1]->ptr<float>(),
               *s2 = p0[kSigma + 2]->ptr<float>();
   const float *x0 = x[0].ptr<float>(), *x1 = x[1].ptr<float>(), *x2 = x[2].ptr<float>();
-  for (std::size_t i = 0; i < n; ++i) {  // plain loads, so that the compiler vectorises it
-    const stats::NormalGammaT<float> p[3] = {{alpha[i], b0[i], t0[i], s0[i]},
-                                             {alpha[i], b1[i], t1[i], s1[i]},
-                                             {alpha[i], b2[i], t2[i], s2[i]}};
-    const float xs[3] = {x0[i], x1[i], x2[i]};
-    stats::PredictiveLogArguments(p, xs, 3, u[i], v[i], o[i]);
+  // Sixteen pixels at a time as Eigen arrays: GCC leaves the loop over floats scalar (the
+  // template's arrays of structs), which cost as much as the whole surprise kernel.
+  const auto arguments = [&](auto of, std::size_t i) {
+    using T = decltype(of(alpha, i));
+    const T a = of(alpha, i);
+    const stats::NormalGammaT<T> p[3] = {{a, of(b0, i), of(t0, i), of(s0, i)},
+                                         {a, of(b1, i), of(t1, i), of(s1, i)},
+                                         {a, of(b2, i), of(t2, i), of(s2, i)}};
+    const T xs[3] = {of(x0, i), of(x1, i), of(x2, i)};
+    T uu, vv, oo;
+    stats::PredictiveLogArguments(p, xs, 3, uu, vv, oo);
+    return std::array<T, 3>{uu, vv, oo};
+  };
+  using Packet = Eigen::Array<float, 16, 1>;
+  std::size_t i = 0;
+  for (; i + Packet::SizeAtCompileTime <= n; i += Packet::SizeAtCompileTime) {
+    const auto r =
+        arguments([](const float* p, std::size_t k) { return Packet(Packet::Map(p + k)); }, i);
+    Packet::Map(u + i) = r[0], Packet::Map(v + i) = r[1], Packet::Map(o + i) = r[2];
+  }
+  for (; i < n; ++i) {
+    const auto r = arguments([](const float* p, std::size_t k) { return p[k]; }, i);
+    u[i] = r[0], v[i] = r[1], o[i] = r[2];
   }
   cv::log(t.log_u, t.log_u);
   cv::log(t.log_v, t.log_v);
   float* result = out.ptr<float>();
-  for (std::size_t i = 0; i < n; ++i) result[i] = 0.5f * u[i] + (alpha[i] + 0.5f) * v[i] + o[i];
+  for (std::size_t k = 0; k < n; ++k) result[k] = 0.5f * u[k] + (alpha[k] + 0.5f) * v[k] + o[k];
+}
+
+// The hold rule on a tile's rows (AppearanceMapOptions::hold_above_nats, max_hold_frames): where
+// predictive novelty exceeds the threshold the posterior is the prior, unless the pixel has been
+// held max_hold_frames in a row. One pass that touches the parameters of held pixels only (the
+// few), where masked copies of ten planes cost as much as the predictive product itself.
+void HoldRows(const cv::Mat& predictive, const FrameRows& f, cv::Mat held,
+              const std::array<cv::Mat*, kChannels>& p0,
+              const std::array<cv::Mat*, kChannels>& p1) {
+  CV_Assert(predictive.isContinuous() && (held.empty() || held.isContinuous()));
+  std::array<const float*, kChannels> from;
+  std::array<float*, kChannels> to;
+  for (int c = 0; c < kChannels; ++c) {
+    CV_Assert(p0[c]->isContinuous() && p1[c]->isContinuous());
+    from[c] = p0[c]->ptr<float>(), to[c] = p1[c]->ptr<float>();
+  }
+  const float threshold = float(f.hold_above_nats), *q = predictive.ptr<float>();
+  std::uint16_t* count = held.empty() ? nullptr : held.ptr<std::uint16_t>();
+  for (std::size_t i = 0, n = predictive.total(); i < n; ++i) {
+    if (!(q[i] > threshold)) {  // NaN (uncovered) is not held
+      if (count) count[i] = 0;
+      continue;
+    }
+    if (count) {
+      count[i] = std::uint16_t(std::min(int(count[i]) + 1, 65535));
+      if (count[i] > f.max_hold_frames) continue;  // held that long: it learns again
+    }
+    for (int c = 0; c < kChannels; ++c) to[c][i] = from[c][i];
+  }
 }
 
 // Rows [r0, r1): prior planes from the prediction, update and surprise (eq. 4.8-4.21; α is shared
@@ -188,16 +234,9 @@ void ProcessRows(const FrameRows& f, const stats::SurpriseBatchOptions& options,
       core::FillWhere(predictive, uncovered, std::numeric_limits<float>::quiet_NaN());
   }
   // Where the frame is foreground by the hold rule, the prior stays (AppearanceMapOptions).
-  if (!predictive.empty() && std::isfinite(f.hold_above_nats)) {
-    cv::Mat hold = predictive > f.hold_above_nats;  // NaN (uncovered) compares false
-    if (f.max_hold_frames > 0) {                    // a pixel held that long learns again
-      cv::Mat held = RowsOf(f.held_frames, rows);
-      held.setTo(0, hold == 0);
-      cv::add(held, 1, held, hold);  // saturates at 65535
-      hold &= held <= f.max_hold_frames;
-    }
-    for (int c = 0; c < kChannels; ++c) p0[c]->copyTo(*p1[c], hold);
-  }
+  if (!predictive.empty() && std::isfinite(f.hold_above_nats))
+    HoldRows(predictive, f, f.max_hold_frames > 0 ? RowsOf(f.held_frames, rows) : cv::Mat(), p0,
+             p1);
   // The posterior as the store keeps it.
   cv::Mat stored_ab_sigma = RowsOf(f.stored_ab_sigma, rows);
   core::MergeInto(t.post_ab_sigma, stored_ab_sigma);

@@ -48,8 +48,8 @@ struct AppearanceMapOptions {
   bool align_to_prior = false;
   PriorAlignmentOptions alignment;
   /// Also compute predictive novelty (AppearanceProducts::predictive), the basis of a fixed
-  /// camera's foreground mask. Off by default: on the AVX-512 host it adds about 0.3 ms to a
-  /// static camera's 0.45 ms frame (then slower than MOG2) and 0.5–1 ms to seven views.
+  /// camera's foreground mask. Off by default: on the AVX-512 host it adds about 0.35 ms to a
+  /// static camera's 0.5 ms frame (BM_ForegroundStaticCamera) and 0.5–1 ms to seven views.
   bool predictive_novelty = false;
   /// With predictive_novelty: where a pixel's predictive novelty exceeds this (nats), the map
   /// keeps its prior there instead of learning the frame — a fixed camera's update policy, so

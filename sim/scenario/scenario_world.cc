@@ -282,15 +282,15 @@ void ScenarioWorld::StartWalk(ObjectState& o, const EventSpec& e) {
     o.moved = true;
   }
   o.pose.translation().z() = SupportTop(o.spec->support) + Height(*o.spec) / 2;
-  o.walk = Ramp<Eigen::Vector2d>{o.pose.translation().head<2>(), e.position.head<2>(), time_,
-                                 e.duration};
+  o.walk = LinearRamp<Eigen::Vector2d>{o.pose.translation().head<2>(), e.position.head<2>(), time_,
+                                       e.duration};
 }
 
 void ScenarioWorld::StepWalks() {
   for (ObjectState& o : objects_) {
     if (!o.walk) continue;
     o.pose.translation().head<2>() = o.walk->At(time_);
-    if (time_ >= o.walk->start + o.walk->duration) o.walk.reset();
+    if (o.walk->Done(time_)) o.walk.reset();
   }
 }
 

@@ -20,6 +20,19 @@ namespace novelty::sim {
 inline constexpr int kArmObjectId = 1000;
 inline constexpr int kRoomObjectId = 0;
 
+/// A value changing linearly from `from` at `start` to `to` over `duration` seconds (walks, the
+/// sun, the exposure).
+template <class T>
+struct LinearRamp {
+  T from, to;
+  double start = 0.0, duration = 0.0;
+  T At(double t) const {
+    const double a = duration > 0 ? std::clamp((t - start) / duration, 0.0, 1.0) : 1.0;
+    return T(from + a * (to - from));
+  }
+  bool Done(double t) const { return t >= start + duration; }
+};
+
 class ScenarioWorld {
  public:
   /// Builds the world and lets the initial objects settle for `settle_seconds` (physics only).
@@ -66,16 +79,6 @@ class ScenarioWorld {
   const std::vector<std::string>& applied_events() const { return applied_; }
 
  private:
-  // A value changing linearly from `from` at `start` to `to` over `duration` seconds.
-  template <class T>
-  struct Ramp {
-    T from, to;
-    double start = 0.0, duration = 0.0;
-    T At(double t) const {
-      const double a = duration > 0 ? std::clamp((t - start) / duration, 0.0, 1.0) : 1.0;
-      return from + a * (to - from);
-    }
-  };
   struct ObjectState {
     const ObjectSpec* spec;
     TriangleMesh mesh;
@@ -85,7 +88,7 @@ class ScenarioWorld {
     bool present;
     bool present_at_start;
     bool moved = false;
-    std::optional<Ramp<Eigen::Vector2d>> walk;  // sliding on its support, no physics body
+    std::optional<LinearRamp<Eigen::Vector2d>> walk;  // sliding on its support, no physics body
   };
   struct ArmMotion {
     const EventSpec* event;
@@ -116,8 +119,8 @@ class ScenarioWorld {
   std::vector<bool> event_done_;
   std::vector<ArmMotion> arms_;
   std::vector<std::string> applied_;
-  Ramp<Eigen::Vector3d> sun_;
-  Ramp<double> exposure_;
+  LinearRamp<Eigen::Vector3d> sun_;
+  LinearRamp<double> exposure_;
   double time_ = 0.0;
 };
 

@@ -11,6 +11,7 @@
 #include "core/rigid_pose.h"
 #include "maps/appearance/appearance_map.h"
 #include "maps/appearance/differencing_map.h"
+#include "maps/appearance/foreground_labels.h"
 #include "maps/views/view_selection.h"
 #include "sim/render/renderer.h"
 #include "sim/scenario/scenario_parser.h"
@@ -134,7 +135,12 @@ void BM_AppearanceMapSevenViews(benchmark::State& state) {
   }
   state.counters["views"] = double(selected) / double(n);
 }
-BENCHMARK(BM_AppearanceMapSevenViews)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_AppearanceMapSevenViews)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // A compact map (views::ReferenceViewStore, decoded_views > 0) encodes a view when it leaves the
 // decoded cache and decodes it when a prediction selects it again: one 320×240 appearance-map
@@ -189,6 +195,36 @@ void BM_AppearanceMapStaticCamera(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_AppearanceMapStaticCamera)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// A fixed camera's foreground (foreground_labels.h), built up: /0 the map with predictive
+// novelty, /1 holding the foreground's background (hold_above_nats, max_hold_frames 200), /2 also
+// the labels (threshold, shadow label) — the whole of experiments/foreground_run's method.
+void BM_ForegroundStaticCamera(benchmark::State& state) {
+  StaticFrames();
+  AppearanceMapOptions o;
+  o.predictive_novelty = true;
+  const ForegroundLabelOptions labels;
+  if (state.range(0) >= 1) {
+    o.hold_above_nats = labels.threshold_nats;
+    o.max_hold_frames = 200;
+  }
+  AppearanceMap map(o);
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const Frame& f = StaticFrames()[k];
+    const AppearanceProducts p = map.Insert(f.rgb, f.depth, kCam, f.T_world_cam);
+    if (state.range(0) >= 2)
+      benchmark::DoNotOptimize(ForegroundLabels(p.predictive, f.rgb, p.expected_rgb, labels).data);
+    benchmark::DoNotOptimize(p.predictive.data);
+    k = (k + 1) % StaticFrames().size();
+  }
+}
+BENCHMARK(BM_ForegroundStaticCamera)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_Mog2StaticCamera(benchmark::State& state) {
   StaticFrames();
