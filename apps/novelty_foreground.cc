@@ -30,8 +30,8 @@ int Run(int argc, char** argv) {
       "A fixed camera's foreground from predictive novelty, scored beside OpenCV's subtractors",
       "0.1");
   experiments::ForegroundRunOptions o;
-  TCLAP::UnlabeledValueArg<std::string> in("folder", "A CDnet-layout folder", true, "", "FOLDER",
-                                           cmd);
+  TCLAP::UnlabeledValueArg<std::string> in(
+      "input", "A CDnet-layout folder, a folder of images or a video file", true, "", "INPUT", cmd);
   TCLAP::ValueArg<std::string> out("o", "out", "Output folder", true, "", "OUT", cmd);
   TCLAP::ValueArg<double> threshold(
       "", "threshold",

@@ -12,8 +12,8 @@ find_package(Eigen3 3.3 NO_MODULE QUIET)
 novelty_require(Eigen3_FOUND libeigen3-dev)
 
 # Debian builds OpenCV without the non-free xfeatures2d (SURF); contrib is checked by ximgproc.
-find_package(OpenCV 4 QUIET COMPONENTS core imgproc imgcodecs features2d video calib3d rgbd ximgproc
-                                       bgsegm)
+find_package(OpenCV 4 QUIET COMPONENTS core imgproc imgcodecs features2d video videoio calib3d rgbd
+                                       ximgproc bgsegm)
 novelty_require(OpenCV_FOUND "libopencv-dev libopencv-contrib-dev")
 
 find_package(MRPT 2.5 QUIET COMPONENTS core system config io serialization img math poses obs maps

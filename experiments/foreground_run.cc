@@ -17,6 +17,7 @@
 #include "maps/appearance/appearance_map.h"
 #include "sensors/dataset/cdnet_folder.h"
 #include "sensors/dataset/fixed_camera_folder.h"
+#include "sensors/dataset/fixed_camera_frames.h"
 
 namespace novelty::experiments {
 
@@ -127,7 +128,7 @@ void WriteScores(const ForegroundRunResult& r, const fs::path& out) {
 
 ForegroundRunResult RunForeground(const ForegroundRunOptions& o, const std::string& out_dir) {
   if (!(o.labels.threshold_nats > 0)) throw std::invalid_argument("threshold_nats must be > 0");
-  const sensors::CdnetFolder folder = sensors::ReadCdnetFolder(o.folder);
+  sensors::FixedCameraFrames frames(o.folder, o.max_pixels);
   std::vector<std::unique_ptr<ForegroundMethodRunner>> methods;
   ForegroundRunResult r;
   fs::create_directories(out_dir);
@@ -137,39 +138,36 @@ ForegroundRunResult RunForeground(const ForegroundRunOptions& o, const std::stri
     if (o.write_masks) fs::create_directories(fs::path(out_dir) / name);
   }
   if (o.panel_every > 0) fs::create_directories(fs::path(out_dir) / "panels");
-  const int n = o.max_frames > 0 ? std::min<int>(o.max_frames, int(folder.inputs.size()))
-                                 : int(folder.inputs.size());
+  const int n = o.max_frames > 0 && (frames.size() == 0 || o.max_frames < frames.size())
+                    ? o.max_frames
+                    : frames.size();  // 0: a video that does not say
   std::vector<double> seconds(methods.size(), 0.0);
-  cv::Size size;
-  for (int k = 0; k < n; ++k) {
-    const cv::Mat rgb = sensors::ReadImageRgb8(folder.inputs[std::size_t(k)], o.max_pixels);
-    if (k == 0) size = rgb.size();
-    if (rgb.size() != size)
-      throw std::runtime_error(folder.inputs[std::size_t(k)] + ": another size than the first");
-    const int number = folder.numbers[std::size_t(k)];
-    const std::string& truth_path = folder.truths[std::size_t(k)];
-    const bool scored = folder.scored(number) && !truth_path.empty();
-    const cv::Mat truth = scored ? sensors::ReadCdnetTruth(truth_path) : cv::Mat();
+  sensors::FixedCameraFrame frame;
+  while ((o.max_frames <= 0 || r.frames < o.max_frames) && frames.Next(frame)) {
+    const cv::Mat& rgb = frame.rgb;
+    const int number = frame.number;
+    const bool scored = frames.scored(number) && !frame.truth.empty();
+    const cv::Mat truth = scored ? sensors::ReadCdnetTruth(frame.truth) : cv::Mat();
     r.scored += scored;
     std::vector<cv::Mat> masks;
     for (std::size_t m = 0; m < methods.size(); ++m) {
       const auto start = std::chrono::steady_clock::now();
       masks.push_back(methods[m]->Apply(rgb));
       seconds[m] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (scored) r.methods[m].counts += eval::CountCdnetFrame(masks[m], truth, folder.roi);
+      if (scored) r.methods[m].counts += eval::CountCdnetFrame(masks[m], truth, frames.roi());
       if (o.write_masks)
         core::WriteImage(
             (fs::path(out_dir) / r.methods[m].name / ("bin" + core::FrameStem(number) + ".png"))
                 .string(),
             masks[m]);
     }
-    if (o.panel_every > 0 && k % o.panel_every == 0)
+    if (o.panel_every > 0 && r.frames % o.panel_every == 0)
       core::WriteRgbImage(
           (fs::path(out_dir) / "panels" / (core::FrameStem(number) + ".png")).string(),
-          eval::CdnetPanel(rgb, truth, folder.roi, masks, o.methods,
+          eval::CdnetPanel(rgb, truth, frames.roi(), masks, o.methods,
                            "frame " + std::to_string(number)));
     ++r.frames;
-    if (o.progress) o.progress(r.frames, n);
+    if (o.progress) o.progress(r.frames, std::max(n, r.frames));
   }
   for (std::size_t m = 0; m < methods.size(); ++m) {
     r.methods[m].scores = eval::ScoreCdnet(r.methods[m].counts);

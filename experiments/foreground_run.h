@@ -1,11 +1,11 @@
 // A fixed camera's foreground, scored the CDnet way beside OpenCV's background subtractors (issue
-// 52): every frame of a CDnet-layout folder (sensors/dataset/cdnet_folder.h) goes through the
-// appearance map as a static camera — foreground where its predictive novelty exceeds a
-// threshold (stats/predictive_novelty.h), and no learning there (hold) — and through OpenCV's
-// MOG2 and KNN (video module) and the contrib GSOC and CNT (bgsegm), in the same run, each timed
-// per frame. Masks are written as CDnet expects them (OUT/<method>/bin000001.png, 255
-// foreground); with ground truth, scores.csv gives per method recall, precision, F, PWC, FPR, the
-// false-positive rate on shadows and ms a frame (eval/cdnet_scores.h), and findings.csv holds
+// 52): every frame of a CDnet-layout folder, a folder of images or a video
+// (sensors/dataset/fixed_camera_frames.h) goes through the appearance map as a static camera —
+// foreground by maps/appearance/foreground_labels.h's rule, the background held there — and
+// through OpenCV's MOG2 and KNN (video module) and the contrib GSOC and CNT (bgsegm), in the same
+// run, each timed per frame. Masks are written as CDnet expects them (OUT/<method>/bin000001.png,
+// 255 foreground); with ground truth, scores.csv gives per method recall, precision, F, PWC, FPR,
+// the false-positive rate on shadows and ms a frame (eval/cdnet_scores.h), and findings.csv holds
 // the issue's targets: our F above KNN's at no more time than MOG2's.
 #pragma once
 
@@ -22,7 +22,9 @@
 namespace novelty::experiments {
 
 struct ForegroundRunOptions {
-  std::string folder;  ///< CDnet layout
+  /// A CDnet-layout folder, a plain folder of images or a video file
+  /// (sensors/dataset/fixed_camera_frames.h); without ground truth nothing is scored.
+  std::string folder;
   /// The map's decision rule: threshold, shadow label, small blobs (foreground_labels.h). Shadow
   /// pixels are not foreground in the masks.
   appearance::ForegroundLabelOptions labels;
@@ -59,7 +61,7 @@ struct ForegroundRunResult {
   eval::FindingsTable findings;
 };
 
-/// Throws std::runtime_error naming the folder or file (ReadCdnetFolder, an unreadable frame or
+/// Throws std::runtime_error naming the folder or file (FixedCameraFrames, an unreadable frame or
 /// ground truth, a frame of another size), std::invalid_argument for an unknown method or a
 /// threshold that is not positive.
 ForegroundRunResult RunForeground(const ForegroundRunOptions& options, const std::string& out_dir);

@@ -148,6 +148,28 @@ TEST(ForegroundSimulatedRoom, TheMapBeatsKnnAndItsShadowAndHoldRulesDoWhatTheySa
   fs::remove_all(dir);
 }
 
+// The same frames as a plain folder of images (no ground truth): the same masks, nothing scored.
+TEST_F(ForegroundClip, APlainFolderOfTheFramesGivesTheSameMasks) {
+  fs::copy(dir_ / "input", dir_ / "plain");
+  ForegroundRunOptions o;
+  o.methods = {"novelty"};
+  o.panel_every = 0;
+  o.folder = dir_.string();
+  RunForeground(o, (dir_ / "cdnet_out").string());
+  o.folder = (dir_ / "plain").string();
+  const ForegroundRunResult plain = RunForeground(o, (dir_ / "plain_out").string());
+  EXPECT_EQ(plain.frames, 80);
+  EXPECT_EQ(plain.scored, 0);
+  for (const char* name : {"bin000040.png", "bin000070.png"}) {
+    const cv::Mat a = cv::imread((dir_ / "cdnet_out" / "novelty" / name).string(), 0);
+    const cv::Mat b = cv::imread((dir_ / "plain_out" / "novelty" / name).string(), 0);
+    ASSERT_FALSE(a.empty());
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(cv::countNonZero(a != b), 0) << name;
+    EXPECT_GT(cv::countNonZero(a), 400) << "the box is found";
+  }
+}
+
 TEST_F(ForegroundClip, BadFoldersAndOptionsAreErrors) {
   ForegroundRunOptions o;
   o.folder = (dir_ / "none").string();
