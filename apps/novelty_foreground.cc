@@ -25,6 +25,33 @@ using namespace novelty;
 
 namespace {
 
+// The summary: scores where there was ground truth, times always; exit 3 for a video cut short.
+int Report(const experiments::ForegroundRunResult& r, const std::string& out) {
+  if (r.scored > 0) {
+    std::printf("%d frames, %d scored (CDnet: recall, precision, F; ms a frame)\n", r.frames,
+                r.scored);
+    for (const auto& m : r.methods)
+      std::printf("  %-8s R %.3f  P %.3f  F %.3f  %.2f ms\n", m.name.c_str(), m.scores.recall,
+                  m.scores.precision, m.scores.f_measure, m.ms_per_frame);
+  } else {
+    std::printf(
+        "%d frames, none scored (no ground truth in the temporal ROI): masks and panels "
+        "only; ms a frame:\n",
+        r.frames);
+    for (const auto& m : r.methods) std::printf("  %-8s %.2f ms\n", m.name.c_str(), m.ms_per_frame);
+  }
+  if (r.unscored_in_roi > 0)
+    std::printf("note: %d frames of the temporal ROI have no ground truth and were not scored\n",
+                r.unscored_in_roi);
+  std::printf("→ %s/scores.csv\n", out.c_str());
+  if (r.cut_short) {
+    std::fprintf(stderr, "novelty-foreground: the input ended after %d of its %d frames\n",
+                 r.frames, r.expected_frames);
+    return apps::kExitPartial;
+  }
+  return apps::kExitOk;
+}
+
 int Run(int argc, char** argv) {
   apps::CommandLine cmd(
       "A fixed camera's foreground from predictive novelty, scored beside OpenCV's subtractors",
@@ -42,25 +69,29 @@ int Run(int argc, char** argv) {
                               "Count shadows as foreground (default: a grey, darker illumination "
                               "image is shadow, maps/appearance/foreground_labels.h)",
                               cmd);
-  TCLAP::ValueArg<int> min_blob("", "min-blob", "Drop foreground blobs of fewer pixels (0: keep)",
+  TCLAP::ValueArg<int> min_blob("", "min-blob",
+                                "Drop foreground blobs of fewer pixels (default 0: keep them)",
                                 false, o.labels.min_blob_pixels, "PIXELS", cmd);
   TCLAP::SwitchArg learn_foreground(
       "", "learn-foreground", "Learn foreground pixels too (the thesis's update; default: hold)",
       cmd);
   TCLAP::ValueArg<int> max_hold("", "max-hold",
-                                "A pixel held this many frames in a row learns again (0: no limit)",
+                                "A pixel held this many frames in a row learns again (default "
+                                "200; 0: no limit)",
                                 false, o.max_hold_frames, "FRAMES", cmd);
   TCLAP::ValueArg<std::string> methods("", "methods",
                                        "Comma-separated, of novelty, mog2, knn, gsoc, cnt", false,
                                        "novelty,mog2,knn,gsoc,cnt", "LIST", cmd);
   TCLAP::ValueArg<int> frames("", "frames", "Only the first N frames (0: all)", false, 0, "N", cmd);
-  TCLAP::SwitchArg no_masks("", "no-masks", "Write no masks, only the scores", cmd);
+  TCLAP::SwitchArg no_masks("", "no-masks", "Write no masks (scores and panels still)", cmd);
   cmd.Parse(argc, argv);
   if (!(threshold.getValue() > 0 && threshold.getValue() < 1e6))
     throw apps::UsageError("--threshold must be in (0, 1e6) nats");
   if (frames.getValue() < 0) throw apps::UsageError("--frames must be >= 0");
   o.folder = in.getValue();
   if (min_blob.getValue() < 0) throw apps::UsageError("--min-blob must be >= 0");
+  if (max_hold.getValue() < 0 || max_hold.getValue() > 65000)
+    throw apps::UsageError("--max-hold must be in 0…65000 frames");
   o.labels.threshold_nats = threshold.getValue();
   o.labels.shadow_label = !no_shadows.getValue();
   o.labels.min_blob_pixels = min_blob.getValue();
@@ -85,13 +116,7 @@ int Run(int argc, char** argv) {
     throw apps::UsageError(e.what());
   }
   folder.Commit();
-  std::printf("%d frames, %d scored (CDnet: recall, precision, F; ms a frame)\n", r.frames,
-              r.scored);
-  for (const auto& m : r.methods)
-    std::printf("  %-8s R %.3f  P %.3f  F %.3f  %.2f ms\n", m.name.c_str(), m.scores.recall,
-                m.scores.precision, m.scores.f_measure, m.ms_per_frame);
-  std::printf("→ %s/scores.csv\n", folder.final_path().c_str());
-  return apps::kExitOk;
+  return Report(r, folder.final_path());
 }
 
 }  // namespace

@@ -186,6 +186,9 @@ void ImportFixedCamera(const Flags& f, const sensors::RgbdImportOptions& io) {
   sensors::FixedCameraOptions fo;
   fo.pick = {f.include.getValue(), f.exclude.getValue()};
   fo.max_pixels = io.max_pixels;
+  if (f.layout.getValue() == "fixed-camera" &&
+      std::filesystem::is_directory(std::filesystem::path(f.in.getValue()) / "input"))
+    throw std::runtime_error(f.in.getValue() + ": a CDnet folder (input/): use --layout cdnet");
   const sensors::FixedCameraFolder folder = f.layout.getValue() == "cdnet"
                                                 ? sensors::CdnetFixedCamera(f.in.getValue(), fo)
                                                 : sensors::FixedCameraFolder(f.in.getValue(), fo);

@@ -1,5 +1,6 @@
 #include "experiments/foreground_run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -98,7 +99,8 @@ void AddFindings(ForegroundRunResult& r) {
     return nullptr;
   };
   for (const ForegroundMethod& m : r.methods) {
-    r.findings.Add(m.name + ": F-measure", eval::NumberText(m.scores.f_measure), "(reported)");
+    if (r.scored > 0)
+      r.findings.Add(m.name + ": F-measure", eval::NumberText(m.scores.f_measure), "(reported)");
     r.findings.Add(m.name + ": ms per frame", eval::NumberText(m.ms_per_frame), "(reported)");
   }
   const ForegroundMethod *ours = find("novelty"), *knn = find("knn"), *mog2 = find("mog2");
@@ -117,10 +119,13 @@ void AddFindings(ForegroundRunResult& r) {
 void WriteScores(const ForegroundRunResult& r, const fs::path& out) {
   std::ofstream csv(out / "scores.csv");
   csv << "method,recall,precision,f_measure,pwc,fpr,shadow_fpr,ms_per_frame\n";
+  const auto score = [&](double v) {  // empty where nothing was scored
+    return r.scored > 0 && std::isfinite(v) ? std::to_string(v) : std::string();
+  };
   for (const ForegroundMethod& m : r.methods)
-    csv << m.name << ',' << m.scores.recall << ',' << m.scores.precision << ','
-        << m.scores.f_measure << ',' << m.scores.pwc << ',' << m.scores.fpr << ','
-        << m.scores.shadow_fpr << ',' << m.ms_per_frame << '\n';
+    csv << m.name << ',' << score(m.scores.recall) << ',' << score(m.scores.precision) << ','
+        << score(m.scores.f_measure) << ',' << score(m.scores.pwc) << ',' << score(m.scores.fpr)
+        << ',' << score(m.scores.shadow_fpr) << ',' << m.ms_per_frame << '\n';
   if (!csv) throw std::runtime_error((out / "scores.csv").string() + ": cannot be written");
 }
 
@@ -128,6 +133,11 @@ void WriteScores(const ForegroundRunResult& r, const fs::path& out) {
 
 ForegroundRunResult RunForeground(const ForegroundRunOptions& o, const std::string& out_dir) {
   if (!(o.labels.threshold_nats > 0)) throw std::invalid_argument("threshold_nats must be > 0");
+  if (o.methods.empty()) throw std::invalid_argument("no foreground method to run");
+  for (std::size_t k = 0; k < o.methods.size(); ++k)
+    if (std::find(o.methods.begin(), o.methods.begin() + long(k), o.methods[k]) !=
+        o.methods.begin() + long(k))
+      throw std::invalid_argument("foreground method '" + o.methods[k] + "' given twice");
   sensors::FixedCameraFrames frames(o.folder, o.max_pixels);
   std::vector<std::unique_ptr<ForegroundMethodRunner>> methods;
   ForegroundRunResult r;
@@ -147,6 +157,7 @@ ForegroundRunResult RunForeground(const ForegroundRunOptions& o, const std::stri
     const cv::Mat& rgb = frame.rgb;
     const int number = frame.number;
     const bool scored = frames.scored(number) && !frame.truth.empty();
+    r.unscored_in_roi += frames.kind() == "CDnet folder" && frames.scored(number) && !scored;
     const cv::Mat truth = scored ? sensors::ReadCdnetTruth(frame.truth) : cv::Mat();
     r.scored += scored;
     std::vector<cv::Mat> masks;
@@ -169,6 +180,9 @@ ForegroundRunResult RunForeground(const ForegroundRunOptions& o, const std::stri
     ++r.frames;
     if (o.progress) o.progress(r.frames, std::max(n, r.frames));
   }
+  r.expected_frames = frames.size();
+  // A container's count can be an estimate from the duration: one frame short is not a cut.
+  r.cut_short = r.frames + 1 < r.expected_frames && (o.max_frames <= 0 || r.frames < o.max_frames);
   for (std::size_t m = 0; m < methods.size(); ++m) {
     r.methods[m].scores = eval::ScoreCdnet(r.methods[m].counts);
     r.methods[m].ms_per_frame = r.frames ? 1000 * seconds[m] / r.frames : 0;

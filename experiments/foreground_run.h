@@ -57,13 +57,16 @@ struct ForegroundMethod {
 
 struct ForegroundRunResult {
   int frames = 0, scored = 0;  ///< frames run; of them with ground truth in the temporal ROI
+  int unscored_in_roi = 0;     ///< a CDnet folder's frames in the temporal ROI without truth
+  int expected_frames = 0;     ///< what the input said it holds (a video's container; 0: unsaid)
+  bool cut_short = false;      ///< the input ended before expected_frames (a truncated video)
   std::vector<ForegroundMethod> methods;
   eval::FindingsTable findings;
 };
 
 /// Throws std::runtime_error naming the folder or file (FixedCameraFrames, an unreadable frame or
-/// ground truth, a frame of another size), std::invalid_argument for an unknown method or a
-/// threshold that is not positive.
+/// ground truth, a frame of another size), std::invalid_argument for no method, an unknown or
+/// repeated one, or a threshold that is not positive.
 ForegroundRunResult RunForeground(const ForegroundRunOptions& options, const std::string& out_dir);
 
 }  // namespace novelty::experiments

@@ -39,7 +39,8 @@ std::string Layout(const fs::path& dir, const std::string& asked) {
   if (fs::exists(dir / "frame-000000.color.png")) return "7scenes";
   throw std::runtime_error(dir.string() +
                            ": no RGB-D layout recognised (TUM: rgb.txt and depth.txt; ICL-NUIM: "
-                           "pose.txt and color/; 7-Scenes: frame-000000.color.png)");
+                           "pose.txt and color/; 7-Scenes: frame-000000.color.png; a fixed "
+                           "camera's images: --layout fixed-camera or cdnet)");
 }
 
 // The TUM camera from a folder name: "rgbd_dataset_freiburg3_cabinet", "tum-fr3-cabinet".

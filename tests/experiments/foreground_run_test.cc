@@ -7,6 +7,7 @@
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "sim/scenario/scenario_parser.h"
 #include "sim/scenario/scenario_runner.h"
@@ -170,12 +171,50 @@ TEST_F(ForegroundClip, APlainFolderOfTheFramesGivesTheSameMasks) {
   }
 }
 
+// A frame of the temporal ROI without its ground truth is counted, not silently left out; a
+// video cut short is told apart from a whole one.
+TEST_F(ForegroundClip, MissingTruthIsCountedAndACutVideoIsToldApart) {
+  fs::remove(dir_ / "groundtruth" / "gt000050.png");
+  ForegroundRunOptions o;
+  o.methods = {"mog2"};
+  o.panel_every = 0;
+  o.write_masks = false;
+  o.folder = dir_.string();
+  const ForegroundRunResult r = RunForeground(o, (dir_ / "out").string());
+  EXPECT_EQ(r.scored, 60);
+  EXPECT_EQ(r.unscored_in_roi, 1);
+  EXPECT_FALSE(r.cut_short);
+  const fs::path video = dir_ / "clip.avi";
+  {
+    cv::VideoWriter w(video.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10, {160, 120});
+    ASSERT_TRUE(w.isOpened());
+    for (int k = 1; k <= 40; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "in%06d.jpg", k);
+      w.write(cv::imread((dir_ / "input" / name).string()));
+    }
+  }
+  o.folder = video.string();
+  const ForegroundRunResult whole = RunForeground(o, (dir_ / "out2").string());
+  EXPECT_EQ(whole.frames, 40);
+  EXPECT_FALSE(whole.cut_short);
+  fs::resize_file(video, fs::file_size(video) / 2);
+  const ForegroundRunResult cut = RunForeground(o, (dir_ / "out3").string());
+  EXPECT_LT(cut.frames, 30);
+  EXPECT_EQ(cut.expected_frames, 40);
+  EXPECT_TRUE(cut.cut_short);
+}
+
 TEST_F(ForegroundClip, BadFoldersAndOptionsAreErrors) {
   ForegroundRunOptions o;
   o.folder = (dir_ / "none").string();
   EXPECT_THROW(RunForeground(o, (dir_ / "out").string()), std::runtime_error);
   o.folder = dir_.string();
   o.methods = {"vibe"};
+  EXPECT_THROW(RunForeground(o, (dir_ / "out").string()), std::invalid_argument);
+  o.methods = {};
+  EXPECT_THROW(RunForeground(o, (dir_ / "out").string()), std::invalid_argument);
+  o.methods = {"mog2", "knn", "mog2"};
   EXPECT_THROW(RunForeground(o, (dir_ / "out").string()), std::invalid_argument);
   std::ofstream(dir_ / "temporalROI.txt") << "20\n";
   o.methods = {"mog2"};
