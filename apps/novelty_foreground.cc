@@ -115,6 +115,7 @@ int Run(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     throw apps::UsageError(e.what());
   }
+  if (progress) progress->Finish();  // a video cut short ends before its count
   folder.Commit();
   return Report(r, folder.final_path());
 }
