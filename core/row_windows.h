@@ -49,16 +49,16 @@ class RowWindows {
   core::lanes::I16 Read(core::lanes::I16 row, core::lanes::I16 byte) const {
 #if defined(__AVX512VBMI__) && defined(__AVX512BW__)
     // Byte 4k + j of the result is byte `byte[k] + j` of the window (no carry: byte ≤ 252).
-    const __m512i index = (__m512i)(byte * 0x01010101 + core::lanes::I16{} + 0x03020100);
+    const __m512i index = (__m512i)(byte * 0x01010101 + 0x03020100).p[0];
     const __mmask64 high = _mm512_movepi8_mask(index);  // bit 7: the window's second half
     core::lanes::I16 out{};
     for (int r = 0; r < kMaxRows; ++r) {
-      const __mmask16 lanes = _mm512_cmpeq_epi32_mask((__m512i)row, _mm512_set1_epi32(r));
+      const __mmask16 lanes = _mm512_cmpeq_epi32_mask((__m512i)row.p[0], _mm512_set1_epi32(r));
       if (!lanes) continue;
       const __m512i lo = _mm512_permutex2var_epi8(window_[r][0], index, window_[r][1]);
       const __m512i hi = _mm512_permutex2var_epi8(window_[r][2], index, window_[r][3]);
-      out = (core::lanes::I16)_mm512_mask_mov_epi32((__m512i)out, lanes,
-                                                    _mm512_mask_blend_epi8(high, lo, hi));
+      out = core::lanes::BitCast<core::lanes::I16>(
+          _mm512_mask_mov_epi32((__m512i)out.p[0], lanes, _mm512_mask_blend_epi8(high, lo, hi)));
     }
     return out;
 #else

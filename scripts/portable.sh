@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 # The SIMD kernels' suites, by test program (bin/<part>_tests) and GoogleTest filter.
 kernels=(
   "core_tests Lanes.*:RowWindows.*:WithCount.*:Interleave.*:FillWhere.*"
-  "maps_tests NormalGammaBatch.*:YCbCrPlanes.*:PlanarBlocks.*:MeshPlan.*:DepthMeshWarper.*:QuadRasteriser.*:ViewBlender.*:ViewBasedMap.*"
+  "maps_tests NormalGammaBatch.*:NormalGammaPackets.*:YCbCrPlanes.*:PlanarBlocks.*:MeshPlan.*:DepthMeshWarper.*:QuadRasteriser.*:ViewBlender.*:ViewBasedMap.*"
   "mrpt_plugins_tests CAppearanceMap.*")
 programs=()
 for k in "${kernels[@]}"; do programs+=("${k%% *}"); done

@@ -12,6 +12,7 @@ PACKAGES=(
   libode-dev libembree-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libtclap-dev zlib1g-dev libzstd-dev libpng-dev
+  g++-aarch64-linux-gnu qemu-user  # scripts/cross_aarch64.sh: the kernels built and tested for ARM
 )
 
 missing=()

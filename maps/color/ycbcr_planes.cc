@@ -55,7 +55,7 @@ inline L::F16 Widen(__m512i planar, int c) {
   const __m128i bytes = c == 0   ? _mm512_castsi512_si128(planar)
                         : c == 1 ? _mm512_extracti32x4_epi32(planar, 1)
                                  : _mm512_extracti32x4_epi32(planar, 2);
-  return (L::F16)_mm512_cvtepi32_ps(_mm512_cvtepu8_epi32(bytes));
+  return L::BitCast<L::F16>(_mm512_cvtepi32_ps(_mm512_cvtepu8_epi32(bytes)));
 }
 #endif
 
@@ -104,7 +104,7 @@ void PlanesRow(const float* y, const float* cb, const float* cr, int cols, const
   for (; x + L::kLanes <= cols; x += L::kLanes) {
     const L::F16 Y = L::Load(y + x), Cb = L::Load(cb + x), Cr = L::Load(cr + x);
     const auto bytes = [&](int c) {
-      return _mm512_cvtepi32_epi8((__m512i)ToByteValues(a.Row(c, Y, Cb, Cr)));
+      return _mm512_cvtepi32_epi8((__m512i)ToByteValues(a.Row(c, Y, Cb, Cr)).p[0]);
     };
     __m512i planar = _mm512_castsi128_si512(bytes(0));
     planar = _mm512_inserti32x4(planar, bytes(1), 1);

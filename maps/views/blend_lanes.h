@@ -3,11 +3,11 @@
 // Included by view_blender.cc only.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <opencv2/core.hpp>
 #include <type_traits>
-#include <cmath>
 
 #include "core/lanes.h"
 
@@ -16,6 +16,7 @@ namespace novelty::views::blend {
 using core::lanes::F16;
 using core::lanes::I16;
 using core::lanes::kLanes;
+using core::lanes::Select;
 
 // Scalar (one pixel) and vector (sixteen) forms of the few operations the sampling kernel needs,
 // so that one kernel serves the row's body and its tail.
@@ -42,23 +43,17 @@ inline int GatherBytes(const char* base, int offset) {
   std::memcpy(&v, base + offset, 4);
   return v;
 }
-inline I16 GatherBytes(const char* base, I16 offset) {
-  return core::lanes::GatherBytes(base, offset);
-}
 inline float AsFloatBits(int bits) {
   float f;
   std::memcpy(&f, &bits, 4);
   return f;
 }
 inline F16 AsFloatBits(I16 bits) {
-  return (F16)bits;
+  return core::lanes::BitCast<F16>(bits);
 }
 // IEEE half floats (in the low 16 bits) to float (lanes.h).
 inline float HalfToFloat(int bits) {
   return core::lanes::HalfToFloat(uint32_t(bits));
-}
-inline F16 HalfToFloat(I16 bits) {
-  return core::lanes::HalfToFloat(bits);
 }
 // Stores one value (T = float) or sixteen at `stride` floats apart (interleaved channels).
 inline void ScatterLane(float* p, int, float v) {
@@ -97,12 +92,12 @@ inline T Pow(T x, float p) {
 }
 template <typename T>
 inline T Max(T x, float lo) {
-  return x > lo ? x : T{} + lo;
+  return Select(x > lo, x, T{} + lo);
 }
 template <typename T>
 inline T Clamp(T x, float lo, float hi) {
-  x = x < lo ? T{} + lo : x;
-  return x > hi ? T{} + hi : x;
+  x = Select(x < lo, T{} + lo, x);
+  return Select(x > hi, T{} + hi, x);
 }
 // The (u, v) pairs of the warp map at pixel x: interleaved in memory.
 inline void LoadMap(const cv::Vec2f* map, float& u, float& v) {

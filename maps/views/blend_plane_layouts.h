@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "core/row_windows.h"
@@ -35,7 +35,7 @@ struct GatherReader {
     return GatherBytes(data, start) >> ((byte - start) * 8);  // Values read the low bytes only
   }
   static int Min(int a, int b) { return std::min(a, b); }
-  static I16 Min(I16 a, int b) { return a < b ? a : I16{} + b; }
+  static I16 Min(I16 a, int b) { return Select(a < b, a, I16{} + b); }
 };
 
 // ... or from core::RowWindows holding the source rows that sixteen pixels read (row_windows.h).
@@ -145,7 +145,7 @@ inline std::optional<std::vector<HalfPlane>> AsHalfPlanes(const std::vector<cv::
 }
 
 inline std::vector<FloatPlane> AsFloatPlanes(const std::vector<cv::Mat>& planes,
-                                      std::vector<cv::Mat>& scratch) {
+                                             std::vector<cv::Mat>& scratch) {
   scratch.resize(planes.size());
   std::vector<FloatPlane> out;
   for (std::size_t k = 0; k < planes.size(); ++k) {

@@ -33,7 +33,7 @@ inline void Sample(const Plane& p, const R& r, const Corners<I>& at, T w00, T w1
     const int c = c0 + i;
     const T sample = w00 * p.template Value<T>(c00, c0, c) + w10 * p.template Value<T>(c10, c0, c) +
                      w01 * p.template Value<T>(c01, c0, c) + w11 * p.template Value<T>(c11, c0, c);
-    acc[i] += valid ? sample : T{};  // select: a NaN sample stays out
+    acc[i] += Select(valid, sample, T{});  // select: a NaN sample stays out
   }
 }
 
@@ -52,8 +52,8 @@ inline __attribute__((always_inline)) bool SampleBytesNarrow(const BytePlane& p,
   const int x_min = core::lanes::MinLane(at.x0, valid);
   const int y_min = core::lanes::MinLane(at.y0, valid);
   // Byte offsets from x_min (0 in uncovered lanes, whose reads are discarded).
-  const I16 byte0 = valid ? (at.x0 - x_min) * n : I16{},
-            byte1 = valid ? (at.x1 - x_min) * n : I16{};
+  const I16 byte0 = Select(valid, (at.x0 - x_min) * n, I16{}),
+            byte1 = Select(valid, (at.x1 - x_min) * n, I16{});
   if (core::lanes::Any(valid & ((byte1 > 64 - 4) | (at.y0 - y_min > 1)))) return false;
   const std::size_t total = p.TotalBytes();
   __m512i rows[3];
@@ -68,9 +68,10 @@ inline __attribute__((always_inline)) bool SampleBytesNarrow(const BytePlane& p,
   // Bit 6 of a byte's index picks the pair's second row: top corners read rows (y_min,
   // y_min + 1), bottom ones the next pair. (A bottom corner clamped to the last row, y1 = y0,
   // reads a row that the clamped loads made the last row as well.)
-  const I16 second = valid ? (at.y0 - y_min) << 6 : I16{};
+  const I16 second = Select(valid, (at.y0 - y_min) << 6, I16{});
   const auto word = [](const __m512i& a, const __m512i& b, I16 byte) {
-    return (I16)_mm512_permutex2var_epi8(a, (__m512i)(byte * 0x01010101 + 0x03020100), b);
+    return core::lanes::BitCast<I16>(
+        _mm512_permutex2var_epi8(a, (__m512i)(byte * 0x01010101 + 0x03020100).p[0], b));
   };
   const I16 c00 = word(rows[0], rows[1], byte0 + second),
             c10 = word(rows[0], rows[1], byte1 + second);
@@ -79,7 +80,7 @@ inline __attribute__((always_inline)) bool SampleBytesNarrow(const BytePlane& p,
   for (int c = 0; c < n; ++c) {
     const auto value = [c](I16 w) { return core::lanes::AsFloat((w >> (8 * c)) & 0xFF); };
     const F16 sample = w00 * value(c00) + w10 * value(c10) + w01 * value(c01) + w11 * value(c11);
-    acc[c] += valid ? sample : F16{};
+    acc[c] += Select(valid, sample, F16{});
   }
   return true;
 }
@@ -99,7 +100,8 @@ struct WindowSpan {
   // Uncovered lanes read where the first covered lane reads (their weight is 0).
   Corners<I16> Inside(I16 valid, const Corners<I16>& at) const {
     const I16 x = I16{} + x_min, y = I16{} + row0;
-    return {valid ? at.x0 : x, valid ? at.x1 : x, valid ? at.y0 : y, valid ? at.y1 : y};
+    return {Select(valid, at.x0, x), Select(valid, at.x1, x), Select(valid, at.y0, y),
+            Select(valid, at.y1, y)};
   }
 };
 

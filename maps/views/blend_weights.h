@@ -44,8 +44,9 @@ struct Footprint {
 // Coordinates are clamped to the source image (the border replicated). T = float for one pixel,
 // F16 for sixteen.
 template <typename T, class Plane>
-inline auto FootprintOf(const WarpField& w, const Plane& p, float view_weight,
-                        const BlendOptions& o, const PixelLimits<T>& limits, int y, int x) {
+inline __attribute__((always_inline)) auto FootprintOf(const WarpField& w, const Plane& p,
+                                                       float view_weight, const BlendOptions& o,
+                                                       const PixelLimits<T>& limits, int y, int x) {
   T u, v;
   LoadMap(w.map.ptr<cv::Vec2f>(y) + x, u, v);
   // The map rows are streamed once per view; fetching ahead hides the misses. Every line the
@@ -73,11 +74,11 @@ inline auto FootprintOf(const WarpField& w, const Plane& p, float view_weight,
     const T cos_angle = Max(LoadLane(w.cos_angle.ptr<float>(y) + x, T{}), kMinCos);
     weight *= Pow(cos_angle / limits.best_cos, float(o.angle_power));
   }
-  weight = valid ? weight : T{};
+  weight = Select(valid, weight, T{});
   u = Clamp(u, 0.0f, float(p.cols - 1));
   v = Clamp(v, 0.0f, float(p.rows - 1));
   const auto x0 = ToInt(u), y0 = ToInt(v);  // non-negative: truncation is floor
-  const auto x1 = x0 + (x0 < p.cols - 1 ? 1 : 0), y1 = y0 + (y0 < p.rows - 1 ? 1 : 0);
+  const auto x1 = Select(x0 < p.cols - 1, x0 + 1, x0), y1 = Select(y0 < p.rows - 1, y0 + 1, y0);
   const T fx = u - ToFloat(x0), fy = v - ToFloat(y0);
   using I = std::remove_const_t<decltype(x0)>;
   return Footprint<T, I, decltype(valid)>{valid,
@@ -102,7 +103,7 @@ inline PixelLimits<T> LimitsAt(const std::vector<const WarpField*>& warps, const
   if (o.depth_tolerance > 0.0) {  // only views within the tolerance of the nearest depth
     for (const WarpField* w : warps) {
       const T d = LoadLane(w->depth.ptr<float>(y) + x, T{});
-      limits.nearest = (d > 0.0f) & (d < limits.nearest) ? d : limits.nearest;
+      limits.nearest = Select((d > 0.0f) & (d < limits.nearest), d, limits.nearest);
     }
     limits.nearest *= float(1.0 + o.depth_tolerance);
   }
@@ -115,7 +116,7 @@ inline PixelLimits<T> LimitsAt(const std::vector<const WarpField*>& warps, const
       if (o.depth_tolerance > 0.0)
         counts = counts & (LoadLane(w->depth.ptr<float>(y) + x, T{}) <= limits.nearest);
       const T c = LoadLane(w->cos_angle.ptr<float>(y) + x, T{});
-      best = counts & (c > best) ? c : best;
+      best = Select(counts & (c > best), c, best);
     }
     limits.best_cos = best;
   }

@@ -56,11 +56,11 @@ struct Projection {
     const T py = z * (ay * fu + ry) + ty;
     const T pz = z * (az * fu + rz) + tz;
     const auto ok = (z > 0.0f) & (z < 1e30f) & (pz > near_z);
-    const T iz = ok ? Reciprocal(pz) : T{};
-    Put(X, ok ? fx * px * iz + cx : T{} - 1.0f);
-    Put(Y, ok ? fy * py * iz + cy : T{} - 1.0f);
+    const T iz = Select(ok, Reciprocal(pz), T{});
+    Put(X, Select(ok, fx * px * iz + cx, T{} - 1.0f));
+    Put(Y, Select(ok, fy * py * iz + cy, T{} - 1.0f));
     Put(IZ, iz);
-    Put(SD, ok ? z : T{});
+    Put(SD, Select(ok, z, T{}));
   }
   static void Put(float* p, float v) { *p = v; }
   static void Put(float* p, F16 v) { Store(p, v); }

@@ -92,13 +92,14 @@ inline LaneHits Evaluate(const QuadLanes& q, F16 px, F16 py, I16 in_box) {
   const F16 wa_a = one - wb_a - wc_a, wa_b = one - wb_b - wc_b;
   const I16 in_a = in_box & q.ok_a & (wa_a >= eps) & (wb_a >= eps) & (wc_a >= eps);
   const I16 in_b = in_box & q.ok_b & (wa_b >= eps) & (wb_b >= eps) & (wc_b >= eps);
-  const F16 wa = in_a ? wa_a : wa_b, wb = in_a ? wb_a : wb_b, wc = in_a ? wc_a : wc_b;
+  const F16 wa = Select(in_a, wa_a, wa_b), wb = Select(in_a, wb_a, wb_b);
+  const F16 wc = Select(in_a, wc_a, wc_b);
   LaneHits h;
   h.hit = in_a | in_b;
-  h.iz = wa * q.i00 + wb * (in_a ? q.i10 : q.i11) + wc * (in_a ? q.i11 : q.i01);
-  h.zs = wa * q.z00 + wb * (in_a ? q.z10 : q.z11) + wc * (in_a ? q.z11 : q.z01);
-  h.su = in_a ? wb + wc : wb;  // A: (1,0),(1,1); B: (1,1),(0,1)
-  h.sv = in_a ? wc : wb + wc;
+  h.iz = wa * q.i00 + wb * Select(in_a, q.i10, q.i11) + wc * Select(in_a, q.i11, q.i01);
+  h.zs = wa * q.z00 + wb * Select(in_a, q.z10, q.z11) + wc * Select(in_a, q.z11, q.z01);
+  h.su = Select(in_a, wb + wc, wb);  // A: (1,0),(1,1); B: (1,1),(0,1)
+  h.sv = Select(in_a, wc, wb + wc);
   return h;
 }
 
@@ -198,8 +199,8 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
     // The box; an unusable vertex takes p00's place (its triangles are not drawn).
     F16 bx[4] = {x[0]}, by[4] = {y[0]};
     for (int n = 1; n < 4; ++n) {
-      bx[n] = ok[n] ? x[n] : x[0];
-      by[n] = ok[n] ? y[n] : y[0];
+      bx[n] = Select(ok[n], x[n], x[0]);
+      by[n] = Select(ok[n], y[n], y[0]);
     }
     const F16 qx0 = Max(Ceil(Max(Min(Min(bx[0], bx[1]), Min(bx[2], bx[3])), lo)), zero);
     const F16 qx1 = Min(Floor(Min(Max(Max(bx[0], bx[1]), Max(bx[2], bx[3])), hi)), x_max);
@@ -223,8 +224,8 @@ void RasteriseRowVectorised(const Vertices& v, int w, int r, float max_ratio, co
                          int(qy1[k]));
     }
     // The small quads' hits, candidate pixel by candidate pixel: only hits are visited.
-    const I16 j0 = core::lanes::AsInt(small ? qy0 : zero) * t.width +  // (other lanes' boxes
-                   core::lanes::AsInt(small ? qx0 : zero);             // may lie far outside)
+    const I16 j0 = core::lanes::AsInt(Select(small, qy0, zero)) * t.width +  // (other lanes' boxes
+                   core::lanes::AsInt(Select(small, qx0, zero));             // may lie far outside)
     for (int n = 0; n < 4; ++n) {
       const std::size_t step = std::size_t(n >> 1) * t.width + std::size_t(n & 1);
       for (unsigned hit = core::lanes::Bits(hits[n].hit); hit; hit &= hit - 1) {

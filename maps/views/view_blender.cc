@@ -91,9 +91,12 @@ inline void StorePixel(float* p, ChannelMask m, F8 value) {
 #else
 // AVX2 masks lanes of 32 bits: float channels one lane each, half channels two to a lane — an
 // odd count's last half is read on its own (a 32-bit lane would run past the pixel, and the last
-// pixel's past the plane) and blended into place.
+// pixel's past the plane) and blended into place. Those masked reads cost several instructions;
+// where a whole register's width lies inside the plane (every pixel but the last few), one plain
+// load serves, its lanes past the pixel's channels cleared.
 struct ChannelMask {
   __m256i floats;   // lane c: channel c
+  __m128i halves;   // 16-bit lane c: channel c
   __m128i pairs;    // lane i: half channels 2i, 2i + 1 (whole pairs only)
   __m128i last;     // 16-bit lane (channels − 1) of an odd count; 0 for an even one
   int last_offset;  // its byte offset in the pixel
@@ -102,6 +105,8 @@ inline ChannelMask MaskOf(int channels) {
   ChannelMask m;
   const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   m.floats = _mm256_cmpgt_epi32(_mm256_set1_epi32(channels), lane);
+  m.halves =
+      _mm_cmpgt_epi16(_mm_set1_epi16(short(channels)), _mm_setr_epi16(0, 1, 2, 3, 4, 5, 6, 7));
   m.pairs = _mm_cmpgt_epi32(_mm_set1_epi32(channels / 2), _mm_setr_epi32(0, 1, 2, 3));
   m.last = channels % 2 ? _mm_cmpeq_epi16(_mm_set1_epi16(short(channels - 1)),
                                           _mm_setr_epi16(0, 1, 2, 3, 4, 5, 6, 7))
@@ -109,14 +114,23 @@ inline ChannelMask MaskOf(int channels) {
   m.last_offset = 2 * (channels - 1);
   return m;
 }
-inline F8 PixelChannels(const FloatPlane&, const char* p, const ChannelMask& m) {
+inline F8 PixelChannels(const FloatPlane& plane, const char* p, const ChannelMask& m) {
+  if (p + sizeof(__m256) <= plane.data + plane.TotalBytes()) {
+    return (F8)_mm256_and_ps(_mm256_loadu_ps(reinterpret_cast<const float*>(p)),
+                             _mm256_castsi256_ps(m.floats));
+  }
   return (F8)_mm256_maskload_ps(reinterpret_cast<const float*>(p), m.floats);
 }
-inline F8 PixelChannels(const HalfPlane&, const char* p, const ChannelMask& m) {
-  __m128i halves = _mm_maskload_epi32(reinterpret_cast<const int*>(p), m.pairs);
-  uint16_t last;
-  std::memcpy(&last, p + m.last_offset, 2);
-  halves = _mm_blendv_epi8(halves, _mm_set1_epi16(short(last)), m.last);
+inline F8 PixelChannels(const HalfPlane& plane, const char* p, const ChannelMask& m) {
+  __m128i halves;
+  if (p + sizeof(__m128i) <= plane.data + plane.TotalBytes()) {
+    halves = _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)), m.halves);
+  } else {
+    halves = _mm_maskload_epi32(reinterpret_cast<const int*>(p), m.pairs);
+    uint16_t last;
+    std::memcpy(&last, p + m.last_offset, 2);
+    halves = _mm_blendv_epi8(halves, _mm_set1_epi16(short(last)), m.last);
+  }
   return (F8)_mm256_cvtph_ps(halves);
 }
 inline void StorePixel(float* p, const ChannelMask& m, F8 value) {
@@ -216,7 +230,7 @@ inline int BlendPixels(const std::vector<const WarpField*>& warps, const std::ve
     const T nan = T{} + std::numeric_limits<float>::quiet_NaN();
     for (int i = 0; i < n; ++i) {
       ScatterLane(row + std::size_t(x) * channels + c0 + i, channels,
-                  hit ? acc[i] / weight_sum : nan);
+                  Select(hit, acc[i] / weight_sum, nan));
     }
   }
   return StoreValid(out.valid.ptr<uint8_t>(y) + x, weight_sum > 0.0f);

@@ -50,7 +50,7 @@ int Finalise(const Target& t, float* depth, int threads) {
         const I16 in_row = core::lanes::Iota() < float(t.width - x);
         const F16 iz = LoadMasked(t.inv_z + j, in_row);
         const I16 hit = iz > zero, miss = in_row & ~hit;
-        if (depth) StoreMasked(depth + j, hit ? Reciprocal(iz) : zero, in_row);
+        if (depth) StoreMasked(depth + j, Select(hit, Reciprocal(iz), zero), in_row);
         StoreMasked(t.inv_z + j, zero, hit);  // the z-buffer clean for the next warp
         if (t.source_depth) StoreMasked(t.source_depth + j, zero, miss);
         StoreMaskedPairs(t.uv + 2 * j, zero - 1.0f, zero - 1.0f, miss);

@@ -18,12 +18,12 @@ using namespace core::lanes;  // F16, I16, Load, Min… (core/lanes.h)
 enum Direction { kFromLeft = 0, kFromRight = 1, kFromUp = 2, kFromDown = 3 };
 
 // Lane permutations for the message stores that shift by one pixel, and for (de)interleaving.
-constexpr I16 kRotateDown = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 0};
-constexpr I16 kRotateUp = {15, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14};
-constexpr I16 kEvens = {0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30};
-constexpr I16 kOdds = {1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31};
-constexpr I16 kZipLow = {0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23};
-constexpr I16 kZipHigh = {8, 24, 9, 25, 10, 26, 11, 27, 12, 28, 13, 29, 14, 30, 15, 31};
+const I16 kRotateDown = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 0};
+const I16 kRotateUp = {15, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14};
+const I16 kEvens = {0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30};
+const I16 kOdds = {1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31};
+const I16 kZipLow = {0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23};
+const I16 kZipHigh = {8, 24, 9, 25, 10, 26, 11, 27, 12, 28, 13, 29, 14, 30, 15, 31};
 
 // One pyramid level in a layout for updating sixteen pixels at once. Every row is split by
 // column parity — "half" 0 holds x = 0, 2, 4…, half 1 holds x = 1, 3, 5… — since a checkerboard
@@ -81,16 +81,16 @@ void StoreMessage(float* dest, std::size_t block_size, int shift, int labels, I1
     float* d = dest + std::size_t(l) * kLanes;
     const F16 m = msg(l);
     if (shift == 0) {
-      Store(d, keep ? Load(d) : m);
+      Store(d, Select(keep, Load(d), m));
     } else if (shift < 0) {  // receiver of lane k is lane k − 1
       const F16 r = Shuffle(m, kRotateDown);
       const I16 own = (lane < 15) & ~Shuffle(keep, kRotateDown);
-      Store(d, own ? r : Load(d));
+      Store(d, Select(own, r, Load(d)));
       if (!keep[0]) d[int(kLanes) - 1 - int(block_size)] = m[0];  // lane 15 of the block before
     } else {  // receiver of lane k is lane k + 1
       const F16 r = Shuffle(m, kRotateUp);
       const I16 own = (lane > 0) & ~Shuffle(keep, kRotateUp);
-      Store(d, own ? r : Load(d));
+      Store(d, Select(own, r, Load(d)));
       if (!keep[15]) d[block_size] = m[15];  // lane 0 of the block after
     }
   }
@@ -274,16 +274,16 @@ void ReadLabels(const Level& lv, const BeliefPropagationOptions& o, Labeling& re
           for (int l = 0; l < labels; ++l) {
             const F16 b = belief(l);
             const I16 better = b < best_value;
-            best_value = better ? b : best_value;
-            best = better ? F16{} + float(l) : best;
+            best_value = Select(better, b, best_value);
+            best = Select(better, F16{} + float(l), best);
           }
           F16 before = F16{} + inf, after = F16{} + inf, runner_up = F16{} + inf;
           for (int l = 0; l < labels; ++l) {
             const F16 b = belief(l), label = F16{} + float(l);
-            before = label == best - 1.0f ? b : before;
-            after = label == best + 1.0f ? b : after;
+            before = Select(label == best - 1.0f, b, before);
+            after = Select(label == best + 1.0f, b, after);
             const I16 far = (label < best - 1.0f) | (label > best + 1.0f);
-            runner_up = far ? Min(runner_up, b) : runner_up;
+            runner_up = Select(far, Min(runner_up, b), runner_up);
           }
           for (int k = 0; k < kLanes && j + k < count; ++k) {
             const int x = 2 * (j + k) + half;

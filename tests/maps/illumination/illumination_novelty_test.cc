@@ -12,7 +12,7 @@ namespace {
 
 // A textured scene under six lights of different strength; a highlight (light × 3) on an
 // ellipse — the plate — in images 1 and 4, so that the highlight is a minority at every pixel.
-struct Scene {
+struct NoveltyScene {
   cv::Mat reflectance, highlight;
   std::vector<cv::Mat> training;
   cv::Mat Lit(double light, bool with_highlight) const {
@@ -24,8 +24,8 @@ struct Scene {
   }
 };
 
-Scene MakeScene() {
-  Scene s;
+NoveltyScene MakeNoveltyScene() {
+  NoveltyScene s;
   s.reflectance.create(120, 160, CV_32FC3);
   cv::RNG(5).fill(s.reflectance, cv::RNG::UNIFORM, 30, 80);
   cv::GaussianBlur(s.reflectance, s.reflectance, {0, 0}, 2.0);
@@ -51,7 +51,7 @@ double FoundAtOnePercent(const cv::Mat& values, const cv::Mat& positive, const c
 }
 
 TEST(IlluminationNovelty, AKnownHighlightIsDampedAndANewObjectStandsOut) {
-  const Scene scene = MakeScene();
+  const NoveltyScene scene = MakeNoveltyScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
   const ViewpointIllumination viewpoint =
       MakeViewpoint(invariant, LearnIlluminationModel(invariant));
@@ -77,7 +77,7 @@ TEST(IlluminationNovelty, AKnownHighlightIsDampedAndANewObjectStandsOut) {
 TEST(IlluminationNovelty, WithoutTheShapeMemoryTheHighlightIsAsNovelAsTheObject) {
   // The same frame against a viewpoint that stored no shapes: nothing damps the highlight,
   // which is the contrast the shape memory exists for.
-  const Scene scene = MakeScene();
+  const NoveltyScene scene = MakeNoveltyScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
   ViewpointIllumination viewpoint = MakeViewpoint(invariant, LearnIlluminationModel(invariant));
   viewpoint.shapes.clear();
@@ -93,7 +93,7 @@ TEST(IlluminationNovelty, AloneInItsFrameAKnownHighlightIsDampedOnlyAgainstTheEm
   // else new. With ê the frame's largest e (the thesis) its own e is ê: e/ê = 1, no damping at
   // all. Against its distance to the empty shape, the stored shape explains it far better than
   // nothing: damped.
-  Scene scene = MakeScene();
+  NoveltyScene scene = MakeNoveltyScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
   const ZernikeMoments zernike;
   const ViewpointIllumination viewpoint =
@@ -112,7 +112,7 @@ TEST(IlluminationNovelty, AloneInItsFrameAKnownHighlightIsDampedOnlyAgainstTheEm
 TEST(IlluminationNovelty, ASliverOfOverlapIsNoMatch) {
   // A stored shape that meets the new region in a corner only (a few percent of either): scaled
   // to the unit disc the two slivers would look alike, but they say nothing about the shapes.
-  const Scene scene = MakeScene();
+  const NoveltyScene scene = MakeNoveltyScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
   ViewpointIllumination viewpoint = MakeViewpoint(invariant, LearnIlluminationModel(invariant));
   cv::Mat corner = cv::Mat::zeros(scene.highlight.size(), CV_8U);
@@ -186,8 +186,7 @@ TEST(IlluminationNovelty, TheMissingTextureFindsABoxColouredLikeTheSurfaceItHide
       MakeViewpoint(invariant, LearnIlluminationModel(invariant, {}, options));
   ASSERT_FALSE(viewpoint.model.texture.empty());
   const IlluminationNovelty n = DetectIlluminationNovelty(frame, viewpoint, zernike);
-  EXPECT_GT(MeanIn(n.information_t, scene.box_on_white),
-            5.0 * MeanIn(n.information_t, background));
+  EXPECT_GT(MeanIn(n.information_t, scene.box_on_white), 5.0 * MeanIn(n.information_t, background));
   const double found = FoundAtOnePercent(n.novelty, scene.box_on_white, background);
   std::printf("box on white found at FPR 1 %%: %.3f with the missing texture, %.3f without\n",
               found, thesis_found);
@@ -196,7 +195,7 @@ TEST(IlluminationNovelty, TheMissingTextureFindsABoxColouredLikeTheSurfaceItHide
 }
 
 TEST(IlluminationNovelty, RejectsAFrameOfAnotherSize) {
-  const Scene scene = MakeScene();
+  const NoveltyScene scene = MakeNoveltyScene();
   const InvariantImage invariant = ComputeInvariantImage(scene.training);
   const ViewpointIllumination viewpoint =
       MakeViewpoint(invariant, LearnIlluminationModel(invariant));

@@ -8,14 +8,14 @@ namespace novelty::objects {
 namespace {
 
 // A table at 1.5 m; the region a 40 × 30 patch of it.
-struct Scene {
+struct KindScene {
   cv::Mat region = cv::Mat::zeros(120, 160, CV_8U);
   cv::Mat predicted = cv::Mat(120, 160, CV_32F, cv::Scalar(1.5f));
-  Scene() { region(cv::Rect(50, 40, 40, 30)).setTo(255); }
+  KindScene() { region(cv::Rect(50, 40, 40, 30)).setTo(255); }
 };
 
 TEST(ChangeKind, NearerIsAddedFartherIsRemoved) {
-  Scene s;
+  KindScene s;
   cv::Mat observed = s.predicted.clone();
   observed(cv::Rect(50, 40, 40, 30)).setTo(1.38f);  // a cup 12 cm tall on the table: 8 % nearer
   ChangeClassification c = ClassifyChange(s.region, observed, s.predicted);
@@ -32,7 +32,7 @@ TEST(ChangeKind, NearerIsAddedFartherIsRemoved) {
 }
 
 TEST(ChangeKind, UnknownDepthsCountOnlyWhereBothAreKnown) {
-  Scene s;
+  KindScene s;
   cv::Mat observed = s.predicted.clone();
   observed(cv::Rect(50, 40, 40, 30)).setTo(1.3f);
   observed(cv::Rect(50, 40, 40, 20)).setTo(std::numeric_limits<float>::quiet_NaN());  // 2/3 unknown
@@ -51,7 +51,7 @@ TEST(ChangeKind, UnknownDepthsCountOnlyWhereBothAreKnown) {
 // already holds the new cup (nearest 1.38 m), the others the table (farthest 1.5 m). The cup is
 // still added; once taken away, the views that saw it make the table behind it removed.
 TEST(ChangeKind, WithTheViewsSpanAViewThatAlreadyTookTheChangeDoesNotHideIt) {
-  Scene s;
+  KindScene s;
   cv::Mat cup = s.predicted.clone();
   cup(cv::Rect(50, 40, 40, 30)).setTo(1.38f);
   cv::Mat span;
@@ -74,7 +74,7 @@ TEST(ChangeKind, WithTheViewsSpanAViewThatAlreadyTookTheChangeDoesNotHideIt) {
 // farthest surface by 5 %; unknown depths never. Its count over the region, divided by the
 // known pixels there, is ClassifyChange's nearer_share.
 TEST(ChangeKind, NearerMaskMarksThePixelsCountedNearer) {
-  Scene s;
+  KindScene s;
   cv::Mat span(s.predicted.size(), CV_32FC2, cv::Scalar(1.2f, 1.5f));  // nearest, farthest
   cv::Mat observed = s.predicted.clone();
   observed(cv::Rect(50, 40, 20, 30)).setTo(1.40f);  // 6.7 % nearer than 1.5: nearer

@@ -10,35 +10,15 @@
 #include <vector>
 
 #include "tests/maps/stats/batch_kernels.h"
+#include "tests/maps/stats/random_planes.h"
 
 namespace novelty::stats {
 namespace {
 
-// A plane set of n pixels with plausible map parameters and observations.
-struct Planes {
-  std::vector<float> alpha, beta, tau, sigma, x;
-  explicit Planes(std::size_t n, unsigned seed) : alpha(n), beta(n), tau(n), sigma(n), x(n) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> a(0.6f, 3.0f), lb(-2.0f, 8.0f), t(0.0f, 255.0f),
-        ls(-4.0f, 1.6f), dx(-80.0f, 80.0f);
-    for (std::size_t i = 0; i < n; ++i) {
-      alpha[i] = a(rng);
-      beta[i] = std::exp(lb(rng));
-      tau[i] = t(rng);
-      sigma[i] = std::exp(ls(rng));
-      x[i] = tau[i] + (i % 3 == 0 ? dx(rng) * 0.05f : dx(rng));
-    }
-  }
-  ConstNormalGammaPlanes View() const {
-    return {alpha.data(), beta.data(), tau.data(), sigma.data()};
-  }
-  NormalGammaPlanes Mutable() { return {alpha.data(), beta.data(), tau.data(), sigma.data()}; }
-};
-
 TEST(NormalGammaBatch, ScalarKernelEqualsPerPixelFormulas) {
   const std::size_t n = 1001;
-  const Planes prior(n, 5);
-  Planes post(n, 6);
+  const RandomPlanes prior(n, 5);
+  RandomPlanes post(n, 6);
   std::vector<float> surprise(n, 1.0f);  // accumulates: starts at 1
   KernelOptions o;
   o.kernel = BatchKernel::kScalar;
@@ -56,9 +36,9 @@ TEST(NormalGammaBatch, ScalarKernelEqualsPerPixelFormulas) {
 
 // One channel's update and surprise from `prior` by the scalar and by the vectorised kernel.
 struct BothKernels {
-  Planes post_s, post_v;
+  RandomPlanes post_s, post_v;
   std::vector<float> s_scalar, s_vector;
-  explicit BothKernels(const Planes& prior)
+  explicit BothKernels(const RandomPlanes& prior)
       : post_s(prior.x.size(), 1),
         post_v(prior.x.size(), 1),
         s_scalar(prior.x.size(), 0.0f),
@@ -76,9 +56,9 @@ struct BothKernels {
 
 TEST(NormalGammaBatch, VectorisedKernelAgreesWithScalarToFloatPrecision) {
   const std::size_t n = 320 * 240 + 7;  // a tail that is not a multiple of the packet size
-  const Planes prior(n, 9);
+  const RandomPlanes prior(n, 9);
   const BothKernels r(prior);
-  const Planes &post_s = r.post_s, &post_v = r.post_v;
+  const RandomPlanes &post_s = r.post_s, &post_v = r.post_v;
   const std::vector<float>&s_scalar = r.s_scalar, &s_vector = r.s_vector;
   double worst = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -96,14 +76,14 @@ TEST(NormalGammaBatch, RunsOfEqualAlphaGiveTheSurpriseOfTheScalarKernel) {
   // and a run that comes back to an earlier value: the vectorised kernel reuses the α terms of the
   // previous packet only where all its α agree, and must still match the scalar reference.
   const std::size_t n = 1000;
-  Planes prior(n, 11);
+  RandomPlanes prior(n, 11);
   const float runs[] = {2.5f, 1.25f, 2.5f, 0.8f};
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t run = i / 40;
     if (run % 2 == 0) prior.alpha[i] = runs[(run / 2) % 4];
   }
   const BothKernels r(prior);
-  const Planes &post_s = r.post_s, &post_v = r.post_v;
+  const RandomPlanes &post_s = r.post_s, &post_v = r.post_v;
   const std::vector<float>&s_scalar = r.s_scalar, &s_vector = r.s_vector;
   for (std::size_t i = 0; i < n; ++i) {
     ASSERT_NEAR(s_vector[i], s_scalar[i], 5e-4 * (1e-3 + s_scalar[i])) << i;
@@ -114,10 +94,10 @@ TEST(NormalGammaBatch, RunsOfEqualAlphaGiveTheSurpriseOfTheScalarKernel) {
 TEST(NormalGammaBatch, NaNObservationKeepsPriorAndMarksSurpriseInvalid) {
   for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
     const std::size_t n = 40;
-    Planes prior(n, 2);
+    RandomPlanes prior(n, 2);
     prior.x[3] = std::numeric_limits<float>::quiet_NaN();
     prior.x[21] = std::numeric_limits<float>::quiet_NaN();
-    Planes post(n, 4);
+    RandomPlanes post(n, 4);
     std::vector<float> surprise(n, 0.0f);
     KernelOptions o;
     o.kernel = kernel;
@@ -137,9 +117,9 @@ TEST(NormalGammaBatch, NaNObservationKeepsPriorAndMarksSurpriseInvalid) {
 
 TEST(NormalGammaBatch, InPlaceUpdateEqualsOutOfPlace) {
   const std::size_t n = 100;
-  Planes in_place(n, 8);
-  const Planes copy = in_place;
-  Planes out(n, 1);
+  RandomPlanes in_place(n, 8);
+  const RandomPlanes copy = in_place;
+  RandomPlanes out(n, 1);
   std::vector<float> s1(n, 0.0f), s2(n, 0.0f);
   const SurpriseBatchOptions o;
   UpdateAndAccumulateSurprise(copy.x.data(), copy.View(), out.Mutable(), s1.data(), n, o);
@@ -158,21 +138,21 @@ TEST(NormalGammaBatch, InPlaceChannelsSharingAlphaEqualOutOfPlace) {
   const SurpriseBatchOptions o;
   float alpha_after_2 = 0.0f;  // the posterior α of α = 2, as the kernel computes it
   {
-    Planes p(16, 3);
+    RandomPlanes p(16, 3);
     std::fill(p.alpha.begin(), p.alpha.end(), 2.0f);
     std::vector<float> s(16, 0.0f);
     UpdateAndAccumulateSurprise(p.x.data(), p.View(), p.Mutable(), s.data(), 16, o);
     alpha_after_2 = p.alpha[0];
   }
   ASSERT_NEAR(alpha_after_2, 2.1f, 1e-6f);  // 0.8 · 2 + 0.5
-  std::vector<Planes> in_place;
+  std::vector<RandomPlanes> in_place;
   for (unsigned k = 0; k < 3; ++k) in_place.emplace_back(n, 40 + k);
   for (std::size_t i = 0; i < n; ++i)
     in_place[0].alpha[i] = i < 32 ? 2.0f : i < 96 ? alpha_after_2 : 1.25f;
   for (unsigned k = 1; k < 3; ++k) in_place[k].alpha = in_place[0].alpha;
   in_place[2].x[70] = std::numeric_limits<float>::quiet_NaN();
-  const std::vector<Planes> copy = in_place;
-  std::vector<Planes> out(3, Planes(n, 1));
+  const std::vector<RandomPlanes> copy = in_place;
+  std::vector<RandomPlanes> out(3, RandomPlanes(n, 1));
   ChannelPlanes separate, shared;
   for (unsigned k = 0; k < 3; ++k) {
     separate.x.push_back(copy[k].x.data());
@@ -213,13 +193,13 @@ TEST(NormalGammaBatch, ChannelsSharingAlphaEqualSeparateChannels) {
   for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
     KernelOptions o;
     o.kernel = kernel;
-    std::vector<Planes> prior, separate;
+    std::vector<RandomPlanes> prior, separate;
     for (unsigned k = 0; k < 3; ++k) prior.emplace_back(n, 20 + k);
     for (unsigned k = 1; k < 3; ++k) prior[k].alpha = prior[0].alpha;
     prior[1].x[7] = std::numeric_limits<float>::quiet_NaN();  // one channel without data
     separate = prior;
     std::vector<float> shared_surprise(n, 0.0f), separate_surprise(n, 0.0f);
-    std::vector<Planes> shared = prior;
+    std::vector<RandomPlanes> shared = prior;
     ChannelPlanes c;
     for (int k = 0; k < 3; ++k) {
       c.x.push_back(prior[k].x.data());
@@ -253,7 +233,8 @@ TEST(NormalGammaBatch, ChannelsSharingAlphaEqualSeparateChannels) {
 }
 
 // Channels `in` (observation, prior) updated into `out`, all sharing channel 0's α plane.
-ChannelPlanes SharedAlphaChannels(const std::vector<Planes>& in, std::vector<Planes>& out) {
+ChannelPlanes SharedAlphaChannels(const std::vector<RandomPlanes>& in,
+                                  std::vector<RandomPlanes>& out) {
   ChannelPlanes planes;
   for (std::size_t k = 0; k < in.size(); ++k) {
     planes.x.push_back(in[k].x.data());
@@ -270,7 +251,7 @@ ChannelPlanes SharedAlphaChannels(const std::vector<Planes>& in, std::vector<Pla
 // initial prior set lower); blends of two or three views of different ages (the blend averages
 // each parameter, α included); and generic states.
 struct ThreeChannelStates {
-  std::vector<Planes> c;  // per channel
+  std::vector<RandomPlanes> c;  // per channel
   explicit ThreeChannelStates(std::size_t n) {
     for (unsigned k = 0; k < 3; ++k) c.emplace_back(n, 70 + k);
     std::mt19937 rng(77);
@@ -303,7 +284,7 @@ struct ThreeChannelStates {
             p[k].tau += a.tau / views;
             p[k].sigma += a.sigma / views;
           }
-        } else {  // generic: whatever Planes drew
+        } else {  // generic: whatever RandomPlanes drew
           p[k] = {c[0].alpha[i], c[k].beta[i], c[k].tau[i], c[k].sigma[i]};
         }
       }
@@ -338,7 +319,7 @@ TEST(NormalGammaBatch, ThreeChannelSurpriseIsTheSumOfTheChannelsKL) {
   for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
     KernelOptions o;
     o.kernel = kernel;
-    std::vector<Planes> out(3, Planes(n, 1));
+    std::vector<RandomPlanes> out(3, RandomPlanes(n, 1));
     std::vector<float> surprise(n, 0.0f);
     UpdateAndAccumulateSurprise(SharedAlphaChannels(states.c, out), surprise.data(), n, o);
     double worst = 0.0;
@@ -364,7 +345,7 @@ TEST(NormalGammaBatch, ThreeChannelSurpriseIsTheSumOfTheChannelsKL) {
 TEST(NormalGammaBatch, KnownThreeChannelCase) {
   for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
     const std::size_t n = 64;
-    std::vector<Planes> c(3, Planes(n, 1)), out(3, Planes(n, 2));
+    std::vector<RandomPlanes> c(3, RandomPlanes(n, 1)), out(3, RandomPlanes(n, 2));
     for (int k = 0; k < 3; ++k) {
       std::fill(c[k].alpha.begin(), c[k].alpha.end(), 1.0f);
       std::fill(c[k].beta.begin(), c[k].beta.end(), 0.5f);
@@ -394,11 +375,11 @@ TEST(NormalGammaBatch, KnownThreeChannelCase) {
 TEST(NormalGammaBatch, ABadPriorGivesNaNNotZero) {
   for (BatchKernel kernel : {BatchKernel::kScalar, BatchKernel::kVectorised}) {
     const std::size_t n = 40;
-    Planes prior(n, 3);
+    RandomPlanes prior(n, 3);
     std::fill(prior.beta.begin(), prior.beta.end(), 0.0f);
     std::fill(prior.sigma.begin(), prior.sigma.end(), 0.0f);
     prior.x = prior.tau;  // the same value: 0/0 in the KL's β and σ terms
-    Planes post(n, 4);
+    RandomPlanes post(n, 4);
     std::vector<float> surprise(n, 0.0f);
     KernelOptions o;
     o.kernel = kernel;
@@ -411,12 +392,14 @@ TEST(NormalGammaBatch, ABadPriorGivesNaNNotZero) {
 }
 
 TEST(NormalGammaBatch, ChannelsMustShareAlpha) {
-  Planes a(16, 1), b(16, 2);
+  RandomPlanes a(16, 1), b(16, 2);
   std::vector<float> surprise(16, 0.0f);
   ChannelPlanes c{{a.x.data(), b.x.data()}, {a.View(), b.View()}, {a.Mutable(), b.Mutable()}};
-  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, SurpriseBatchOptions{}), std::invalid_argument);
+  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, SurpriseBatchOptions{}),
+               std::invalid_argument);
   c.posterior.pop_back();
-  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, SurpriseBatchOptions{}), std::invalid_argument);
+  EXPECT_THROW(UpdateAndAccumulateSurprise(c, surprise.data(), 16, SurpriseBatchOptions{}),
+               std::invalid_argument);
 }
 
 }  // namespace
