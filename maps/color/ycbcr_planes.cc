@@ -1,5 +1,7 @@
 #include "maps/color/ycbcr_planes.h"
 
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -110,6 +112,19 @@ void PlanesRow(const float* y, const float* cb, const float* cr, int cols, const
     planar = _mm512_inserti32x4(planar, bytes(1), 1);
     planar = _mm512_inserti32x4(planar, bytes(2), 2);
     _mm512_mask_storeu_epi8(out + 3 * x, kRgbBytes, _mm512_permutexvar_epi8(k.permute, planar));
+  }
+#else
+  // Sixteen pixels' arithmetic in lanes, interleaved a byte at a time (ToByte per value would
+  // run the sixteen-lane rounding once per byte).
+  for (; x + L::kLanes <= cols; x += L::kLanes) {
+    const L::F16 Y = L::Load(y + x), Cb = L::Load(cb + x), Cr = L::Load(cr + x);
+    int32_t bytes[3][L::kLanes];
+    for (int c = 0; c < 3; ++c) {
+      const L::I16 v = ToByteValues(a.Row(c, Y, Cb, Cr));
+      std::memcpy(bytes[c], &v, sizeof v);
+    }
+    for (int i = 0; i < L::kLanes; ++i)
+      for (int c = 0; c < 3; ++c) out[3 * (x + i) + c] = uchar(bytes[c][i]);
   }
 #endif
   for (; x < cols; ++x)
